@@ -1,0 +1,203 @@
+//! The commands: each turns validated arguments into the text to print and an exit status. Output
+//! is built whole before anything is written, so an error never leaves half a report on stdout.
+
+use anyhow::{Context, Result};
+use serde::Serialize;
+
+use crate::case::Case;
+use crate::cli::{CaseArgs, Command, Format, SceneArgs, SolveArgs};
+use crate::expect::Check;
+use crate::inertia::InertiaTensor;
+use crate::report::{Report, Sections, json, text};
+use crate::scene::{Scene, SceneError};
+
+/// What a command prints and how it exits.
+#[derive(Debug, PartialEq)]
+pub struct Outcome {
+    pub stdout: String,
+    pub status: u8,
+}
+
+/// Runs a parsed command. `Err` is bad input: the caller prints it and exits 2.
+pub fn run(command: Command) -> Result<Outcome> {
+    match command {
+        Command::Solve(args) => solve(args),
+        Command::Scene(args) => scene(args),
+    }
+}
+
+impl CaseArgs {
+    pub fn into_case(self) -> Result<Case> {
+        let inertia = match (self.inertia, self.masses) {
+            (Some(t), _) => t,
+            (None, Some([m1, m2])) => InertiaTensor::diagonal(&m1, &m2)?,
+            (None, None) => anyhow::bail!("give --masses M1,M2 or --inertia 'M11,M12;M21,M22'"),
+        };
+        Ok(Case::new(inertia, self.velocities, self.restitution))
+    }
+}
+
+fn solve(args: SolveArgs) -> Result<Outcome> {
+    let case = args.case.into_case()?;
+    let report = Report::build(&case, &Sections::new(args.show))?;
+    let stdout = match args.format {
+        Format::Text => text::render(&case, &report),
+        Format::Json => json::render(&report),
+    };
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// A scene solved and checked.
+struct Solved {
+    scene: Scene,
+    report: Report,
+    checks: Vec<Check>,
+}
+
+impl Solved {
+    fn failures(&self) -> impl Iterator<Item = &Check> {
+        self.checks.iter().filter(|c| !c.passed)
+    }
+}
+
+fn solve_scene(scene: Scene) -> Result<Solved> {
+    let report = Report::build(&scene.case, &scene.sections_needed())
+        .with_context(|| format!("{}", scene.path.display()))?;
+    let json = serde_json::to_value(&report)?;
+    let checks = scene
+        .expect
+        .iter()
+        .map(|e| {
+            e.check(&json).map_err(|message| SceneError {
+                path: scene.path.clone(),
+                at: Some((e.line, 1)),
+                message: format!("[expect] {message}"),
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Solved { scene, report, checks })
+}
+
+#[derive(Serialize)]
+struct SceneJson<'a> {
+    scene: String,
+    title: Option<&'a str>,
+    source: Option<&'a str>,
+    report: &'a Report,
+    checks: usize,
+    failed: Vec<FailedJson<'a>>,
+}
+
+#[derive(Serialize)]
+struct FailedJson<'a> {
+    key: &'a str,
+    line: usize,
+    expected: &'a str,
+    actual: &'a str,
+}
+
+fn scene(args: SceneArgs) -> Result<Outcome> {
+    // Load and solve every scene first: a bad file is an error before anything is printed.
+    let solved = args
+        .files
+        .iter()
+        .map(|p| solve_scene(Scene::load(p)?))
+        .collect::<Result<Vec<_>>>()?;
+    let failed = solved.iter().any(|s| s.failures().next().is_some());
+    let stdout = match args.format {
+        Format::Json => {
+            let objects: Vec<SceneJson> = solved.iter().map(scene_json).collect();
+            let mut s = if objects.len() == 1 {
+                serde_json::to_string_pretty(&objects[0])?
+            } else {
+                serde_json::to_string_pretty(&objects)?
+            };
+            s.push('\n');
+            s
+        }
+        Format::Text if solved.len() == 1 => scene_text(&solved[0]),
+        Format::Text => scene_summary(&solved),
+    };
+    Ok(Outcome { stdout, status: if failed { 1 } else { 0 } })
+}
+
+fn scene_json(s: &Solved) -> SceneJson<'_> {
+    SceneJson {
+        scene: s.scene.path.display().to_string(),
+        title: s.scene.title.as_deref(),
+        source: s.scene.source.as_deref(),
+        report: &s.report,
+        checks: s.checks.len(),
+        failed: s
+            .failures()
+            .map(|c| FailedJson { key: &c.key, line: c.line, expected: &c.expected, actual: &c.actual })
+            .collect(),
+    }
+}
+
+fn failure_lines(s: &Solved, out: &mut String) {
+    for c in s.failures() {
+        out.push_str(&format!(
+            "  FAIL {}:{}: {}: expected {} ({}), got {}\n",
+            s.scene.path.display(),
+            c.line,
+            c.key,
+            c.expected,
+            c.tolerance,
+            c.actual
+        ));
+    }
+}
+
+fn scene_text(s: &Solved) -> String {
+    let mut out = String::new();
+    let sc = &s.scene;
+    if let Some(t) = &sc.title {
+        out.push_str(t);
+        if let Some(src) = &sc.source {
+            out.push_str(&format!(" ({src})"));
+        }
+        out.push('\n');
+    }
+    let mut shown = s.report.clone();
+    // Print the sections the scene shows; the others were computed only for its checks.
+    let keep = |sec| sc.show.contains(sec);
+    use crate::report::Section as S;
+    shown.vectors = shown.vectors.filter(|_| keep(S::Vectors));
+    shown.momentum = shown.momentum.filter(|_| keep(S::Momentum));
+    shown.forms = shown.forms.filter(|_| keep(S::Forms));
+    shown.energy = shown.energy.filter(|_| keep(S::Energy));
+    shown.ellipses = shown.ellipses.filter(|_| keep(S::Ellipses));
+    shown.products = shown.products.filter(|_| keep(S::Products));
+    out.push_str(&text::render(&sc.case, &shown));
+    if !s.checks.is_empty() {
+        let failed = s.failures().count();
+        out.push_str(&format!(
+            "\nChecks: {} of {} pass\n",
+            s.checks.len() - failed,
+            s.checks.len()
+        ));
+        failure_lines(s, &mut out);
+    }
+    out
+}
+
+fn scene_summary(solved: &[Solved]) -> String {
+    let mut out = String::new();
+    let width = solved.iter().map(|s| s.scene.path.display().to_string().len()).max().unwrap_or(0);
+    for s in solved {
+        let failed = s.failures().count();
+        let verdict = if failed > 0 { "FAIL" } else { "ok  " };
+        out.push_str(&format!(
+            "{verdict}  {:<width$}  {:>3}/{:<3} checks  {}\n",
+            s.scene.path.display(),
+            s.checks.len() - failed,
+            s.checks.len(),
+            s.scene.title.as_deref().unwrap_or("")
+        ));
+        failure_lines(s, &mut out);
+    }
+    let bad = solved.iter().filter(|s| s.failures().next().is_some()).count();
+    out.push_str(&format!("{} scenes: {} pass, {} fail\n", solved.len(), solved.len() - bad, bad));
+    out
+}

@@ -1,0 +1,97 @@
+//! Command-line flags (clap derive). Values are parsed and validated here, at the edge: a bad
+//! value is a usage error (exit 2) that names it and says what is expected.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::case::{parse_inertia, parse_masses, parse_velocities};
+use crate::inertia::{InertiaTensor, Mass};
+use crate::number::Number;
+use crate::report::Section;
+use crate::restitution::Restitution;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "collide",
+    version,
+    about = "Two-body collisions on a rail, solved and printed in the notation of Harter's \
+             'Classical Mechanics with a BANG!', Lecture 1",
+    after_help = "Exit status: 0 success, 1 a scene's [expect] check failed, 2 bad input or usage."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Solve one collision given on the command line
+    Solve(SolveArgs),
+    /// Solve TOML scene files and check their [expect] numbers
+    Scene(SceneArgs),
+}
+
+/// The case: tensor (masses or a general inertia), velocities, restitution.
+#[derive(Args, Debug, Clone)]
+pub struct CaseArgs {
+    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3
+    #[arg(short, long, value_name = "M1,M2", value_parser = parse_masses,
+          allow_hyphen_values = true, required_unless_present = "inertia")]
+    pub masses: Option<[Mass; 2]>,
+
+    /// A general symmetric positive definite inertia tensor instead of masses, e.g. '4,0.5;0.5,1'
+    #[arg(long, value_name = "M11,M12;M21,M22", value_parser = parse_inertia,
+          allow_hyphen_values = true, conflicts_with = "masses")]
+    pub inertia: Option<InertiaTensor>,
+
+    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4
+    #[arg(short, long, value_name = "V1,V2", value_parser = parse_velocities,
+          allow_hyphen_values = true)]
+    pub velocities: [Number; 2],
+
+    /// Coefficient of restitution in [0, 1], or 'elastic' (1) or 'inelastic' (0)
+    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
+          value_parser = clap::value_parser!(Restitution), allow_hyphen_values = true)]
+    pub restitution: Restitution,
+}
+
+#[derive(Args, Debug)]
+pub struct SolveArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+
+    /// Sections to print, comma-separated
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "vectors,forms,energy")]
+    pub show: Vec<Section>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+}
+
+#[derive(Args, Debug)]
+pub struct SceneArgs {
+    /// Scene files (TOML)
+    #[arg(required = true, value_name = "FILE")]
+    pub files: Vec<PathBuf>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// Aligned text for people
+    Text,
+    /// One JSON object (stable schema, see README)
+    Json,
+}
+
+impl clap::builder::ValueParserFactory for Restitution {
+    type Parser = fn(&str) -> Result<Restitution, String>;
+    fn value_parser() -> Self::Parser {
+        |s| s.parse()
+    }
+}

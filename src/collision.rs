@@ -1,0 +1,170 @@
+//! The two-body collision on a rail (lecture Sec. 1-3), solved where the momentum line meets the
+//! energy ellipse.
+//!
+//! Along the momentum line through IN, `V(s) = V_IN + s t` with `t = (M12 + M22, -(M11 + M12))`
+//! (so `u.M.t = 0`: momentum is the same at every `s`), the energy is the quadratic
+//! `q(s) = V_IN.M.V_IN + 2 s t.M.V_IN + s^2 t.M.t`. One root is IN itself, `s = 0`; by Vieta's rule
+//! the other is `s_el = -2 t.M.V_IN / t.M.t`. Since `M t = det M (1, -1)`, `t.M.V_IN = det M (V1 - V2)`
+//! and `t.M.t = det M M_total`, so `s_el = 2 (V2 - V1) / M_total`: the elastic FIN, found from the
+//! relative velocity alone, with no quadratic formula and no difference of large energies. With
+//! restitution `e`, FIN sits at `(1 + e)/2` of the way from IN to it:
+//! `V_FIN = V_IN + (1 + e) (V2 - V1) (w2, -w1)` with the COM weights `w = t / M_total` swapped
+//! (`w2 = (M12 + M22)/M_total`): the impulse form of `V_FIN = (1 + e) V_COM u - e V_IN`.
+
+use nalgebra::Vector2;
+
+use crate::inertia::InertiaTensor;
+use crate::restitution::Restitution;
+
+/// A collision to solve: tensor, initial velocities, restitution.
+#[derive(Clone, Debug)]
+pub struct Collision {
+    pub inertia: InertiaTensor,
+    pub v_in: Vector2<f64>,
+    pub restitution: Restitution,
+}
+
+impl Collision {
+    pub fn new(inertia: InertiaTensor, v_in: Vector2<f64>, restitution: Restitution) -> Self {
+        Collision { inertia, v_in, restitution }
+    }
+
+    /// Relative velocity `V1 - V2` at IN.
+    pub fn relative_velocity(&self) -> f64 {
+        self.v_in.x - self.v_in.y
+    }
+
+    /// `P_total = u.M.V_IN` (Axiom 1: the same at IN, COM and FIN).
+    pub fn total_momentum(&self) -> f64 {
+        self.inertia.total_momentum(&self.v_in)
+    }
+
+    /// `V_COM = P_total / M_total`: the momentum line meets the diagonal `V1 = V2` (Sec. 1).
+    /// Computed as the weighted mean `V1 + w2 (V2 - V1)` from the lighter side's weight, so it
+    /// cannot overflow when `P_total` would; its error is a few ulps of `max(|V1|, |V2|)`.
+    pub fn v_com(&self) -> f64 {
+        let (w1, w2) = self.inertia.weights();
+        let d = self.v_in.y - self.v_in.x;
+        let p = self.total_momentum();
+        if p.is_finite() {
+            // P_total is accurate to an ulp, so the quotient is accurate relative to itself.
+            p / self.inertia.total()
+        } else if w2.abs() <= w1.abs() {
+            self.v_in.x + w2 * d
+        } else {
+            self.v_in.y - w1 * d
+        }
+    }
+
+    /// The direction of the momentum line through IN, scaled to `(w2, -w1) = t / M_total`.
+    pub fn momentum_line_direction(&self) -> Vector2<f64> {
+        let (w1, w2) = self.inertia.weights();
+        Vector2::new(w2, -w1)
+    }
+
+    /// Parameter of the elastic FIN on the momentum line `V_IN + s (w2, -w1)`: the second root
+    /// of the energy quadratic by Vieta's rule (module docs), `s_el = 2 (V2 - V1)`.
+    pub fn elastic_root(&self) -> f64 {
+        2.0 * (self.v_in.y - self.v_in.x)
+    }
+
+    /// `V_FIN = V_IN + (1 + e)/2 s_el (w2, -w1)`, componentwise from the relative velocity so each
+    /// component is accurate to an ulp of `max(|V_i|, |V_FIN_i - V_i|)`.
+    pub fn v_fin(&self) -> Vector2<f64> {
+        let (w1, w2) = self.inertia.weights();
+        let d = self.v_in.y - self.v_in.x;
+        let k = 1.0 + self.restitution.value();
+        if self.restitution.is_totally_inelastic() {
+            let c = self.v_com();
+            return Vector2::new(c, c);
+        }
+        Vector2::new(self.v_in.x + k * (w2 * d), self.v_in.y - k * (w1 * d))
+    }
+
+    /// Crunch energy `KE_IN - KE_COM = 1/2 mu (V1 - V2)^2` (Sec. 2), as `1/2 (mu d) d`: the same in
+    /// every Galilean frame and never the difference of two energies.
+    pub fn crunch(&self) -> f64 {
+        let d = self.relative_velocity();
+        0.5 * (self.inertia.reduced_mass() * d) * d
+    }
+
+    /// `KE_IN = 1/2 V_IN.M.V_IN`.
+    pub fn ke_in(&self) -> f64 {
+        0.5 * self.inertia.form(&self.v_in, &self.v_in)
+    }
+
+    /// `KE_COM = 1/2 V_COM P_total` (Sec. 2): the least energy on the momentum line.
+    pub fn ke_com(&self) -> f64 {
+        0.5 * self.v_com() * self.total_momentum()
+    }
+
+    /// `KE_FIN = KE_COM + e^2 crunch` (Sec. 2): a sum of two non-negative terms.
+    pub fn ke_fin(&self) -> f64 {
+        let e = self.restitution.value();
+        self.ke_com() + e * e * self.crunch()
+    }
+
+    /// Energy lost to heat, `(1 - e^2) crunch`.
+    pub fn energy_lost(&self) -> f64 {
+        self.restitution.loss_factor() * self.crunch()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::inertia::Mass;
+
+    fn case(m1: &str, m2: &str, v1: f64, v2: f64, e: &str) -> Collision {
+        let m = InertiaTensor::diagonal(&m1.parse::<Mass>().unwrap(), &m2.parse::<Mass>().unwrap());
+        Collision::new(m.unwrap(), Vector2::new(v1, v2), e.parse().unwrap())
+    }
+
+    #[test]
+    fn fig_1_3_elastic() {
+        let c = case("4", "1", 60.0, 10.0, "elastic");
+        assert_eq!(c.total_momentum(), 250.0);
+        assert_eq!(c.v_com(), 50.0);
+        assert_eq!(c.v_fin(), Vector2::new(40.0, 90.0));
+        assert_eq!(c.ke_in(), 7250.0);
+        assert_eq!(c.ke_com(), 6250.0);
+        assert_eq!(c.ke_fin(), 7250.0);
+        assert_eq!(c.crunch(), 1000.0);
+        assert_eq!(c.energy_lost(), 0.0);
+    }
+
+    #[test]
+    fn fig_1_3_inelastic_sticks_at_com() {
+        let c = case("4", "1", 60.0, 10.0, "inelastic");
+        assert_eq!(c.v_fin(), Vector2::new(50.0, 50.0));
+        assert_eq!(c.energy_lost(), 1000.0);
+    }
+
+    #[test]
+    fn fig_2_3_ka_whump() {
+        let c = case("6", "1", 3.0, -4.0, "2/3");
+        let fin = c.v_fin();
+        approx::assert_relative_eq!(fin.x, 4.0 / 3.0, max_relative = 2.0 * f64::EPSILON);
+        approx::assert_relative_eq!(fin.y, 6.0, max_relative = 2.0 * f64::EPSILON);
+        approx::assert_relative_eq!(c.ke_fin(), 70.0 / 3.0, max_relative = 2.0 * f64::EPSILON);
+        assert_eq!(c.ke_com(), 14.0);
+        assert_eq!(c.crunch(), 21.0);
+    }
+
+    #[test]
+    fn the_second_root_of_the_energy_quadratic_is_elastic_fin() {
+        // q(s) = (V_IN + s t).M.(V_IN + s t) equals q(0) at s = s_el: IN and FIN share an ellipse.
+        let c = case("4", "1", 60.0, 10.0, "elastic");
+        let s = c.elastic_root();
+        let fin = c.v_in + s * c.momentum_line_direction();
+        assert_eq!(fin, Vector2::new(40.0, 90.0));
+        assert_eq!(c.inertia.form(&fin, &fin), c.inertia.form(&c.v_in, &c.v_in));
+    }
+
+    #[test]
+    fn boosted_crunch_keeps_full_accuracy() {
+        // KE_IN ~ 1e30 here; the crunch of 1/2 (1/2) 1^2 = 0.25 survives exactly.
+        let c = case("1", "1", 1e15 + 1.0, 1e15, "elastic");
+        assert_eq!(c.crunch(), 0.25);
+    }
+}

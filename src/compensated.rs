@@ -1,0 +1,109 @@
+//! Error-free transformations and compensated sums (Ogita, Rump & Oishi, "Accurate sum and dot
+//! product", SIAM J. Sci. Comput. 26, 2005). They let a quadratic form such as `V.M.V` be evaluated
+//! as if in twice the working precision and then rounded once, so cancellation between its terms
+//! (a general tensor with negative `M12`, or a form of two nearly M-orthogonal vectors) costs nothing.
+
+/// `a + b = s + err` exactly (Knuth's TwoSum).
+#[inline]
+pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a * b = p + err` exactly (with a fused multiply-add), barring underflow.
+#[inline]
+pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+/// `sum(terms)` with one final rounding in the common case (Ogita-Rump-Oishi Sum2).
+#[inline]
+pub fn sum2(terms: &[f64]) -> f64 {
+    let mut s = 0.0;
+    let mut c = 0.0;
+    for &t in terms {
+        let (ns, e) = two_sum(s, t);
+        s = ns;
+        c += e;
+    }
+    s + c
+}
+
+/// `sum(x[i] * y[i])` as if computed in twice the precision (Ogita-Rump-Oishi Dot2).
+#[inline]
+pub fn dot2(x: &[f64], y: &[f64]) -> f64 {
+    debug_assert_eq!(x.len(), y.len());
+    let mut s = 0.0;
+    let mut c = 0.0;
+    for (&a, &b) in x.iter().zip(y) {
+        let (p, ep) = two_prod(a, b);
+        let (ns, es) = two_sum(s, p);
+        s = ns;
+        c += ep + es;
+    }
+    s + c
+}
+
+/// `a*b - c*d` to within 1.5 ulp (Kahan's algorithm with a fused multiply-add).
+#[inline]
+pub fn diff_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let w = c * d;
+    let err = (-c).mul_add(d, w);
+    a.mul_add(b, -w) + err
+}
+
+/// `2^k` for `k` in the normal exponent range [-1022, 1023]: scaling by it is exact.
+#[inline]
+pub fn pow2(k: i32) -> f64 {
+    debug_assert!((-1022..=1023).contains(&k));
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+/// The binary exponent of a finite non-zero `x`: `2^e <= |x| < 2^(e+1)` (subnormals clamp to -1022).
+#[inline]
+pub fn exponent(x: f64) -> i32 {
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    biased.max(1) - 1023
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_sum_and_two_prod_are_error_free() {
+        let (s, e) = two_sum(1.0, 1e-20);
+        assert_eq!((s, e), (1.0, 1e-20));
+        let x = 1.0 + f64::EPSILON;
+        let (p, e) = two_prod(x, x);
+        // (1 + u)^2 = 1 + 2u + u^2: the u^2 = 2^-104 part is the error term.
+        assert_eq!(p, 1.0 + 2.0 * f64::EPSILON);
+        assert_eq!(e, f64::EPSILON * f64::EPSILON);
+    }
+
+    #[test]
+    fn dot2_survives_total_cancellation() {
+        // 1e16 + 1 - 1e16 = 1, which plain summation gets as 0.
+        assert_eq!(dot2(&[1e16, 1.0, -1e16], &[1.0, 1.0, 1.0]), 1.0);
+        assert_eq!(sum2(&[1e16, 1.0, -1e16]), 1.0);
+    }
+
+    #[test]
+    fn kahan_determinant_of_a_nearly_singular_matrix() {
+        // det [[1+u, 1], [1, 1-u]] = 1 - u^2 - 1 = -u^2 exactly, with u = 2^-30.
+        let u = 2f64.powi(-30);
+        assert_eq!(diff_of_products(1.0 + u, 1.0 - u, 1.0, 1.0), -u * u);
+    }
+
+    #[test]
+    fn powers_of_two() {
+        assert_eq!(pow2(0), 1.0);
+        assert_eq!(pow2(-3), 0.125);
+        assert_eq!(pow2(1000), 2f64.powi(1000));
+        assert_eq!(exponent(1.0), 0);
+        assert_eq!(exponent(0.75), -1);
+        assert_eq!(exponent(-6.0), 2);
+    }
+}

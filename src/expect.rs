@@ -1,0 +1,206 @@
+//! `[expect]` in a scene: numbers the report must reproduce, each addressed by its JSON path
+//! (`fin`, `energy.crunch`, `ellipses.com.a`, `products.outer_in_fin`), each with a tolerance.
+//! A scene with expectations is an autograder.
+
+use std::fmt;
+
+use serde_json::Value as Json;
+
+use crate::number::Number;
+use crate::report::Section;
+use crate::report::text::num;
+
+/// Relative tolerance of a plain expected number.
+pub const DEFAULT_REL: f64 = 1e-12;
+
+/// An expected number or (nested) array of numbers.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expected {
+    Number(f64),
+    Array(Vec<Expected>),
+}
+
+/// `|actual - expected| <= abs + rel |expected|`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    pub abs: f64,
+    pub rel: f64,
+}
+
+impl fmt::Display for Tolerance {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.abs > 0.0, self.rel > 0.0) {
+            (true, true) => write!(f, "abs {} + rel {}", num(self.abs), num(self.rel)),
+            (true, false) => write!(f, "abs {}", num(self.abs)),
+            (false, true) => write!(f, "rel {}", num(self.rel)),
+            (false, false) => write!(f, "exactly"),
+        }
+    }
+}
+
+/// One expectation of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expectation {
+    pub key: String,
+    pub line: usize,
+    pub expected: Expected,
+    pub tolerance: Tolerance,
+}
+
+/// The outcome of checking one expectation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Check {
+    pub key: String,
+    pub line: usize,
+    pub passed: bool,
+    pub expected: String,
+    pub actual: String,
+    pub tolerance: Tolerance,
+}
+
+const TOP_LEVEL: &str =
+    "in, com, fin, v_com, restitution, inertia, momentum.*, forms.*, energy.*, ellipses.*, products.*";
+
+fn expected_of(v: toml::Value) -> Result<Expected, String> {
+    match v {
+        toml::Value::Integer(i) => Ok(Expected::Number(i as f64)),
+        toml::Value::Float(f) if f.is_finite() => Ok(Expected::Number(f)),
+        toml::Value::String(s) => {
+            s.parse::<Number>().map(|n| Expected::Number(n.value())).map_err(|e| e.to_string())
+        }
+        toml::Value::Array(a) => a.into_iter().map(expected_of).collect::<Result<_, _>>().map(Expected::Array),
+        other => Err(format!("expected a number or an array of numbers, got {}", other.type_str())),
+    }
+}
+
+fn tolerance_of(v: Option<toml::Value>, name: &str) -> Result<f64, String> {
+    match v {
+        None => Ok(0.0),
+        Some(toml::Value::Integer(i)) if i >= 0 => Ok(i as f64),
+        Some(toml::Value::Float(f)) if f.is_finite() && f >= 0.0 => Ok(f),
+        Some(other) => Err(format!("`{name}` must be a number >= 0, got {other}")),
+    }
+}
+
+impl Expectation {
+    /// From a TOML value: a number, a string number ("4/3"), an array, or a table
+    /// `{ value = ..., abs = ..., rel = ... }`.
+    pub fn from_toml(key: &str, v: toml::Value) -> Result<Expectation, String> {
+        let top = key.split('.').next().unwrap_or_default();
+        if Section::of_json_key(top).is_none() && top != "restitution" && top != "inertia" {
+            return Err(format!("unknown quantity '{top}': expected one of {TOP_LEVEL}"));
+        }
+        let (expected, tolerance) = match v {
+            toml::Value::Table(mut t) => {
+                let value = t.remove("value").ok_or("a table needs `value` (and `abs` and/or `rel`)")?;
+                let abs = tolerance_of(t.remove("abs"), "abs")?;
+                let rel = tolerance_of(t.remove("rel"), "rel")?;
+                if let Some(k) = t.keys().next() {
+                    return Err(format!("unknown key `{k}`: expected `value`, `abs` or `rel`"));
+                }
+                (expected_of(value)?, Tolerance { abs, rel })
+            }
+            v => (expected_of(v)?, Tolerance { abs: 0.0, rel: DEFAULT_REL }),
+        };
+        Ok(Expectation { key: key.to_string(), line: 0, expected, tolerance })
+    }
+
+    pub fn at_line(mut self, line: usize) -> Expectation {
+        self.line = line;
+        self
+    }
+
+    /// The report section this expectation reads (`None` for the always-present keys).
+    pub fn section(&self) -> Option<Section> {
+        Section::of_json_key(self.key.split('.').next().unwrap_or_default())
+    }
+
+    /// Checks against the report as JSON. `Err` when the key names nothing in the report.
+    pub fn check(&self, report: &Json) -> Result<Check, String> {
+        let mut node = report;
+        for seg in self.key.split('.') {
+            node = match node {
+                Json::Object(o) => o.get(seg),
+                Json::Array(a) => seg.parse::<usize>().ok().and_then(|i| a.get(i)),
+                _ => None,
+            }
+            .ok_or_else(|| format!("the report has no quantity '{}'", self.key))?;
+        }
+        Ok(Check {
+            key: self.key.clone(),
+            line: self.line,
+            passed: matches(&self.expected, node, self.tolerance),
+            expected: show_expected(&self.expected),
+            actual: show_json(node),
+            tolerance: self.tolerance,
+        })
+    }
+}
+
+fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
+    match (e, a) {
+        (Expected::Number(x), Json::Number(y)) => {
+            let y = y.as_f64().unwrap_or(f64::NAN);
+            (y - x).abs() <= tol.abs + tol.rel * x.abs()
+        }
+        (Expected::Array(xs), Json::Array(ys)) => {
+            xs.len() == ys.len() && xs.iter().zip(ys).all(|(x, y)| matches(x, y, tol))
+        }
+        _ => false,
+    }
+}
+
+fn show_expected(e: &Expected) -> String {
+    match e {
+        Expected::Number(x) => num(*x),
+        Expected::Array(a) => {
+            format!("[{}]", a.iter().map(show_expected).collect::<Vec<_>>().join(", "))
+        }
+    }
+}
+
+fn show_json(v: &Json) -> String {
+    match v {
+        Json::Number(n) => n.as_f64().map(num).unwrap_or_else(|| n.to_string()),
+        Json::Array(a) => format!("[{}]", a.iter().map(show_json).collect::<Vec<_>>().join(", ")),
+        other => other.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn exp(key: &str, toml_value: &str) -> Result<Expectation, String> {
+        let v: toml::Table = toml::from_str(&format!("x = {toml_value}")).unwrap();
+        Expectation::from_toml(key, v["x"].clone())
+    }
+
+    #[test]
+    fn numbers_arrays_and_tolerances() {
+        let report = serde_json::json!({"fin": [40.0, 90.0], "energy": {"crunch": 1000.0},
+                                        "ellipses": {"com": {"a": 55.90169943749474}}});
+        let check = |k: &str, v: &str| exp(k, v).unwrap().check(&report).unwrap().passed;
+        assert!(check("fin", "[40, 90]"));
+        assert!(!check("fin", "[40, 91]"));
+        assert!(!check("fin", "[40]"));
+        assert!(check("fin.1", "90"));
+        assert!(check("energy.crunch", "1000"));
+        assert!(!check("energy.crunch", "1000.000001"));
+        assert!(check("energy.crunch", "\"3000/3\""));
+        assert!(check("ellipses.com.a", "{ value = 55.90, abs = 0.005 }"));
+        assert!(!check("ellipses.com.a", "{ value = 55.90, abs = 0.001 }"));
+        assert!(check("ellipses.com.a", "{ value = 55.9, rel = 1e-3 }"));
+    }
+
+    #[test]
+    fn wrong_keys_are_errors() {
+        assert!(exp("energyy.crunch", "1").unwrap_err().contains("unknown quantity 'energyy'"));
+        assert!(exp("fin", "{ value = 1, tol = 2 }").unwrap_err().contains("`tol`"));
+        assert!(exp("fin", "{ abs = 2 }").unwrap_err().contains("`value`"));
+        assert!(exp("fin", "true").unwrap_err().contains("boolean"));
+        let report = serde_json::json!({"energy": {"crunch": 1.0}});
+        let e = exp("energy.crunsh", "1").unwrap().check(&report).unwrap_err();
+        assert!(e.contains("energy.crunsh"), "{e}");
+    }
+}

@@ -1,0 +1,302 @@
+//! Numbers as a homework writes them: integers, decimals, scientific notation (`1e-3`) and simple
+//! fractions (`2/3`). Each keeps the text it was typed as, so exact arithmetic can start from what
+//! the user wrote rather than from its rounded binary64 value.
+
+use std::fmt;
+use std::str::FromStr;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+
+/// Decimal exponents beyond this are refused outright: they are far outside binary64 and would
+/// only cost memory in exact arithmetic.
+const MAX_EXPONENT: i64 = 9999;
+
+/// A finite number with the text it came from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Number {
+    value: f64,
+    text: String,
+}
+
+/// Why a text is not a number.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum NumberError {
+    #[error("an empty value is not a number: expected {EXPECTED}")]
+    Empty,
+    #[error("'{0}' is not a number: expected {EXPECTED}")]
+    Syntax(String),
+    #[error("'{0}' divides by zero")]
+    ZeroDenominator(String),
+    #[error("'{0}' is too large for binary64 (|x| must be below 1.8e308); try smaller units")]
+    Overflow(String),
+    #[error("'{0}' is too small for binary64 (it rounds to 0; |x| must be above 4.9e-324)")]
+    Underflow(String),
+}
+
+const EXPECTED: &str = "an integer, a decimal, scientific notation (1e-3) or a fraction (2/3)";
+
+/// A parsed decimal `(-1)^negative * digits * 10^exp10`.
+struct Decimal {
+    negative: bool,
+    digits: BigInt,
+    exp10: i64,
+}
+
+impl Decimal {
+    fn parse(s: &str) -> Option<Decimal> {
+        let (negative, rest) = match s.as_bytes().first()? {
+            b'-' => (true, &s[1..]),
+            b'+' => (false, &s[1..]),
+            _ => (false, s),
+        };
+        let (mantissa, exponent) = match rest.find(['e', 'E']) {
+            Some(i) => (&rest[..i], Some(&rest[i + 1..])),
+            None => (rest, None),
+        };
+        let (int, frac) = match mantissa.find('.') {
+            Some(i) => (&mantissa[..i], &mantissa[i + 1..]),
+            None => (mantissa, ""),
+        };
+        let all_digits = |t: &str| t.bytes().all(|b| b.is_ascii_digit());
+        if int.len() + frac.len() == 0 || !all_digits(int) || !all_digits(frac) {
+            return None;
+        }
+        let mut exp10: i64 = match exponent {
+            None => 0,
+            Some(e) => {
+                let digits = e.strip_prefix(['+', '-']).unwrap_or(e);
+                if digits.is_empty() || !all_digits(digits) {
+                    return None;
+                }
+                // Saturate: anything past MAX_EXPONENT is refused below anyway.
+                let magnitude = digits
+                    .trim_start_matches('0')
+                    .parse::<i64>()
+                    .unwrap_or(if digits.trim_start_matches('0').is_empty() { 0 } else { i64::MAX / 4 });
+                if e.starts_with('-') { -magnitude } else { magnitude }
+            }
+        };
+        exp10 -= frac.len() as i64;
+        let digits: BigInt = format!("{int}{frac}").parse().unwrap_or_default();
+        Some(Decimal { negative, digits, exp10 })
+    }
+
+    fn is_zero(&self) -> bool {
+        self.digits.is_zero()
+    }
+
+    /// Order of magnitude of the value, roughly: number of digits plus the exponent.
+    fn magnitude(&self) -> i64 {
+        self.digits.to_string().len() as i64 + self.exp10
+    }
+
+    fn to_rational(&self) -> BigRational {
+        let ten = BigInt::from(10);
+        let scale = num_traits::pow(ten, self.exp10.unsigned_abs() as usize);
+        let mut r = if self.exp10 >= 0 {
+            BigRational::from_integer(&self.digits * scale)
+        } else {
+            BigRational::new(self.digits.clone(), scale)
+        };
+        if self.negative {
+            r = -r;
+        }
+        r
+    }
+}
+
+fn check_range(d: &Decimal, text: &str) -> Result<(), NumberError> {
+    if !d.is_zero() && d.magnitude() > MAX_EXPONENT {
+        return Err(NumberError::Overflow(text.to_string()));
+    }
+    if !d.is_zero() && d.magnitude() < -MAX_EXPONENT {
+        return Err(NumberError::Underflow(text.to_string()));
+    }
+    Ok(())
+}
+
+impl Number {
+    /// The nearest binary64 to the typed value.
+    pub fn value(&self) -> f64 {
+        self.value
+    }
+
+    /// The text as typed (trimmed).
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// The typed value as an exact rational.
+    pub fn exact(&self) -> BigRational {
+        // The text was validated when this Number was made, so both parses succeed.
+        match self.text.split_once('/') {
+            Some((n, d)) => match (Decimal::parse(n), Decimal::parse(d)) {
+                (Some(n), Some(d)) => n.to_rational() / d.to_rational(),
+                _ => BigRational::zero(),
+            },
+            None => Decimal::parse(&self.text).map(|d| d.to_rational()).unwrap_or_default(),
+        }
+    }
+
+    /// A number known to be exactly the given binary64 value (its text is the shortest decimal
+    /// that rounds back to it).
+    pub fn from_f64(value: f64) -> Result<Number, NumberError> {
+        format!("{value:?}").parse()
+    }
+}
+
+impl FromStr for Number {
+    type Err = NumberError;
+
+    fn from_str(s: &str) -> Result<Number, NumberError> {
+        let text = s.trim();
+        if text.is_empty() {
+            return Err(NumberError::Empty);
+        }
+        let syntax = || NumberError::Syntax(text.to_string());
+        let value = match text.split_once('/') {
+            None => {
+                let d = Decimal::parse(text).ok_or_else(syntax)?;
+                check_range(&d, text)?;
+                let v: f64 = text.parse().map_err(|_| syntax())?;
+                if v.is_infinite() {
+                    return Err(NumberError::Overflow(text.to_string()));
+                }
+                if v == 0.0 && !d.is_zero() {
+                    return Err(NumberError::Underflow(text.to_string()));
+                }
+                v
+            }
+            Some((n, d)) => {
+                let (n, d) = (n.trim(), d.trim());
+                let n = Decimal::parse(n).ok_or_else(syntax)?;
+                let d = Decimal::parse(d).ok_or_else(syntax)?;
+                check_range(&n, text)?;
+                check_range(&d, text)?;
+                if d.is_zero() {
+                    return Err(NumberError::ZeroDenominator(text.to_string()));
+                }
+                // num-rational rounds a ratio to the nearest binary64 (ties to even).
+                let v = (n.to_rational() / d.to_rational()).to_f64().unwrap_or(f64::INFINITY);
+                if v.is_infinite() {
+                    return Err(NumberError::Overflow(text.to_string()));
+                }
+                if v == 0.0 && !n.is_zero() {
+                    return Err(NumberError::Underflow(text.to_string()));
+                }
+                v
+            }
+        };
+        Ok(Number { value, text: text.to_string() })
+    }
+}
+
+impl fmt::Display for Number {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+/// Splits `a,b,...` into exactly `N` trimmed fields; `what` names them in the error.
+pub fn split_fields<'a, const N: usize>(text: &'a str, what: &str) -> Result<[&'a str; N], String> {
+    let fields: Vec<&str> = text.split(',').map(str::trim).collect();
+    fields.clone().try_into().map_err(|_| {
+        format!("expected {N} comma-separated {what}, got {} in '{}'", fields.len(), text.trim())
+    })
+}
+
+/// Serde support: a number may be written as a TOML/JSON integer, float or string ("2/3").
+/// A float is taken as the shortest decimal that rounds to it, which is what was typed.
+impl<'de> serde::Deserialize<'de> for Number {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Number, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = Number;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                write!(f, "a number, or a string holding one such as \"2/3\"")
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Number, E> {
+                v.to_string().parse().map_err(E::custom)
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Number, E> {
+                v.to_string().parse().map_err(E::custom)
+            }
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Number, E> {
+                format!("{v:?}").parse().map_err(E::custom)
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Number, E> {
+                v.parse().map_err(E::custom)
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn num(s: &str) -> f64 {
+        s.parse::<Number>().unwrap().value()
+    }
+
+    #[test]
+    fn homework_forms() {
+        assert_eq!(num("60"), 60.0);
+        assert_eq!(num("-4"), -4.0);
+        assert_eq!(num("+4"), 4.0);
+        assert_eq!(num("0.5"), 0.5);
+        assert_eq!(num(".5"), 0.5);
+        assert_eq!(num("1e-3"), 1e-3);
+        assert_eq!(num("2.5E+2"), 250.0);
+        assert_eq!(num("2/3"), 2.0 / 3.0);
+        assert_eq!(num(" -1/4 "), -0.25);
+        assert_eq!(num("1e300"), 1e300);
+    }
+
+    #[test]
+    fn a_fraction_is_the_nearest_binary64_to_the_exact_quotient() {
+        // 0.1/0.3 is exactly 1/3; dividing the rounded 0.1 by the rounded 0.3 gives 0.33333333333333337.
+        assert_eq!(num("0.1/0.3"), 1.0 / 3.0);
+        assert_ne!(0.1 / 0.3, 1.0 / 3.0);
+    }
+
+    #[test]
+    fn exact_values_come_from_the_text() {
+        let r = "0.1".parse::<Number>().unwrap().exact();
+        assert_eq!(r, BigRational::new(1.into(), 10.into()));
+        let r = "-2/3".parse::<Number>().unwrap().exact();
+        assert_eq!(r, BigRational::new((-2).into(), 3.into()));
+        let r = "1.5e2".parse::<Number>().unwrap().exact();
+        assert_eq!(r, BigRational::from_integer(150.into()));
+    }
+
+    #[test]
+    fn refusals_say_why() {
+        for bad in ["abc", "", "1,2", "inf", "NaN", "1e", "--1", "1..2", "0x10", "1/", "e5", "."] {
+            assert!(bad.parse::<Number>().is_err(), "{bad} should be refused");
+        }
+        assert!(matches!("1/0".parse::<Number>(), Err(NumberError::ZeroDenominator(_))));
+        assert!(matches!("1e400".parse::<Number>(), Err(NumberError::Overflow(_))));
+        assert!(matches!("1e-400".parse::<Number>(), Err(NumberError::Underflow(_))));
+        assert!(matches!("1e999999999999999999999".parse::<Number>(), Err(NumberError::Overflow(_))));
+        let msg = "abc".parse::<Number>().unwrap_err().to_string();
+        assert!(msg.contains("'abc'") && msg.contains("fraction"), "{msg}");
+    }
+
+    #[test]
+    fn zero_is_fine() {
+        assert_eq!(num("0"), 0.0);
+        assert_eq!(num("0e-99999999"), 0.0);
+        assert_eq!(num("0/5"), 0.0);
+    }
+
+    #[test]
+    fn fields() {
+        assert_eq!(split_fields::<2>(" 4 , 1", "masses").unwrap(), ["4", "1"]);
+        let err = split_fields::<2>("4,1,2", "masses").unwrap_err();
+        assert!(err.contains("expected 2 comma-separated masses, got 3"), "{err}");
+    }
+}

@@ -1,0 +1,137 @@
+//! The coefficient of restitution `e` in [0, 1] (lecture Sec. 1): `e = 1` elastic ("ka-bong"),
+//! `0 < e < 1` ("ka-whump"), `e = 0` totally inelastic ("ka-runch").
+
+use std::fmt;
+use std::str::FromStr;
+
+use crate::number::Number;
+
+/// A coefficient of restitution, validated to lie in [0, 1].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Restitution(Number);
+
+impl Restitution {
+    pub fn elastic() -> Restitution {
+        Restitution(Number::from_f64(1.0).expect("1 is a number"))
+    }
+
+    pub fn new(n: Number) -> Result<Restitution, String> {
+        if (0.0..=1.0).contains(&n.value()) {
+            Ok(Restitution(n))
+        } else {
+            Err(format!(
+                "restitution '{n}' is outside [0, 1]: expected a number from 0 (totally inelastic) to 1 (elastic)"
+            ))
+        }
+    }
+
+    pub fn value(&self) -> f64 {
+        self.0.value()
+    }
+
+    pub fn number(&self) -> &Number {
+        &self.0
+    }
+
+    pub fn is_elastic(&self) -> bool {
+        self.value() == 1.0
+    }
+
+    pub fn is_totally_inelastic(&self) -> bool {
+        self.value() == 0.0
+    }
+
+    /// The lecture's name for the collision.
+    pub fn kind(&self) -> &'static str {
+        if self.is_elastic() {
+            "elastic: ka-bong"
+        } else if self.is_totally_inelastic() {
+            "totally inelastic: ka-runch"
+        } else {
+            "ka-whump"
+        }
+    }
+
+    /// `1 - e^2` as `(1 - e)(1 + e)`, exact in its first factor for `e` near 1.
+    pub fn loss_factor(&self) -> f64 {
+        let e = self.value();
+        (1.0 - e) * (1.0 + e)
+    }
+}
+
+impl FromStr for Restitution {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Restitution, String> {
+        match s.trim() {
+            "elastic" => Number::from_str("1").map(Restitution).map_err(|e| e.to_string()),
+            "inelastic" => Number::from_str("0").map(Restitution).map_err(|e| e.to_string()),
+            t => {
+                let n: Number = t.parse().map_err(|e| {
+                    format!("restitution {e}, or the words 'elastic' (1) or 'inelastic' (0)")
+                })?;
+                Restitution::new(n)
+            }
+        }
+    }
+}
+
+impl fmt::Display for Restitution {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Restitution {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Restitution, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = Restitution;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                write!(f, "a number in [0, 1] or \"elastic\" / \"inelastic\"")
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Restitution, E> {
+                v.to_string().parse().map_err(E::custom)
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Restitution, E> {
+                v.to_string().parse().map_err(E::custom)
+            }
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Restitution, E> {
+                format!("{v:?}").parse().map_err(E::custom)
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Restitution, E> {
+                v.parse().map_err(E::custom)
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn words_and_numbers() {
+        assert_eq!("elastic".parse::<Restitution>().unwrap().value(), 1.0);
+        assert_eq!("inelastic".parse::<Restitution>().unwrap().value(), 0.0);
+        assert_eq!("2/3".parse::<Restitution>().unwrap().value(), 2.0 / 3.0);
+        assert_eq!("2/3".parse::<Restitution>().unwrap().to_string(), "2/3");
+    }
+
+    #[test]
+    fn outside_zero_one_is_refused() {
+        for bad in ["1.5", "-0.1", "4/3"] {
+            let e = bad.parse::<Restitution>().unwrap_err();
+            assert!(e.contains(bad) && e.contains("[0, 1]"), "{e}");
+        }
+        let e = "bouncy".parse::<Restitution>().unwrap_err();
+        assert!(e.contains("'bouncy'") && e.contains("elastic"), "{e}");
+    }
+
+    #[test]
+    fn loss_factor_near_elastic() {
+        let e: Restitution = "0.9999999".parse().unwrap();
+        let exact = (1.0 - 0.9999999f64) * (1.0 + 0.9999999);
+        assert_eq!(e.loss_factor(), exact);
+    }
+}

@@ -1,0 +1,231 @@
+//! Scene files: a case in TOML, with the sections to show and the numbers to expect.
+//!
+//! ```toml
+//! title = "60 mph 4-ton SUV rear-ends 10 mph 1-ton VW"
+//! masses = [4, 1]
+//! velocities = [60, 10]
+//! restitution = "elastic"
+//! show = ["vectors", "energy"]
+//! [expect]
+//! fin = [40, 90]
+//! "energy.crunch" = 1000
+//! "ellipses.com.a" = { value = 55.90, abs = 0.005 }
+//! ```
+//! Every problem (unknown key, wrong type, bad value, missing field) is reported with the file,
+//! line and column.
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use crate::case::Case;
+use crate::expect::Expectation;
+use crate::inertia::{InertiaTensor, Mass};
+use crate::number::Number;
+use crate::report::{Section, Sections};
+use crate::restitution::Restitution;
+
+/// The file as written. Field names are the scene format.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    title: Option<String>,
+    source: Option<String>,
+    masses: Option<Spanned<[Mass; 2]>>,
+    inertia: Option<Spanned<[[Number; 2]; 2]>>,
+    velocities: [Number; 2],
+    restitution: Option<Restitution>,
+    show: Option<Vec<Section>>,
+    expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
+}
+
+/// A loaded, validated scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub path: PathBuf,
+    pub title: Option<String>,
+    pub source: Option<String>,
+    pub case: Case,
+    /// Sections to print.
+    pub show: Sections,
+    pub expect: Vec<Expectation>,
+}
+
+/// A problem in a scene file, located.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneError {
+    pub path: PathBuf,
+    /// 1-based line and column, when known.
+    pub at: Option<(usize, usize)>,
+    pub message: String,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.at {
+            Some((line, col)) => {
+                write!(f, "{}:{line}:{col}: {}", self.path.display(), self.message)
+            }
+            None => write!(f, "{}: {}", self.path.display(), self.message),
+        }
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+/// 1-based line and column of byte offset `at` in `text`.
+pub fn line_col(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..at.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+impl Scene {
+    /// Reads and validates a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+            path: path.to_path_buf(),
+            at: None,
+            message: format!("cannot read scene file: {e}"),
+        })?;
+        Scene::parse(path, &text)
+    }
+
+    /// Parses scene text; `path` names it in errors.
+    pub fn parse(path: &Path, text: &str) -> Result<Scene, SceneError> {
+        let err = |span: Option<Range<usize>>, message: String| SceneError {
+            path: path.to_path_buf(),
+            at: span.map(|s| line_col(text, s.start)),
+            message,
+        };
+        let file: SceneFile =
+            toml::from_str(text).map_err(|e| err(e.span(), e.message().trim().to_string()))?;
+        let inertia = match (file.masses, file.inertia) {
+            (Some(m), None) => {
+                let span = m.span();
+                let [m1, m2] = m.into_inner();
+                InertiaTensor::diagonal(&m1, &m2).map_err(|e| err(Some(span), e.to_string()))?
+            }
+            (None, Some(t)) => {
+                let span = t.span();
+                InertiaTensor::general(t.into_inner())
+                    .map_err(|e| err(Some(span), format!("inertia: {e}")))?
+            }
+            (Some(_), Some(t)) => {
+                return Err(err(
+                    Some(t.span()),
+                    "give either `masses` or `inertia`, not both".into(),
+                ));
+            }
+            (None, None) => {
+                return Err(err(
+                    None,
+                    "missing `masses = [M1, M2]` (or `inertia = [[M11, M12], [M21, M22]]`)".into(),
+                ));
+            }
+        };
+        let restitution = file.restitution.unwrap_or_else(Restitution::elastic);
+        let case = Case::new(inertia, file.velocities, restitution);
+        let show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
+        let mut expect = Vec::new();
+        for (key, value) in file.expect.unwrap_or_default() {
+            let span = value.span();
+            let e = Expectation::from_toml(&key, value.into_inner())
+                .map_err(|m| err(Some(span.clone()), format!("[expect] \"{key}\": {m}")))?;
+            expect.push(e.at_line(line_col(text, span.start).0));
+        }
+        Ok(Scene {
+            path: path.to_path_buf(),
+            title: file.title,
+            source: file.source,
+            case,
+            show,
+            expect,
+        })
+    }
+
+    /// Sections to compute: the shown ones and those the expectations read.
+    pub fn sections_needed(&self) -> Sections {
+        let mut s = self.show.clone();
+        for e in &self.expect {
+            if let Some(section) = e.section() {
+                s.insert(section);
+            }
+        }
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Scene, SceneError> {
+        Scene::parse(Path::new("t.toml"), text)
+    }
+
+    #[test]
+    fn a_lecture_scene() {
+        let s = parse(
+            "title = \"A\"\nmasses = [4, 1]\nvelocities = [60, 10]\nrestitution = \"2/3\"\n\
+             [expect]\nfin = [40, 90]\n\"energy.crunch\" = { value = 1000, abs = 0.5 }\n",
+        )
+        .unwrap();
+        assert_eq!(s.title.as_deref(), Some("A"));
+        assert_eq!(s.case.restitution().value(), 2.0 / 3.0);
+        assert_eq!(s.expect.len(), 2);
+        assert!(s.sections_needed().contains(Section::Energy));
+        assert!(s.sections_needed().contains(Section::Vectors));
+        assert!(!s.sections_needed().contains(Section::Ellipses));
+    }
+
+    #[test]
+    fn unknown_key_names_file_line_and_key() {
+        let e = parse("masses = [4, 1]\nvelocities = [60, 10]\nelasticity = 1\n").unwrap_err();
+        assert_eq!(e.at.map(|a| a.0), Some(3));
+        assert!(e.to_string().starts_with("t.toml:3:"), "{e}");
+        assert!(e.message.contains("elasticity"), "{e}");
+    }
+
+    #[test]
+    fn bad_values_are_located() {
+        let e = parse("masses = [4, -1]\nvelocities = [60, 10]\n").unwrap_err();
+        assert_eq!(e.at.map(|a| a.0), Some(1));
+        assert!(e.message.contains("'-1'") && e.message.contains("greater than 0"), "{e}");
+        let e = parse("masses = [4, 1]\nvelocities = [60, \"x\"]\n").unwrap_err();
+        assert_eq!(e.at.map(|a| a.0), Some(2));
+        assert!(e.message.contains("'x' is not a number"), "{e}");
+        let e = parse("masses = [4, 1]\nvelocities = [60]\n").unwrap_err();
+        assert_eq!(e.at.map(|a| a.0), Some(2), "{e}");
+        let e = parse("masses = [4, 1]\nvelocities = [60, 1]\nrestitution = 2\n").unwrap_err();
+        assert!(e.message.contains("[0, 1]"), "{e}");
+        let e = parse("masses = [4, 1]\nvelocities = [60, 1]\nshow = [\"vectorz\"]\n").unwrap_err();
+        assert!(e.message.contains("vectorz"), "{e}");
+        let e = parse("masses = \"4,1\"\nvelocities = [60, 1]\n").unwrap_err();
+        assert_eq!(e.at.map(|a| a.0), Some(1), "{e}");
+    }
+
+    #[test]
+    fn missing_and_conflicting_fields() {
+        let e = parse("masses = [4, 1]\n").unwrap_err();
+        assert!(e.message.contains("velocities"), "{e}");
+        let e = parse("velocities = [1, 2]\n").unwrap_err();
+        assert!(e.message.contains("masses"), "{e}");
+        let e = parse("masses = [4, 1]\ninertia = [[4, 0], [0, 1]]\nvelocities = [1, 2]\n")
+            .unwrap_err();
+        assert!(e.message.contains("not both") && e.at.unwrap().0 == 2, "{e}");
+        let e = parse("inertia = [[1, 2], [2, 1]]\nvelocities = [1, 2]\n").unwrap_err();
+        assert!(e.message.contains("positive definite"), "{e}");
+    }
+
+    #[test]
+    fn line_and_column() {
+        assert_eq!(line_col("ab\ncd", 0), (1, 1));
+        assert_eq!(line_col("ab\ncd", 4), (2, 2));
+    }
+}
