@@ -75,7 +75,11 @@ fn solve_scene(scene: Scene) -> Result<Solved> {
             })
         })
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(Solved { scene, report, checks })
+    Ok(Solved {
+        scene,
+        report,
+        checks,
+    })
 }
 
 #[derive(Serialize)]
@@ -107,18 +111,19 @@ fn scene(args: SceneArgs) -> Result<Outcome> {
     let stdout = match args.format {
         Format::Json => {
             let objects: Vec<SceneJson> = solved.iter().map(scene_json).collect();
-            let mut s = if objects.len() == 1 {
-                serde_json::to_string_pretty(&objects[0])?
+            if objects.len() == 1 {
+                json::render(&objects[0])
             } else {
-                serde_json::to_string_pretty(&objects)?
-            };
-            s.push('\n');
-            s
+                json::render(&objects)
+            }
         }
         Format::Text if solved.len() == 1 => scene_text(&solved[0]),
         Format::Text => scene_summary(&solved),
     };
-    Ok(Outcome { stdout, status: if failed { 1 } else { 0 } })
+    Ok(Outcome {
+        stdout,
+        status: if failed { 1 } else { 0 },
+    })
 }
 
 fn scene_json(s: &Solved) -> SceneJson<'_> {
@@ -130,7 +135,12 @@ fn scene_json(s: &Solved) -> SceneJson<'_> {
         checks: s.checks.len(),
         failed: s
             .failures()
-            .map(|c| FailedJson { key: &c.key, line: c.line, expected: &c.expected, actual: &c.actual })
+            .map(|c| FailedJson {
+                key: &c.key,
+                line: c.line,
+                expected: &c.expected,
+                actual: &c.actual,
+            })
             .collect(),
     }
 }
@@ -184,7 +194,11 @@ fn scene_text(s: &Solved) -> String {
 
 fn scene_summary(solved: &[Solved]) -> String {
     let mut out = String::new();
-    let width = solved.iter().map(|s| s.scene.path.display().to_string().len()).max().unwrap_or(0);
+    let width = solved
+        .iter()
+        .map(|s| s.scene.path.display().to_string().len())
+        .max()
+        .unwrap_or(0);
     for s in solved {
         let failed = s.failures().count();
         let verdict = if failed > 0 { "FAIL" } else { "ok  " };
@@ -197,7 +211,15 @@ fn scene_summary(solved: &[Solved]) -> String {
         ));
         failure_lines(s, &mut out);
     }
-    let bad = solved.iter().filter(|s| s.failures().next().is_some()).count();
-    out.push_str(&format!("{} scenes: {} pass, {} fail\n", solved.len(), solved.len() - bad, bad));
+    let bad = solved
+        .iter()
+        .filter(|s| s.failures().next().is_some())
+        .count();
+    out.push_str(&format!(
+        "{} scenes: {} pass, {} fail\n",
+        solved.len(),
+        solved.len() - bad,
+        bad
+    ));
     out
 }

@@ -16,13 +16,12 @@ pub struct Case {
 }
 
 impl Case {
-    pub fn new(
-        inertia: InertiaTensor,
-        velocities: [Number; 2],
-        restitution: Restitution,
-    ) -> Case {
+    pub fn new(inertia: InertiaTensor, velocities: [Number; 2], restitution: Restitution) -> Case {
         let v = Vector2::new(velocities[0].value(), velocities[1].value());
-        Case { velocities, collision: Collision::new(inertia, v, restitution) }
+        Case {
+            velocities,
+            collision: Collision::new(inertia, v, restitution),
+        }
     }
 
     pub fn inertia(&self) -> &InertiaTensor {
@@ -59,7 +58,10 @@ pub fn parse_inertia(text: &str) -> Result<InertiaTensor, String> {
     })?;
     let row = |r: &str| -> Result<[Number; 2], String> {
         let [a, b] = split_fields::<2>(r, "entries in each row of M11,M12;M21,M22")?;
-        let n = |s: &str| s.parse::<Number>().map_err(|e| format!("inertia entry {e}"));
+        let n = |s: &str| {
+            s.parse::<Number>()
+                .map_err(|e| format!("inertia entry {e}"))
+        };
         Ok([n(a)?, n(b)?])
     };
     InertiaTensor::general([row(r1)?, row(r2)?]).map_err(|e| e.to_string())

@@ -25,6 +25,7 @@ pub struct Cli {
 }
 
 #[derive(Subcommand, Debug)]
+#[allow(clippy::large_enum_variant)] // parsed once per run
 pub enum Command {
     /// Solve one collision given on the command line
     Solve(SolveArgs),
@@ -62,7 +63,12 @@ pub struct SolveArgs {
     pub case: CaseArgs,
 
     /// Sections to print, comma-separated
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "vectors,forms,energy")]
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        default_value = "vectors,forms,energy"
+    )]
     pub show: Vec<Section>,
 
     /// Output format

@@ -13,6 +13,7 @@
 
 use nalgebra::Vector2;
 
+use crate::compensated::Dd;
 use crate::inertia::InertiaTensor;
 use crate::restitution::Restitution;
 
@@ -26,7 +27,11 @@ pub struct Collision {
 
 impl Collision {
     pub fn new(inertia: InertiaTensor, v_in: Vector2<f64>, restitution: Restitution) -> Self {
-        Collision { inertia, v_in, restitution }
+        Collision {
+            inertia,
+            v_in,
+            restitution,
+        }
     }
 
     /// Relative velocity `V1 - V2` at IN.
@@ -39,21 +44,18 @@ impl Collision {
         self.inertia.total_momentum(&self.v_in)
     }
 
-    /// `V_COM = P_total / M_total`: the momentum line meets the diagonal `V1 = V2` (Sec. 1).
-    /// Computed as the weighted mean `V1 + w2 (V2 - V1)` from the lighter side's weight, so it
-    /// cannot overflow when `P_total` would; its error is a few ulps of `max(|V1|, |V2|)`.
+    /// `V_COM = P_total / M_total`: the momentum line meets the diagonal `V1 = V2` (Sec. 1),
+    /// written as the weighted mean `V1 + w2 (V2 - V1)` so it cannot overflow where `P_total`
+    /// would, and evaluated in double-double so the one rounding is the last.
     pub fn v_com(&self) -> f64 {
-        let (w1, w2) = self.inertia.weights();
-        let d = self.v_in.y - self.v_in.x;
-        let p = self.total_momentum();
-        if p.is_finite() {
-            // P_total is accurate to an ulp, so the quotient is accurate relative to itself.
-            p / self.inertia.total()
-        } else if w2.abs() <= w1.abs() {
-            self.v_in.x + w2 * d
-        } else {
-            self.v_in.y - w1 * d
-        }
+        let (_, w2) = self.inertia.weights_dd();
+        let v1 = Dd::new(self.v_in.x);
+        (v1 + w2 * self.relative_velocity_dd()).value()
+    }
+
+    /// `V2 - V1` exactly, as a double-double.
+    fn relative_velocity_dd(&self) -> Dd {
+        Dd::sum(self.v_in.y, -self.v_in.x)
     }
 
     /// The direction of the momentum line through IN, scaled to `(w2, -w1) = t / M_total`.
@@ -68,17 +70,22 @@ impl Collision {
         2.0 * (self.v_in.y - self.v_in.x)
     }
 
-    /// `V_FIN = V_IN + (1 + e)/2 s_el (w2, -w1)`, componentwise from the relative velocity so each
-    /// component is accurate to an ulp of `max(|V_i|, |V_FIN_i - V_i|)`.
+    /// `V_FIN = V_IN + (1 + e)/2 s_el (w2, -w1)` (the impulse form), componentwise from the
+    /// relative velocity, evaluated in double-double and rounded once: each component is
+    /// correctly rounded but for near-ties, however IN's components compare in size.
     pub fn v_fin(&self) -> Vector2<f64> {
-        let (w1, w2) = self.inertia.weights();
-        let d = self.v_in.y - self.v_in.x;
-        let k = 1.0 + self.restitution.value();
         if self.restitution.is_totally_inelastic() {
             let c = self.v_com();
             return Vector2::new(c, c);
         }
-        Vector2::new(self.v_in.x + k * (w2 * d), self.v_in.y - k * (w1 * d))
+        let (w1, w2) = self.inertia.weights_dd();
+        let d = self.relative_velocity_dd();
+        let k = Dd::sum(1.0, self.restitution.value());
+        let kd = k * d;
+        Vector2::new(
+            (Dd::new(self.v_in.x) + w2 * kd).value(),
+            (Dd::new(self.v_in.y) - w1 * kd).value(),
+        )
     }
 
     /// Crunch energy `KE_IN - KE_COM = 1/2 mu (V1 - V2)^2` (Sec. 2), as `1/2 (mu d) d`: the same in

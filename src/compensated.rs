@@ -107,3 +107,113 @@ mod tests {
         assert_eq!(exponent(-6.0), 2);
     }
 }
+
+/// A double-double `hi + lo` (|lo| <= ulp(hi)/2): about 106 significant bits, enough that a short
+/// formula evaluated in it and rounded once is correctly rounded but for near-ties.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dd {
+    pub hi: f64,
+    pub lo: f64,
+}
+
+#[inline]
+fn fast_two_sum(a: f64, b: f64) -> Dd {
+    let s = a + b;
+    Dd {
+        hi: s,
+        lo: b - (s - a),
+    }
+}
+
+impl Dd {
+    #[inline]
+    pub fn new(x: f64) -> Dd {
+        Dd { hi: x, lo: 0.0 }
+    }
+    /// `a + b` exactly.
+    #[inline]
+    pub fn sum(a: f64, b: f64) -> Dd {
+        let (hi, lo) = two_sum(a, b);
+        Dd { hi, lo }
+    }
+    /// `a * b` exactly (barring underflow).
+    #[inline]
+    pub fn prod(a: f64, b: f64) -> Dd {
+        let (hi, lo) = two_prod(a, b);
+        Dd { hi, lo }
+    }
+    /// Rounded to the nearest binary64 (but for near-ties).
+    #[inline]
+    pub fn value(self) -> f64 {
+        self.hi + self.lo
+    }
+}
+
+impl std::ops::Add for Dd {
+    type Output = Dd;
+    #[inline]
+    fn add(self, o: Dd) -> Dd {
+        let (s, e) = two_sum(self.hi, o.hi);
+        fast_two_sum(s, e + self.lo + o.lo)
+    }
+}
+
+impl std::ops::Neg for Dd {
+    type Output = Dd;
+    #[inline]
+    fn neg(self) -> Dd {
+        Dd {
+            hi: -self.hi,
+            lo: -self.lo,
+        }
+    }
+}
+
+impl std::ops::Sub for Dd {
+    type Output = Dd;
+    #[inline]
+    fn sub(self, o: Dd) -> Dd {
+        self + -o
+    }
+}
+
+impl std::ops::Mul for Dd {
+    type Output = Dd;
+    #[inline]
+    fn mul(self, o: Dd) -> Dd {
+        let (p, e) = two_prod(self.hi, o.hi);
+        fast_two_sum(p, e + (self.hi * o.lo + self.lo * o.hi))
+    }
+}
+
+impl std::ops::Div for Dd {
+    type Output = Dd;
+    /// Long division with three quotient digits.
+    #[inline]
+    fn div(self, o: Dd) -> Dd {
+        let q1 = self.hi / o.hi;
+        let r = self - o * Dd::new(q1);
+        let q2 = r.hi / o.hi;
+        let r = r - o * Dd::new(q2);
+        let q3 = r.hi / o.hi;
+        fast_two_sum(q1, q2) + Dd::new(q3)
+    }
+}
+
+#[cfg(test)]
+mod dd_tests {
+    use super::Dd;
+
+    #[test]
+    fn double_double_rounds_once() {
+        // (1/10 + 2/10) evaluated in double-double from the binary64 0.1 and 0.2 is
+        // 0.3000000000000000166..., which rounds to 0.30000000000000004, like exact arithmetic.
+        assert_eq!(Dd::sum(0.1, 0.2).value(), 0.1 + 0.2);
+        // 7/5 * 2 - 3 = -0.2 exactly from exact inputs; plain binary64 gets -0.19999999999999973.
+        let q = Dd::new(7.0) / Dd::new(5.0) * Dd::new(2.0) - Dd::new(3.0);
+        assert_eq!(q.value(), -0.2);
+        let third = Dd::new(1.0) / Dd::new(3.0);
+        assert_eq!((third * Dd::new(3.0)).value(), 1.0);
+        assert!(third.lo != 0.0);
+    }
+}

@@ -30,11 +30,17 @@ impl Ellipse {
         match axes {
             None => {
                 let d = m.matrix();
-                Ellipse { a: r(d[(0, 0)]), b: r(d[(1, 1)]), axes: None }
+                Ellipse {
+                    a: r(d[(0, 0)]),
+                    b: r(d[(1, 1)]),
+                    axes: None,
+                }
             }
-            Some([(l1, q1), (l2, q2)]) => {
-                Ellipse { a: r(*l1), b: r(*l2), axes: Some([[q1.x, q1.y], [q2.x, q2.y]]) }
-            }
+            Some([(l1, q1), (l2, q2)]) => Ellipse {
+                a: r(*l1),
+                b: r(*l2),
+                axes: Some([[q1.x, q1.y], [q2.x, q2.y]]),
+            },
         }
     }
 }

@@ -58,18 +58,25 @@ pub struct Check {
     pub tolerance: Tolerance,
 }
 
-const TOP_LEVEL: &str =
-    "in, com, fin, v_com, restitution, inertia, momentum.*, forms.*, energy.*, ellipses.*, products.*";
+const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, momentum.*, forms.*, energy.*, ellipses.*, products.*";
 
 fn expected_of(v: toml::Value) -> Result<Expected, String> {
     match v {
         toml::Value::Integer(i) => Ok(Expected::Number(i as f64)),
         toml::Value::Float(f) if f.is_finite() => Ok(Expected::Number(f)),
-        toml::Value::String(s) => {
-            s.parse::<Number>().map(|n| Expected::Number(n.value())).map_err(|e| e.to_string())
-        }
-        toml::Value::Array(a) => a.into_iter().map(expected_of).collect::<Result<_, _>>().map(Expected::Array),
-        other => Err(format!("expected a number or an array of numbers, got {}", other.type_str())),
+        toml::Value::String(s) => s
+            .parse::<Number>()
+            .map(|n| Expected::Number(n.value()))
+            .map_err(|e| e.to_string()),
+        toml::Value::Array(a) => a
+            .into_iter()
+            .map(expected_of)
+            .collect::<Result<_, _>>()
+            .map(Expected::Array),
+        other => Err(format!(
+            "expected a number or an array of numbers, got {}",
+            other.type_str()
+        )),
     }
 }
 
@@ -88,21 +95,38 @@ impl Expectation {
     pub fn from_toml(key: &str, v: toml::Value) -> Result<Expectation, String> {
         let top = key.split('.').next().unwrap_or_default();
         if Section::of_json_key(top).is_none() && top != "restitution" && top != "inertia" {
-            return Err(format!("unknown quantity '{top}': expected one of {TOP_LEVEL}"));
+            return Err(format!(
+                "unknown quantity '{top}': expected one of {TOP_LEVEL}"
+            ));
         }
         let (expected, tolerance) = match v {
             toml::Value::Table(mut t) => {
-                let value = t.remove("value").ok_or("a table needs `value` (and `abs` and/or `rel`)")?;
+                let value = t
+                    .remove("value")
+                    .ok_or("a table needs `value` (and `abs` and/or `rel`)")?;
                 let abs = tolerance_of(t.remove("abs"), "abs")?;
                 let rel = tolerance_of(t.remove("rel"), "rel")?;
                 if let Some(k) = t.keys().next() {
-                    return Err(format!("unknown key `{k}`: expected `value`, `abs` or `rel`"));
+                    return Err(format!(
+                        "unknown key `{k}`: expected `value`, `abs` or `rel`"
+                    ));
                 }
                 (expected_of(value)?, Tolerance { abs, rel })
             }
-            v => (expected_of(v)?, Tolerance { abs: 0.0, rel: DEFAULT_REL }),
+            v => (
+                expected_of(v)?,
+                Tolerance {
+                    abs: 0.0,
+                    rel: DEFAULT_REL,
+                },
+            ),
         };
-        Ok(Expectation { key: key.to_string(), line: 0, expected, tolerance })
+        Ok(Expectation {
+            key: key.to_string(),
+            line: 0,
+            expected,
+            tolerance,
+        })
     }
 
     pub fn at_line(mut self, line: usize) -> Expectation {
@@ -154,7 +178,10 @@ fn show_expected(e: &Expected) -> String {
     match e {
         Expected::Number(x) => num(*x),
         Expected::Array(a) => {
-            format!("[{}]", a.iter().map(show_expected).collect::<Vec<_>>().join(", "))
+            format!(
+                "[{}]",
+                a.iter().map(show_expected).collect::<Vec<_>>().join(", ")
+            )
         }
     }
 }
@@ -162,7 +189,10 @@ fn show_expected(e: &Expected) -> String {
 fn show_json(v: &Json) -> String {
     match v {
         Json::Number(n) => n.as_f64().map(num).unwrap_or_else(|| n.to_string()),
-        Json::Array(a) => format!("[{}]", a.iter().map(show_json).collect::<Vec<_>>().join(", ")),
+        Json::Array(a) => format!(
+            "[{}]",
+            a.iter().map(show_json).collect::<Vec<_>>().join(", ")
+        ),
         other => other.to_string(),
     }
 }
@@ -195,12 +225,23 @@ mod tests {
 
     #[test]
     fn wrong_keys_are_errors() {
-        assert!(exp("energyy.crunch", "1").unwrap_err().contains("unknown quantity 'energyy'"));
-        assert!(exp("fin", "{ value = 1, tol = 2 }").unwrap_err().contains("`tol`"));
+        assert!(
+            exp("energyy.crunch", "1")
+                .unwrap_err()
+                .contains("unknown quantity 'energyy'")
+        );
+        assert!(
+            exp("fin", "{ value = 1, tol = 2 }")
+                .unwrap_err()
+                .contains("`tol`")
+        );
         assert!(exp("fin", "{ abs = 2 }").unwrap_err().contains("`value`"));
         assert!(exp("fin", "true").unwrap_err().contains("boolean"));
         let report = serde_json::json!({"energy": {"crunch": 1.0}});
-        let e = exp("energy.crunsh", "1").unwrap().check(&report).unwrap_err();
+        let e = exp("energy.crunsh", "1")
+            .unwrap()
+            .check(&report)
+            .unwrap_err();
         assert!(e.contains("energy.crunsh"), "{e}");
     }
 }

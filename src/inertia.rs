@@ -5,7 +5,7 @@
 
 use nalgebra::{Cholesky, Matrix2, SymmetricEigen, Vector2};
 
-use crate::compensated::{diff_of_products, dot2, exponent, pow2, sum2, two_prod, two_sum};
+use crate::compensated::{Dd, diff_of_products, dot2, exponent, pow2, sum2, two_prod, two_sum};
 use crate::number::Number;
 
 /// A body's mass: a finite number > 0.
@@ -134,6 +134,14 @@ impl InertiaTensor {
         ((a + c) / total, (c + b) / total)
     }
 
+    /// The weights as double-doubles, from the exact sums `M11 + M12`, `M12 + M22` and
+    /// `M_total`.
+    pub fn weights_dd(&self) -> (Dd, Dd) {
+        let (a, b, c) = self.abc();
+        let total = Dd::sum(a, 2.0 * c) + Dd::new(b);
+        (Dd::sum(a, c) / total, Dd::sum(c, b) / total)
+    }
+
     /// `P_total = u.M.V = (M11 + M12) V1 + (M12 + M22) V2`, as if in twice the precision.
     pub fn total_momentum(&self, v: &Vector2<f64>) -> f64 {
         let (a, b, c) = self.abc();
@@ -191,15 +199,26 @@ impl InertiaTensor {
         let (k_det, k) = self.scaled_det();
         let s = pow2(-k);
         let eig = SymmetricEigen::new(self.m * s);
-        let (i_min, i_max) = if eig.eigenvalues[0] <= eig.eigenvalues[1] { (0, 1) } else { (1, 0) };
+        let (i_min, i_max) = if eig.eigenvalues[0] <= eig.eigenvalues[1] {
+            (0, 1)
+        } else {
+            (1, 0)
+        };
         let l_max = eig.eigenvalues[i_max];
         let l_min = k_det / l_max;
         let axis = |i: usize| {
             let q: Vector2<f64> = eig.eigenvectors.column(i).into();
             // A fixed sign convention: first non-zero component positive.
-            if q.x < 0.0 || (q.x == 0.0 && q.y < 0.0) { -q } else { q }
+            if q.x < 0.0 || (q.x == 0.0 && q.y < 0.0) {
+                -q
+            } else {
+                q
+            }
         };
-        [(l_min * pow2(k), axis(i_min)), (l_max * pow2(k), axis(i_max))]
+        [
+            (l_min * pow2(k), axis(i_min)),
+            (l_max * pow2(k), axis(i_max)),
+        ]
     }
 
     fn abc(&self) -> (f64, f64, f64) {
@@ -241,7 +260,12 @@ mod tests {
             let e = bad.parse::<Mass>().unwrap_err();
             assert!(e.contains(bad) && e.contains("greater than 0"), "{e}");
         }
-        assert!("abc".parse::<Mass>().unwrap_err().contains("'abc' is not a number"));
+        assert!(
+            "abc"
+                .parse::<Mass>()
+                .unwrap_err()
+                .contains("'abc' is not a number")
+        );
     }
 
     #[test]
@@ -253,10 +277,22 @@ mod tests {
         assert_eq!(m.reduced_mass(), 3.75 / 6.0);
         let e = InertiaTensor::general([[n("4"), n("0.5")], [n("0.4"), n("1")]]).unwrap_err();
         assert_eq!(e, InertiaError::NotSymmetric("0.5".into(), "0.4".into()));
-        assert!(matches!(tensor("1", "2", "1"), Err(InertiaError::NotPositiveDefinite(_))));
-        assert!(matches!(tensor("1", "1", "1"), Err(InertiaError::NotPositiveDefinite(_))));
-        assert!(matches!(tensor("-1", "0", "1"), Err(InertiaError::NotPositiveDefinite(_))));
-        assert!(matches!(tensor("1e308", "0", "1e308"), Err(InertiaError::TooLarge(_))));
+        assert!(matches!(
+            tensor("1", "2", "1"),
+            Err(InertiaError::NotPositiveDefinite(_))
+        ));
+        assert!(matches!(
+            tensor("1", "1", "1"),
+            Err(InertiaError::NotPositiveDefinite(_))
+        ));
+        assert!(matches!(
+            tensor("-1", "0", "1"),
+            Err(InertiaError::NotPositiveDefinite(_))
+        ));
+        assert!(matches!(
+            tensor("1e308", "0", "1e308"),
+            Err(InertiaError::TooLarge(_))
+        ));
     }
 
     #[test]

@@ -10,7 +10,10 @@ fn main() -> ExitCode {
     match collide::app::run(cli.command) {
         Ok(outcome) => {
             let mut out = std::io::stdout().lock();
-            match out.write_all(outcome.stdout.as_bytes()).and_then(|()| out.flush()) {
+            match out
+                .write_all(outcome.stdout.as_bytes())
+                .and_then(|()| out.flush())
+            {
                 // `collide ... | head`: the reader left; that is not an error.
                 Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
                 Err(e) => {

@@ -71,16 +71,27 @@ impl Decimal {
                     return None;
                 }
                 // Saturate: anything past MAX_EXPONENT is refused below anyway.
-                let magnitude = digits
-                    .trim_start_matches('0')
-                    .parse::<i64>()
-                    .unwrap_or(if digits.trim_start_matches('0').is_empty() { 0 } else { i64::MAX / 4 });
-                if e.starts_with('-') { -magnitude } else { magnitude }
+                let magnitude = digits.trim_start_matches('0').parse::<i64>().unwrap_or(
+                    if digits.trim_start_matches('0').is_empty() {
+                        0
+                    } else {
+                        i64::MAX / 4
+                    },
+                );
+                if e.starts_with('-') {
+                    -magnitude
+                } else {
+                    magnitude
+                }
             }
         };
         exp10 -= frac.len() as i64;
         let digits: BigInt = format!("{int}{frac}").parse().unwrap_or_default();
-        Some(Decimal { negative, digits, exp10 })
+        Some(Decimal {
+            negative,
+            digits,
+            exp10,
+        })
     }
 
     fn is_zero(&self) -> bool {
@@ -136,7 +147,9 @@ impl Number {
                 (Some(n), Some(d)) => n.to_rational() / d.to_rational(),
                 _ => BigRational::zero(),
             },
-            None => Decimal::parse(&self.text).map(|d| d.to_rational()).unwrap_or_default(),
+            None => Decimal::parse(&self.text)
+                .map(|d| d.to_rational())
+                .unwrap_or_default(),
         }
     }
 
@@ -179,7 +192,9 @@ impl FromStr for Number {
                     return Err(NumberError::ZeroDenominator(text.to_string()));
                 }
                 // num-rational rounds a ratio to the nearest binary64 (ties to even).
-                let v = (n.to_rational() / d.to_rational()).to_f64().unwrap_or(f64::INFINITY);
+                let v = (n.to_rational() / d.to_rational())
+                    .to_f64()
+                    .unwrap_or(f64::INFINITY);
                 if v.is_infinite() {
                     return Err(NumberError::Overflow(text.to_string()));
                 }
@@ -189,7 +204,10 @@ impl FromStr for Number {
                 v
             }
         };
-        Ok(Number { value, text: text.to_string() })
+        Ok(Number {
+            value,
+            text: text.to_string(),
+        })
     }
 }
 
@@ -203,7 +221,11 @@ impl fmt::Display for Number {
 pub fn split_fields<'a, const N: usize>(text: &'a str, what: &str) -> Result<[&'a str; N], String> {
     let fields: Vec<&str> = text.split(',').map(str::trim).collect();
     fields.clone().try_into().map_err(|_| {
-        format!("expected {N} comma-separated {what}, got {} in '{}'", fields.len(), text.trim())
+        format!(
+            "expected {N} comma-separated {what}, got {} in '{}'",
+            fields.len(),
+            text.trim()
+        )
     })
 }
 
@@ -275,13 +297,27 @@ mod tests {
 
     #[test]
     fn refusals_say_why() {
-        for bad in ["abc", "", "1,2", "inf", "NaN", "1e", "--1", "1..2", "0x10", "1/", "e5", "."] {
+        for bad in [
+            "abc", "", "1,2", "inf", "NaN", "1e", "--1", "1..2", "0x10", "1/", "e5", ".",
+        ] {
             assert!(bad.parse::<Number>().is_err(), "{bad} should be refused");
         }
-        assert!(matches!("1/0".parse::<Number>(), Err(NumberError::ZeroDenominator(_))));
-        assert!(matches!("1e400".parse::<Number>(), Err(NumberError::Overflow(_))));
-        assert!(matches!("1e-400".parse::<Number>(), Err(NumberError::Underflow(_))));
-        assert!(matches!("1e999999999999999999999".parse::<Number>(), Err(NumberError::Overflow(_))));
+        assert!(matches!(
+            "1/0".parse::<Number>(),
+            Err(NumberError::ZeroDenominator(_))
+        ));
+        assert!(matches!(
+            "1e400".parse::<Number>(),
+            Err(NumberError::Overflow(_))
+        ));
+        assert!(matches!(
+            "1e-400".parse::<Number>(),
+            Err(NumberError::Underflow(_))
+        ));
+        assert!(matches!(
+            "1e999999999999999999999".parse::<Number>(),
+            Err(NumberError::Overflow(_))
+        ));
         let msg = "abc".parse::<Number>().unwrap_err().to_string();
         assert!(msg.contains("'abc'") && msg.contains("fraction"), "{msg}");
     }
@@ -297,6 +333,9 @@ mod tests {
     fn fields() {
         assert_eq!(split_fields::<2>(" 4 , 1", "masses").unwrap(), ["4", "1"]);
         let err = split_fields::<2>("4,1,2", "masses").unwrap_err();
-        assert!(err.contains("expected 2 comma-separated masses, got 3"), "{err}");
+        assert!(
+            err.contains("expected 2 comma-separated masses, got 3"),
+            "{err}"
+        );
     }
 }

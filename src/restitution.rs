@@ -63,8 +63,12 @@ impl FromStr for Restitution {
     type Err = String;
     fn from_str(s: &str) -> Result<Restitution, String> {
         match s.trim() {
-            "elastic" => Number::from_str("1").map(Restitution).map_err(|e| e.to_string()),
-            "inelastic" => Number::from_str("0").map(Restitution).map_err(|e| e.to_string()),
+            "elastic" => Number::from_str("1")
+                .map(Restitution)
+                .map_err(|e| e.to_string()),
+            "inelastic" => Number::from_str("0")
+                .map(Restitution)
+                .map_err(|e| e.to_string()),
             t => {
                 let n: Number = t.parse().map_err(|e| {
                     format!("restitution {e}, or the words 'elastic' (1) or 'inelastic' (0)")

@@ -196,7 +196,10 @@ mod tests {
     fn bad_values_are_located() {
         let e = parse("masses = [4, -1]\nvelocities = [60, 10]\n").unwrap_err();
         assert_eq!(e.at.map(|a| a.0), Some(1));
-        assert!(e.message.contains("'-1'") && e.message.contains("greater than 0"), "{e}");
+        assert!(
+            e.message.contains("'-1'") && e.message.contains("greater than 0"),
+            "{e}"
+        );
         let e = parse("masses = [4, 1]\nvelocities = [60, \"x\"]\n").unwrap_err();
         assert_eq!(e.at.map(|a| a.0), Some(2));
         assert!(e.message.contains("'x' is not a number"), "{e}");
@@ -218,7 +221,10 @@ mod tests {
         assert!(e.message.contains("masses"), "{e}");
         let e = parse("masses = [4, 1]\ninertia = [[4, 0], [0, 1]]\nvelocities = [1, 2]\n")
             .unwrap_err();
-        assert!(e.message.contains("not both") && e.at.unwrap().0 == 2, "{e}");
+        assert!(
+            e.message.contains("not both") && e.at.unwrap().0 == 2,
+            "{e}"
+        );
         let e = parse("inertia = [[1, 2], [2, 1]]\nvelocities = [1, 2]\n").unwrap_err();
         assert!(e.message.contains("positive definite"), "{e}");
     }

@@ -14,7 +14,9 @@ use crate::collision::Collision;
 use crate::ellipse::Ellipse;
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize, clap::ValueEnum)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize, clap::ValueEnum,
+)]
 #[serde(rename_all = "kebab-case")]
 pub enum Section {
     /// IN, COM and FIN vectors and V_COM
@@ -61,7 +63,9 @@ impl Section {
     /// The section a top-level JSON key belongs to (`None` for `inertia` and `restitution`, which
     /// are always present).
     pub fn of_json_key(key: &str) -> Option<Section> {
-        Section::EVERY.into_iter().find(|s| s.json_keys().contains(&key))
+        Section::EVERY
+            .into_iter()
+            .find(|s| s.json_keys().contains(&key))
     }
 }
 
@@ -178,9 +182,14 @@ impl Report {
     pub fn build(case: &Case, sections: &Sections) -> Result<Report, Unrepresentable> {
         let c: &Collision = &case.collision;
         let m = c.inertia.matrix();
-        let need_fin = [Section::Vectors, Section::Momentum, Section::Forms, Section::Products]
-            .iter()
-            .any(|&s| sections.contains(s));
+        let need_fin = [
+            Section::Vectors,
+            Section::Momentum,
+            Section::Forms,
+            Section::Products,
+        ]
+        .iter()
+        .any(|&s| sections.contains(s));
         let fin = need_fin.then(|| c.v_fin());
         let fin = || fin.expect("FIN is computed for every section that uses it");
         let v_com = c.v_com();
@@ -217,10 +226,16 @@ impl Report {
                 }
             }),
             ellipses: sections.contains(Section::Ellipses).then(|| {
-                let e = energy.as_ref().expect("energies are computed for the ellipses");
+                let e = energy
+                    .as_ref()
+                    .expect("energies are computed for the ellipses");
                 let axes = (!c.inertia.is_diagonal()).then(|| c.inertia.principal_axes());
                 let ellipse = |ke| Ellipse::new(&c.inertia, ke, axes.as_ref());
-                Ellipses { e_in: ellipse(e.ke_in), fin: ellipse(e.fin), com: ellipse(e.com) }
+                Ellipses {
+                    e_in: ellipse(e.ke_in),
+                    fin: ellipse(e.fin),
+                    com: ellipse(e.com),
+                }
             }),
             products: sections.contains(Section::Products).then(|| {
                 let (i, f) = (c.v_in, fin());
@@ -247,7 +262,11 @@ impl Report {
                     .enumerate()
                     .find_map(|(i, x)| find_null(x, &format!("{path}[{i}]"))),
                 serde_json::Value::Object(o) => o.iter().find_map(|(k, x)| {
-                    let p = if path.is_empty() { k.clone() } else { format!("{path}.{k}") };
+                    let p = if path.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{path}.{k}")
+                    };
                     find_null(x, &p)
                 }),
                 _ => None,

@@ -24,25 +24,44 @@ fn pair(v: [f64; 2]) -> String {
     format!("({}, {})", num(v[0]), num(v[1]))
 }
 
-/// Rows of `label  value  note`, aligned into columns under a heading.
+/// Rows of cells (`label  value  note ...`), aligned into columns under a heading.
 struct Block {
     heading: String,
-    rows: Vec<[String; 3]>,
+    rows: Vec<Vec<String>>,
 }
 
 impl Block {
     fn new(heading: impl Into<String>) -> Block {
-        Block { heading: heading.into(), rows: Vec::new() }
+        Block {
+            heading: heading.into(),
+            rows: Vec::new(),
+        }
     }
     fn row(&mut self, label: impl Into<String>, value: impl Into<String>, note: impl Into<String>) {
-        self.rows.push([label.into(), value.into(), note.into()]);
+        self.rows
+            .push(vec![label.into(), value.into(), note.into()]);
+    }
+    fn cells<const N: usize>(&mut self, cells: [String; N]) {
+        self.rows.push(cells.into());
     }
     fn render(&self, out: &mut String) {
-        let w0 = self.rows.iter().map(|r| r[0].chars().count()).max().unwrap_or(0);
-        let w1 = self.rows.iter().map(|r| r[1].chars().count()).max().unwrap_or(0);
+        let columns = self.rows.iter().map(Vec::len).max().unwrap_or(0);
+        let widths: Vec<usize> = (0..columns)
+            .map(|i| {
+                self.rows
+                    .iter()
+                    .filter_map(|r| r.get(i))
+                    .map(|c| c.chars().count())
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
         let _ = writeln!(out, "\n{}", self.heading);
-        for [label, value, note] in &self.rows {
-            let line = format!("  {label:<w0$}  {value:<w1$}  {note}");
+        for row in &self.rows {
+            let mut line = String::from(" ");
+            for (cell, w) in row.iter().zip(&widths) {
+                let _ = write!(line, " {cell:<w$} ");
+            }
             let _ = writeln!(out, "{}", line.trim_end());
         }
     }
@@ -85,7 +104,11 @@ pub fn render(case: &Case, report: &Report) -> String {
 fn vectors(case: &Case, v: &Vectors) -> Block {
     let mut b = Block::new("Vectors (V1, V2)");
     b.row("IN   V_IN", pair(v.v_in), "");
-    b.row("COM  V_COM u", pair(v.com), format!("V_COM = P_total / M_total = {}", num(v.v_com)));
+    b.row(
+        "COM  V_COM u",
+        pair(v.com),
+        format!("V_COM = P_total / M_total = {}", num(v.v_com)),
+    );
     if case.restitution().is_totally_inelastic() {
         b.row("FIN  V_FIN", "= COM", "the bodies stick and move together");
     } else {
@@ -103,7 +126,11 @@ fn momentum(case: &Case, p: &Momentum) -> Block {
     if !case.restitution().is_totally_inelastic() {
         b.row("P_FIN  M.V_FIN", pair(p.fin), "");
     } else {
-        b.row("P_FIN  M.V_FIN", pair(p.fin), "the bodies' shares of P_total once stuck");
+        b.row(
+            "P_FIN  M.V_FIN",
+            pair(p.fin),
+            "the bodies' shares of P_total once stuck",
+        );
     }
     let m = case.inertia().matrix();
     let (k1, k2) = (m[(0, 0)] + m[(0, 1)], m[(0, 1)] + m[(1, 1)]);
@@ -133,16 +160,30 @@ fn forms(case: &Case, f: &Forms, energy: Option<&Energy>) -> Block {
         b.row("V_IN.M.V_IN", num(f.in_m_in), "");
         return b;
     }
-    b.row("V_COM.M.V_IN = V_COM.M.V_FIN = V_COM.M.V_COM = V_COM P_total", num(f.com_m_in), "");
-    b.row("V_FIN.M.V_IN = V_IN.M.V_FIN", num(f.fin_m_in), "M is symmetric");
+    b.row(
+        "V_COM.M.V_IN = V_COM.M.V_FIN = V_COM.M.V_COM = V_COM P_total",
+        num(f.com_m_in),
+        "",
+    );
+    b.row(
+        "V_FIN.M.V_IN = V_IN.M.V_FIN",
+        num(f.fin_m_in),
+        "M is symmetric",
+    );
     if e.is_elastic() {
-        b.row("V_IN.M.V_IN = V_FIN.M.V_FIN", num(f.in_m_in), "elastic: one energy ellipse");
+        b.row(
+            "V_IN.M.V_IN = V_FIN.M.V_FIN",
+            num(f.in_m_in),
+            "elastic: one energy ellipse",
+        );
         // The lecture's check: crunch = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4 when elastic.
-        let crunch = energy.map(|en| format!(" = crunch {}", num(en.crunch))).unwrap_or_default();
+        let crunch = energy
+            .map(|en| format!(" = {}", num(en.crunch)))
+            .unwrap_or_default();
         b.row(
             "V_IN.M.V_IN/4 - V_FIN.M.V_IN/4",
-            format!("{} - {}{crunch}", num(f.in_m_in / 4.0), num(f.fin_m_in / 4.0)),
-            "",
+            format!("{} - {}", num(f.in_m_in / 4.0), num(f.fin_m_in / 4.0)),
+            format!("= crunch{crunch} (elastic)"),
         );
     } else {
         b.row("V_IN.M.V_IN", num(f.in_m_in), "");
@@ -156,7 +197,11 @@ fn energy(case: &Case, en: &Energy) -> Block {
     let e = case.restitution();
     let c = &case.collision;
     if e.is_elastic() {
-        b.row("KE_IN = KE_FIN", num(en.ke_in), "elastic: energy is conserved");
+        b.row(
+            "KE_IN = KE_FIN",
+            num(en.ke_in),
+            "elastic: energy is conserved",
+        );
     } else {
         b.row("KE_IN", num(en.ke_in), "");
     }
@@ -169,14 +214,26 @@ fn energy(case: &Case, en: &Energy) -> Block {
         b.row("KE_COM = 1/2 V_COM P_total", num(en.com), "");
     }
     let mu = c.inertia.reduced_mass();
-    let mu_name = if c.inertia.is_diagonal() { "mu = M1 M2 / (M1 + M2)" } else { "mu = det M / M_total" };
+    let mu_name = if c.inertia.is_diagonal() {
+        "mu = M1 M2 / (M1 + M2)"
+    } else {
+        "mu = det M / M_total"
+    };
     b.row(
         "crunch = KE_IN - KE_COM = 1/2 mu (V1 - V2)^2",
         num(en.crunch),
-        format!("{mu_name} = {}, V1 - V2 = {}", num(mu), num(c.relative_velocity())),
+        format!(
+            "{mu_name} = {}, V1 - V2 = {}",
+            num(mu),
+            num(c.relative_velocity())
+        ),
     );
     if e.is_totally_inelastic() {
-        b.row("lost = crunch", num(en.lost), "all of the crunch energy turns into heat");
+        b.row(
+            "lost = crunch",
+            num(en.lost),
+            "all of the crunch energy turns into heat",
+        );
     } else if !e.is_elastic() {
         b.row("lost = (1 - e^2) crunch", num(en.lost), "");
     }
@@ -194,17 +251,23 @@ fn ellipses(case: &Case, el: &Ellipses) -> Block {
         ),
     };
     let mut b = Block::new(heading);
-    let ab = |x: &crate::ellipse::Ellipse| format!("a = {}   b = {}", num(x.a), num(x.b));
+    let mut row = |name: &str, x: &crate::ellipse::Ellipse| {
+        b.cells([
+            name.to_string(),
+            format!("a = {}", num(x.a)),
+            format!("b = {}", num(x.b)),
+        ]);
+    };
     if e.is_elastic() {
-        b.row("IN = FIN", ab(&el.e_in), "");
-        b.row("COM", ab(&el.com), "");
+        row("IN = FIN", &el.e_in);
+        row("COM", &el.com);
     } else if e.is_totally_inelastic() {
-        b.row("IN", ab(&el.e_in), "");
-        b.row("COM = FIN", ab(&el.com), "");
+        row("IN", &el.e_in);
+        row("COM = FIN", &el.com);
     } else {
-        b.row("IN", ab(&el.e_in), "");
-        b.row("FIN", ab(&el.fin), "");
-        b.row("COM", ab(&el.com), "");
+        row("IN", &el.e_in);
+        row("FIN", &el.fin);
+        row("COM", &el.com);
     }
     b
 }
@@ -215,7 +278,13 @@ fn products(p: &Products) -> Block {
     let o = p.outer_in_fin;
     b.row(
         "V_IN (x) V_FIN",
-        format!("[[{}, {}], [{}, {}]]", num(o[0][0]), num(o[0][1]), num(o[1][0]), num(o[1][1])),
+        format!(
+            "[[{}, {}], [{}, {}]]",
+            num(o[0][0]),
+            num(o[0][1]),
+            num(o[1][0]),
+            num(o[1][1])
+        ),
         "outer product",
     );
     b

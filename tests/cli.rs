@@ -1,0 +1,359 @@
+//! How the binary behaves as a user runs it: what it leaves out, bad input (exit 2, a message
+//! naming the value, nothing on stdout), scene files, JSON schema keys, closed pipes.
+
+mod common;
+
+use std::io::Write;
+use std::process::{Command as StdCommand, Stdio};
+
+use common::collide;
+use predicates::prelude::*;
+
+/// Runs `collide args`, expects exit 2 with empty stdout and a stderr mentioning every `needle`.
+#[track_caller]
+fn refused(args: &[&str], needles: &[&str]) {
+    let out = collide().args(args).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(out.stdout.is_empty(), "{args:?} printed to stdout");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: stderr lacks {n:?}:\n{err}");
+    }
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn bad_masses() {
+    refused(
+        &["solve", "-m", "0,1", "-v", "1,2"],
+        &["'0'", "greater than 0"],
+    );
+    refused(
+        &["solve", "-m", "-4,1", "-v", "1,2"],
+        &["'-4'", "greater than 0"],
+    );
+    refused(
+        &["solve", "-m", "4,abc", "-v", "1,2"],
+        &["'abc'", "not a number", "fraction"],
+    );
+    refused(
+        &["solve", "-m", "NaN,1", "-v", "1,2"],
+        &["'NaN'", "not a number"],
+    );
+    refused(
+        &["solve", "-m", "inf,1", "-v", "1,2"],
+        &["'inf'", "not a number"],
+    );
+    refused(
+        &["solve", "-m", "1e999,1", "-v", "1,2"],
+        &["'1e999'", "too large"],
+    );
+    refused(&["solve", "-m", "4", "-v", "1,2"], &["expected 2", "got 1"]);
+    refused(
+        &["solve", "-m", "4,1,1", "-v", "1,2"],
+        &["expected 2", "got 3"],
+    );
+}
+
+#[test]
+fn bad_velocities_and_restitution() {
+    refused(&["solve", "-m", "4,1", "-v", "1"], &["expected 2", "got 1"]);
+    refused(
+        &["solve", "-m", "4,1", "-v", "1,x"],
+        &["'x'", "not a number"],
+    );
+    refused(
+        &["solve", "-m", "4,1", "-v", "1,2", "-e", "1.5"],
+        &["'1.5'", "[0, 1]"],
+    );
+    refused(
+        &["solve", "-m", "4,1", "-v", "1,2", "-e", "-0.5"],
+        &["'-0.5'", "[0, 1]"],
+    );
+    refused(
+        &["solve", "-m", "4,1", "-v", "1,2", "-e", "bouncy"],
+        &["'bouncy'", "elastic"],
+    );
+    refused(&["solve", "-m", "4,1"], &["--velocities"]);
+}
+
+#[test]
+fn bad_tensors() {
+    refused(
+        &["solve", "--inertia", "4,0.5;0.4,1", "-v", "1,2"],
+        &["not symmetric", "0.5", "0.4"],
+    );
+    refused(
+        &["solve", "--inertia", "1,2;2,1", "-v", "1,2"],
+        &["not positive definite"],
+    );
+    refused(&["solve", "--inertia", "4,0.5", "-v", "1,2"], &["2 rows"]);
+    refused(
+        &["solve", "--inertia", "4,0;0,1", "-m", "4,1", "-v", "1,2"],
+        &["--inertia", "--masses"],
+    );
+    refused(&["solve", "-v", "1,2"], &["--masses"]);
+}
+
+#[test]
+fn unrepresentable_results_are_named_not_printed() {
+    // KE ~ 1e400: beyond binary64.
+    refused(
+        &[
+            "solve",
+            "-m",
+            "1,1",
+            "-v",
+            "1e200,-1e200",
+            "--show",
+            "energy",
+        ],
+        &["energy.in", "not representable"],
+    );
+    refused(
+        &["solve", "-m", "1,1", "-v", "1e200,-1e200"],
+        &["forms.fin_m_in", "not representable"],
+    );
+    // Asking only for vectors is fine: they are representable.
+    collide()
+        .args([
+            "solve",
+            "-m",
+            "1,1",
+            "-v",
+            "1e200,-1e200",
+            "--show",
+            "vectors",
+        ])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("(-1e200, 1e200)"))
+        .stdout(predicate::str::contains("inf").not());
+}
+
+#[test]
+fn scene_errors_name_file_and_line() {
+    let dir = std::env::temp_dir().join(format!("collide-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::File::create(&p)
+            .unwrap()
+            .write_all(text.as_bytes())
+            .unwrap();
+        p.to_string_lossy().into_owned()
+    };
+    let unknown = write(
+        "unknown.toml",
+        "masses = [4, 1]\nvelocities = [60, 10]\nelasticity = 1\n",
+    );
+    refused(&["scene", &unknown], &["unknown.toml:3:", "elasticity"]);
+    let wrong_type = write("type.toml", "masses = [4, 1]\nvelocities = \"fast\"\n");
+    refused(&["scene", &wrong_type], &["type.toml:2:"]);
+    let bad_expect = write(
+        "expect.toml",
+        "masses = [4, 1]\nvelocities = [60, 10]\n[expect]\n\"energy.crunsh\" = 1\n",
+    );
+    refused(
+        &["scene", &bad_expect],
+        &["expect.toml:4:", "energy.crunsh"],
+    );
+    refused(
+        &["scene", "no/such/scene.toml"],
+        &["no/such/scene.toml", "cannot read"],
+    );
+    // A wrong expectation is a failed check: exit 1, expected against actual.
+    let wrong = write(
+        "wrong.toml",
+        "masses = [4, 1]\nvelocities = [60, 10]\n[expect]\nfin = [40, 91]\n\"energy.crunch\" = 1000\n",
+    );
+    let out = collide().args(["scene", &wrong]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("Checks: 1 of 2 pass"), "{text}");
+    assert!(
+        text.contains("wrong.toml:4: fin: expected [40, 91] (rel 1e-12), got [40, 90]"),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn default_text_leaves_out_what_the_case_does_not_need() {
+    let elastic = collide()
+        .args(["solve", "-m", "4,1", "-v", "60,10"])
+        .assert()
+        .success();
+    let text = String::from_utf8(elastic.get_output().stdout.clone()).unwrap();
+    // The design card's default: vectors, forms, energy; nothing else.
+    assert!(
+        text.contains("Vectors") && text.contains("Quadratic forms") && text.contains("Energy (")
+    );
+    assert!(!text.contains("Momentum") && !text.contains("ellipses") && !text.contains("Products"));
+    assert!(
+        !text.contains("lost"),
+        "no energy lost for an elastic collision:\n{text}"
+    );
+    assert!(
+        text.contains("M = diag(4, 1)"),
+        "no off-diagonal entries for a diagonal M:\n{text}"
+    );
+    assert!(
+        text.contains("3625 - 2625"),
+        "the lecture's quarter forms:\n{text}"
+    );
+
+    let stuck = collide()
+        .args(["solve", "-m", "4,1", "-v", "60,10", "-e", "0"])
+        .assert()
+        .success();
+    let text = String::from_utf8(stuck.get_output().stdout.clone()).unwrap();
+    assert!(
+        text.contains("FIN  V_FIN    = COM"),
+        "no separate FIN numbers when e = 0:\n{text}"
+    );
+    assert!(!text.contains("(50, 50)  ="), "{text}");
+    assert!(text.contains("lost = crunch"), "{text}");
+}
+
+#[test]
+fn json_keeps_every_key_of_each_requested_section() {
+    let out = collide()
+        .args([
+            "solve", "-m", "4,1", "-v", "60,10", "--show", "energy", "--format", "json",
+        ])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let keys: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
+    assert_eq!(keys, ["restitution", "inertia", "energy"]);
+    let energy: Vec<&str> = v["energy"]
+        .as_object()
+        .unwrap()
+        .keys()
+        .map(String::as_str)
+        .collect();
+    assert_eq!(
+        energy,
+        ["in", "fin", "com", "crunch", "lost"],
+        "lost is present even when 0"
+    );
+
+    let out = collide()
+        .args([
+            "solve",
+            "--inertia",
+            "4,0.5;0.5,1",
+            "-v",
+            "60,10",
+            "-e",
+            "0",
+            "--show",
+            "all",
+            "--format",
+            "json",
+        ])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let keys: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
+    assert_eq!(
+        keys,
+        [
+            "restitution",
+            "inertia",
+            "in",
+            "com",
+            "fin",
+            "v_com",
+            "momentum",
+            "forms",
+            "energy",
+            "ellipses",
+            "products"
+        ]
+    );
+    for e in ["in", "fin", "com"] {
+        assert!(
+            v["ellipses"][e]["axes"].is_array(),
+            "a general M gives the axes"
+        );
+    }
+}
+
+#[test]
+fn general_tensor_numbers_derived_by_hand() {
+    // M = [[4, 0.5], [0.5, 1]], V = (60, 10), e = 0: M_total = 6, P_total = 285, V_COM = 47.5,
+    // mu = det/M_total = 3.75/6, crunch = 1/2 mu 50^2 = 781.25, KE_IN = 7550.
+    let out = collide()
+        .args([
+            "solve",
+            "--inertia",
+            "4,0.5;0.5,1",
+            "-v",
+            "60,10",
+            "-e",
+            "0",
+            "--show",
+            "all",
+            "--format",
+            "json",
+        ])
+        .output()
+        .unwrap();
+    let r: collide::report::Report = serde_json::from_slice(&out.stdout).unwrap();
+    let e = r.energy.unwrap();
+    common::assert_close(r.vectors.unwrap().v_com, 47.5, common::REL, "V_COM");
+    common::assert_close(e.crunch, 781.25, common::REL, "crunch");
+    common::assert_close(e.ke_in, 7550.0, common::REL, "KE_IN");
+    common::assert_close(e.com, 6768.75, common::REL, "KE_COM");
+    // Ellipse radii along the eigenvectors: lambda = (5 -+ sqrt(10))/2.
+    let el = r.ellipses.unwrap();
+    let l_min = (5.0 - 10f64.sqrt()) / 2.0;
+    let l_max = (5.0 + 10f64.sqrt()) / 2.0;
+    common::assert_close(
+        el.e_in.a,
+        (2.0 * 7550.0 / l_min).sqrt(),
+        8.0 * f64::EPSILON,
+        "IN a",
+    );
+    common::assert_close(
+        el.e_in.b,
+        (2.0 * 7550.0 / l_max).sqrt(),
+        8.0 * f64::EPSILON,
+        "IN b",
+    );
+}
+
+#[test]
+fn closed_pipe_ends_quietly() {
+    let mut child = StdCommand::new(assert_cmd::cargo::cargo_bin("collide"))
+        .args(["solve", "-m", "4,1", "-v", "60,10", "--show", "all"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // the reader (`head`) is gone before anything is written
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn help_and_version() {
+    collide()
+        .arg("--help")
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("solve"));
+    collide()
+        .args(["solve", "--help"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("--restitution"));
+    collide().arg("--version").assert().success();
+}

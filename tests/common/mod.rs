@@ -1,0 +1,27 @@
+//! Shared test helpers: the tolerances every physics test states, and a way to run the binary.
+#![allow(dead_code)]
+
+use assert_cmd::Command;
+
+/// Lecture numbers are exact small rationals; binary64 results must match them to a few ulps.
+pub const REL: f64 = 4.0 * f64::EPSILON;
+
+/// `|actual - expected| <= rel * |expected|` (exact equality for an expected 0), with a message.
+#[track_caller]
+pub fn assert_close(actual: f64, expected: f64, rel: f64, what: &str) {
+    let ok = (actual - expected).abs() <= rel * expected.abs();
+    assert!(
+        ok,
+        "{what}: expected {expected}, got {actual} (rel tolerance {rel:e})"
+    );
+}
+
+#[track_caller]
+pub fn assert_pair(actual: [f64; 2], expected: [f64; 2], what: &str) {
+    assert_close(actual[0], expected[0], REL, &format!("{what}[0]"));
+    assert_close(actual[1], expected[1], REL, &format!("{what}[1]"));
+}
+
+pub fn collide() -> Command {
+    Command::cargo_bin("collide").expect("the collide binary is built")
+}
