@@ -17,7 +17,7 @@ fn main() -> anyhow::Result<()> {
             velocities.clone(),
             e.parse().map_err(anyhow::Error::msg)?,
         );
-        let r = Report::build(&case, &Sections::new([Section::All]))?;
+        let r = Report::build(&case.collision, &Sections::new([Section::All]))?;
         let (v, m, f) = (r.vectors.unwrap(), r.momentum.unwrap(), r.forms.unwrap());
         let (en, el, p) = (r.energy.unwrap(), r.ellipses.unwrap(), r.products.unwrap());
         println!(

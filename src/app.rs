@@ -6,8 +6,10 @@ use serde::Serialize;
 
 use crate::case::Case;
 use crate::cli::{CaseArgs, Command, Format, SceneArgs, SolveArgs};
+use crate::exact::ExactCollision;
 use crate::expect::Check;
 use crate::inertia::InertiaTensor;
+use crate::quantity::{Exact, Scalar};
 use crate::report::{Report, Sections, json, text};
 use crate::scene::{Scene, SceneError};
 
@@ -39,18 +41,55 @@ impl CaseArgs {
 
 fn solve(args: SolveArgs) -> Result<Outcome> {
     let case = args.case.into_case()?;
-    let report = Report::build(&case, &Sections::new(args.show))?;
-    let stdout = match args.format {
-        Format::Text => text::render(&case, &report),
-        Format::Json => json::render(&report),
+    let sections = Sections::new(args.show);
+    let stdout = if args.exact {
+        let report = Report::build(&ExactCollision::from_case(&case), &sections)?;
+        render(&case, &report, args.format)
+    } else {
+        render(
+            &case,
+            &Report::build(&case.collision, &sections)?,
+            args.format,
+        )
     };
     Ok(Outcome { stdout, status: 0 })
+}
+
+fn render<N: Scalar>(case: &Case, report: &Report<N>, format: Format) -> String {
+    match format {
+        Format::Text => text::render(case, report),
+        Format::Json => json::render(report),
+    }
+}
+
+/// A scene's report, in the arithmetic the scene asked for.
+enum AnyReport {
+    Binary64(Box<Report<f64>>),
+    Exact(Box<Report<Exact>>),
+}
+
+impl AnyReport {
+    fn json(&self) -> serde_json::Value {
+        match self {
+            AnyReport::Binary64(r) => serde_json::to_value(r),
+            AnyReport::Exact(r) => serde_json::to_value(r),
+        }
+        .expect("reports serialize")
+    }
+    /// Text of the sections in `show` (others were computed only for the checks).
+    fn text(&self, case: &Case, show: &Sections) -> String {
+        match self {
+            AnyReport::Binary64(r) => text::render(case, &r.only(show)),
+            AnyReport::Exact(r) => text::render(case, &r.only(show)),
+        }
+    }
 }
 
 /// A scene solved and checked.
 struct Solved {
     scene: Scene,
-    report: Report,
+    report: AnyReport,
+    json: serde_json::Value,
     checks: Vec<Check>,
 }
 
@@ -61,9 +100,19 @@ impl Solved {
 }
 
 fn solve_scene(scene: Scene) -> Result<Solved> {
-    let report = Report::build(&scene.case, &scene.sections_needed())
-        .with_context(|| format!("{}", scene.path.display()))?;
-    let json = serde_json::to_value(&report)?;
+    let sections = scene.sections_needed();
+    let report = if scene.exact {
+        AnyReport::Exact(Box::new(Report::build(
+            &ExactCollision::from_case(&scene.case),
+            &sections,
+        )?))
+    } else {
+        AnyReport::Binary64(Box::new(
+            Report::build(&scene.case.collision, &sections)
+                .with_context(|| format!("{}", scene.path.display()))?,
+        ))
+    };
+    let json = report.json();
     let checks = scene
         .expect
         .iter()
@@ -78,6 +127,7 @@ fn solve_scene(scene: Scene) -> Result<Solved> {
     Ok(Solved {
         scene,
         report,
+        json,
         checks,
     })
 }
@@ -87,7 +137,7 @@ struct SceneJson<'a> {
     scene: String,
     title: Option<&'a str>,
     source: Option<&'a str>,
-    report: &'a Report,
+    report: &'a serde_json::Value,
     checks: usize,
     failed: Vec<FailedJson<'a>>,
 }
@@ -131,7 +181,7 @@ fn scene_json(s: &Solved) -> SceneJson<'_> {
         scene: s.scene.path.display().to_string(),
         title: s.scene.title.as_deref(),
         source: s.scene.source.as_deref(),
-        report: &s.report,
+        report: &s.json,
         checks: s.checks.len(),
         failed: s
             .failures()
@@ -169,17 +219,7 @@ fn scene_text(s: &Solved) -> String {
         }
         out.push('\n');
     }
-    let mut shown = s.report.clone();
-    // Print the sections the scene shows; the others were computed only for its checks.
-    let keep = |sec| sc.show.contains(sec);
-    use crate::report::Section as S;
-    shown.vectors = shown.vectors.filter(|_| keep(S::Vectors));
-    shown.momentum = shown.momentum.filter(|_| keep(S::Momentum));
-    shown.forms = shown.forms.filter(|_| keep(S::Forms));
-    shown.energy = shown.energy.filter(|_| keep(S::Energy));
-    shown.ellipses = shown.ellipses.filter(|_| keep(S::Ellipses));
-    shown.products = shown.products.filter(|_| keep(S::Products));
-    out.push_str(&text::render(&sc.case, &shown));
+    out.push_str(&s.report.text(&sc.case, &sc.show));
     if !s.checks.is_empty() {
         let failed = s.failures().count();
         out.push_str(&format!(

@@ -71,6 +71,11 @@ pub struct SolveArgs {
     )]
     pub show: Vec<Section>,
 
+    /// Exact rational arithmetic from the numbers as typed: fractions out, radii to 20 digits
+    /// marked approximate
+    #[arg(long)]
+    pub exact: bool,
+
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,

@@ -8,16 +8,19 @@ use serde::{Deserialize, Serialize};
 use crate::inertia::InertiaTensor;
 
 /// Radii `a`, `b` of one energy ellipse; `axes` (general `M` only) are the unit directions of `a`
-/// and `b`: the eigenvectors of `M` in ascending eigenvalue order, so `a >= b`.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Ellipse {
-    pub a: f64,
-    pub b: f64,
+/// and `b`: the eigenvectors of `M` in ascending eigenvalue order, so `a >= b`. In exact mode the
+/// radii are irrational and `approx` is true (serialized only then).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq, Default)]
+pub struct Ellipse<N = f64> {
+    pub a: N,
+    pub b: N,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub axes: Option<[[f64; 2]; 2]>,
+    pub axes: Option<[[N; 2]; 2]>,
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub approx: bool,
 }
 
-impl Ellipse {
+impl Ellipse<f64> {
     /// The ellipse of energy `ke`; `axes` are `M`'s principal axes for a general tensor, `None`
     /// for a diagonal one. Radii are `sqrt(2 KE) / sqrt(lambda)`, which cannot overflow.
     pub fn new(m: &InertiaTensor, ke: f64, axes: Option<&[(f64, Vector2<f64>); 2]>) -> Ellipse {
@@ -34,12 +37,14 @@ impl Ellipse {
                     a: r(d[(0, 0)]),
                     b: r(d[(1, 1)]),
                     axes: None,
+                    approx: false,
                 }
             }
             Some([(l1, q1), (l2, q2)]) => Ellipse {
                 a: r(*l1),
                 b: r(*l2),
                 axes: Some([[q1.x, q1.y], [q2.x, q2.y]]),
+                approx: false,
             },
         }
     }

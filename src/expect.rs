@@ -167,6 +167,10 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
             let y = y.as_f64().unwrap_or(f64::NAN);
             (y - x).abs() <= tol.abs + tol.rel * x.abs()
         }
+        // Exact mode: "4/3", or 20 significant digits of an irrational value.
+        (Expected::Number(x), Json::String(y)) => y
+            .parse::<Number>()
+            .is_ok_and(|y| (y.value() - x).abs() <= tol.abs + tol.rel * x.abs()),
         (Expected::Array(xs), Json::Array(ys)) => {
             xs.len() == ys.len() && xs.iter().zip(ys).all(|(x, y)| matches(x, y, tol))
         }
@@ -189,6 +193,7 @@ fn show_expected(e: &Expected) -> String {
 fn show_json(v: &Json) -> String {
     match v {
         Json::Number(n) => n.as_f64().map(num).unwrap_or_else(|| n.to_string()),
+        Json::String(s) => s.clone(),
         Json::Array(a) => format!(
             "[{}]",
             a.iter().map(show_json).collect::<Vec<_>>().join(", ")

@@ -40,6 +40,7 @@ struct SceneFile {
     velocities: [Number; 2],
     restitution: Option<Restitution>,
     show: Option<Vec<Section>>,
+    exact: Option<bool>,
     expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
 }
 
@@ -52,6 +53,8 @@ pub struct Scene {
     pub case: Case,
     /// Sections to print.
     pub show: Sections,
+    /// Exact rational arithmetic (`exact = true`).
+    pub exact: bool,
     pub expect: Vec<Expectation>,
 }
 
@@ -145,6 +148,7 @@ impl Scene {
             source: file.source,
             case,
             show,
+            exact: file.exact.unwrap_or(false),
             expect,
         })
     }

@@ -6,12 +6,11 @@ pub mod text;
 
 use std::collections::BTreeSet;
 
-use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use crate::case::Case;
-use crate::collision::Collision;
 use crate::ellipse::Ellipse;
+use crate::quantity::Scalar;
+use crate::solver::Solver;
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
 #[derive(
@@ -31,7 +30,9 @@ pub enum Section {
     Ellipses,
     /// Plain dot product V_FIN.V_IN and outer product V_IN (x) V_FIN
     Products,
-    /// Every section
+    /// Self-check: residuals of momentum and energy conservation, and the solve's run time
+    Diagnostics,
+    /// Every physics section (not diagnostics, whose timing varies run to run)
     All,
 }
 
@@ -56,6 +57,7 @@ impl Section {
             Section::Energy => &["energy"],
             Section::Ellipses => &["ellipses"],
             Section::Products => &["products"],
+            Section::Diagnostics => &["diagnostics"],
             Section::All => &[],
         }
     }
@@ -94,163 +96,234 @@ impl Sections {
 }
 
 /// The solved collision, with the requested sections filled in. Field names are the JSON schema.
+/// `N` is `f64`, or `Exact` with `--exact`.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Report {
-    pub restitution: f64,
-    pub inertia: [[f64; 2]; 2],
-    #[serde(flatten, default, skip_serializing_if = "Option::is_none")]
-    pub vectors: Option<Vectors>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub momentum: Option<Momentum>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub forms: Option<Forms>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub energy: Option<Energy>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub ellipses: Option<Ellipses>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub products: Option<Products>,
+#[serde(bound(deserialize = "N: Deserialize<'de> + Default"))]
+pub struct Report<N = f64> {
+    pub restitution: N,
+    pub inertia: [[N; 2]; 2],
+    #[serde(flatten, default = "none", skip_serializing_if = "Option::is_none")]
+    pub vectors: Option<Vectors<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub momentum: Option<Momentum<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub forms: Option<Forms<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub energy: Option<Energy<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub ellipses: Option<Ellipses<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub products: Option<Products<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub diagnostics: Option<Diagnostics>,
+    /// What the text notes quote (not part of the JSON schema).
+    #[serde(skip)]
+    pub notes: Notes<N>,
+}
+
+fn none<T>() -> Option<T> {
+    None
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Vectors {
+pub struct Vectors<N = f64> {
     #[serde(rename = "in")]
-    pub v_in: [f64; 2],
-    pub com: [f64; 2],
-    pub fin: [f64; 2],
-    pub v_com: f64,
+    pub v_in: [N; 2],
+    pub com: [N; 2],
+    pub fin: [N; 2],
+    pub v_com: N,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Momentum {
+pub struct Momentum<N = f64> {
     #[serde(rename = "in")]
-    pub p_in: [f64; 2],
-    pub fin: [f64; 2],
-    pub total: f64,
+    pub p_in: [N; 2],
+    pub fin: [N; 2],
+    pub total: N,
 }
 
 /// The quadratic forms `X.M.Y` of Sec. 2.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Forms {
-    pub com_m_in: f64,
-    pub fin_m_in: f64,
-    pub in_m_in: f64,
-    pub fin_m_fin: f64,
-    pub com_m_com: f64,
+pub struct Forms<N = f64> {
+    pub com_m_in: N,
+    pub fin_m_in: N,
+    pub in_m_in: N,
+    pub fin_m_fin: N,
+    pub com_m_com: N,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Energy {
+pub struct Energy<N = f64> {
     #[serde(rename = "in")]
-    pub ke_in: f64,
-    pub fin: f64,
-    pub com: f64,
-    pub crunch: f64,
-    pub lost: f64,
+    pub ke_in: N,
+    pub fin: N,
+    pub com: N,
+    pub crunch: N,
+    pub lost: N,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Ellipses {
+#[serde(bound(deserialize = "N: Deserialize<'de> + Default"))]
+pub struct Ellipses<N = f64> {
     #[serde(rename = "in")]
-    pub e_in: Ellipse,
-    pub fin: Ellipse,
-    pub com: Ellipse,
+    pub e_in: Ellipse<N>,
+    pub fin: Ellipse<N>,
+    pub com: Ellipse<N>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Products {
-    pub dot_fin_in: f64,
-    pub outer_in_fin: [[f64; 2]; 2],
+pub struct Products<N = f64> {
+    pub dot_fin_in: N,
+    pub outer_in_fin: [[N; 2]; 2],
 }
 
-fn arr(v: Vector2<f64>) -> [f64; 2] {
-    [v.x, v.y]
+/// A solve's own error beside its own run time (`--show diagnostics`).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Diagnostics {
+    /// `|u.M.V_FIN - u.M.V_IN|` relative to the sum of the magnitudes of its terms.
+    pub momentum_residual: f64,
+    /// `|1/2 V_FIN.M.V_FIN - (KE_COM + e^2 crunch)|` relative to `KE_FIN`.
+    pub energy_residual: f64,
+    /// Median wall-clock time of one solve (FIN, V_COM and the energies), in nanoseconds.
+    pub solve_ns: f64,
+    /// How many solves were timed.
+    pub repetitions: usize,
+}
+
+/// Values the text notes quote beside the sections.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Notes<N = f64> {
+    /// `mu = det M / M_total`.
+    pub reduced_mass: N,
+    /// `V1 - V2`.
+    pub relative_velocity: N,
+    /// Momentum line `k1 V1 + k2 V2 = P_total` and its slope.
+    pub line: (N, N, Option<N>),
 }
 
 /// Why a report cannot be given in binary64.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
     "{quantity} is not representable in binary64 (its magnitude is beyond 1.8e308): \
-     rescale the units (e.g. use tons instead of kilograms), or ask only for other sections with --show"
+     use --exact, rescale the units, or ask only for other sections with --show"
 )]
 pub struct Unrepresentable {
     pub quantity: String,
 }
 
-impl Report {
-    /// Solves `case` and computes the requested sections, and nothing else.
-    pub fn build(case: &Case, sections: &Sections) -> Result<Report, Unrepresentable> {
-        let c: &Collision = &case.collision;
-        let m = c.inertia.matrix();
+impl<N: Scalar> Report<N> {
+    /// Computes the requested sections of a solved collision, and nothing else.
+    pub fn build<S: Solver<N = N>>(
+        c: &S,
+        sections: &Sections,
+    ) -> Result<Report<N>, Unrepresentable> {
+        let has = |s| sections.contains(s);
         let need_fin = [
             Section::Vectors,
             Section::Momentum,
             Section::Forms,
             Section::Products,
         ]
-        .iter()
-        .any(|&s| sections.contains(s));
+        .into_iter()
+        .any(has);
         let fin = need_fin.then(|| c.v_fin());
-        let fin = || fin.expect("FIN is computed for every section that uses it");
-        let v_com = c.v_com();
-        let energy = sections.contains(Section::Energy) || sections.contains(Section::Ellipses);
-        let energy = energy.then(|| Energy {
+        let fin = || {
+            fin.clone()
+                .expect("FIN is computed for every section that uses it")
+        };
+        let v_in = c.v_in();
+        let energy = (has(Section::Energy) || has(Section::Ellipses)).then(|| Energy {
             ke_in: c.ke_in(),
             fin: c.ke_fin(),
             com: c.ke_com(),
             crunch: c.crunch(),
-            lost: c.energy_lost(),
+            lost: c.lost(),
         });
         let report = Report {
-            restitution: c.restitution.value(),
-            inertia: [[m[(0, 0)], m[(0, 1)]], [m[(1, 0)], m[(1, 1)]]],
-            vectors: sections.contains(Section::Vectors).then(|| Vectors {
-                v_in: arr(c.v_in),
-                com: [v_com, v_com],
-                fin: arr(fin()),
-                v_com,
-            }),
-            momentum: sections.contains(Section::Momentum).then(|| Momentum {
-                p_in: arr(c.inertia.momentum(&c.v_in)),
-                fin: arr(c.inertia.momentum(&fin())),
-                total: c.total_momentum(),
-            }),
-            forms: sections.contains(Section::Forms).then(|| {
-                let com_com = v_com * c.total_momentum();
-                Forms {
-                    com_m_in: com_com,
-                    fin_m_in: c.inertia.form(&fin(), &c.v_in),
-                    in_m_in: c.inertia.form(&c.v_in, &c.v_in),
-                    fin_m_fin: c.inertia.form(&fin(), &fin()),
-                    com_m_com: com_com,
+            restitution: c.restitution(),
+            inertia: c.inertia(),
+            vectors: has(Section::Vectors).then(|| {
+                let v_com = c.v_com();
+                Vectors {
+                    v_in: v_in.clone(),
+                    com: [v_com.clone(), v_com.clone()],
+                    fin: fin(),
+                    v_com,
                 }
             }),
-            ellipses: sections.contains(Section::Ellipses).then(|| {
+            momentum: has(Section::Momentum).then(|| Momentum {
+                p_in: c.momentum(&v_in),
+                fin: c.momentum(&fin()),
+                total: c.total_momentum(),
+            }),
+            forms: has(Section::Forms).then(|| {
+                let com = c.com_form();
+                Forms {
+                    com_m_in: com.clone(),
+                    fin_m_in: c.form(&fin(), &v_in),
+                    in_m_in: c.form(&v_in, &v_in),
+                    fin_m_fin: c.form(&fin(), &fin()),
+                    com_m_com: com,
+                }
+            }),
+            ellipses: has(Section::Ellipses).then(|| {
                 let e = energy
                     .as_ref()
                     .expect("energies are computed for the ellipses");
-                let axes = (!c.inertia.is_diagonal()).then(|| c.inertia.principal_axes());
-                let ellipse = |ke| Ellipse::new(&c.inertia, ke, axes.as_ref());
                 Ellipses {
-                    e_in: ellipse(e.ke_in),
-                    fin: ellipse(e.fin),
-                    com: ellipse(e.com),
+                    e_in: c.ellipse(&e.ke_in),
+                    fin: c.ellipse(&e.fin),
+                    com: c.ellipse(&e.com),
                 }
             }),
-            products: sections.contains(Section::Products).then(|| {
-                let (i, f) = (c.v_in, fin());
-                Products {
-                    dot_fin_in: crate::compensated::dot2(&[f.x, f.y], &[i.x, i.y]),
-                    outer_in_fin: [[i.x * f.x, i.x * f.y], [i.y * f.x, i.y * f.y]],
+            products: has(Section::Products).then(|| Products {
+                dot_fin_in: c.dot(&fin(), &v_in),
+                outer_in_fin: c.outer(&v_in, &fin()),
+            }),
+            energy: energy.filter(|_| has(Section::Energy)),
+            diagnostics: has(Section::Diagnostics).then(|| {
+                let (momentum_residual, energy_residual) = c.residuals();
+                let (solve_ns, repetitions) = time_solves(c);
+                Diagnostics {
+                    momentum_residual,
+                    energy_residual,
+                    solve_ns,
+                    repetitions,
                 }
             }),
-            energy: energy.filter(|_| sections.contains(Section::Energy)),
+            notes: Notes {
+                reduced_mass: if has(Section::Energy) {
+                    c.reduced_mass()
+                } else {
+                    N::default()
+                },
+                relative_velocity: c.relative_velocity(),
+                line: if has(Section::Momentum) {
+                    c.momentum_line()
+                } else {
+                    (N::default(), N::default(), None)
+                },
+            },
         };
         report.check_representable()?;
         Ok(report)
     }
 
-    /// Every number in the report must be finite: an overflow is reported by name, never printed.
+    /// The same report with only the sections in `show`.
+    pub fn only(&self, show: &Sections) -> Report<N> {
+        let keep = |s| show.contains(s);
+        let mut r = self.clone();
+        r.vectors = r.vectors.filter(|_| keep(Section::Vectors));
+        r.momentum = r.momentum.filter(|_| keep(Section::Momentum));
+        r.forms = r.forms.filter(|_| keep(Section::Forms));
+        r.energy = r.energy.filter(|_| keep(Section::Energy));
+        r.ellipses = r.ellipses.filter(|_| keep(Section::Ellipses));
+        r.products = r.products.filter(|_| keep(Section::Products));
+        r.diagnostics = r.diagnostics.filter(|_| keep(Section::Diagnostics));
+        r
+    }
+
+    /// Every number in the report must be a real result: an overflow is reported by name.
     fn check_representable(&self) -> Result<(), Unrepresentable> {
         let value = serde_json::to_value(self).expect("a report serializes");
         // serde_json turns non-finite floats into null.
@@ -272,9 +345,49 @@ impl Report {
                 _ => None,
             }
         }
-        match find_null(&value, "") {
-            Some(quantity) => Err(Unrepresentable { quantity }),
-            None => Ok(()),
+        if let Some(quantity) = find_null(&value, "") {
+            return Err(Unrepresentable { quantity });
         }
+        let n = &self.notes;
+        if !(n.reduced_mass.is_representable() && n.relative_velocity.is_representable()) {
+            return Err(Unrepresentable {
+                quantity: "the relative velocity V1 - V2".into(),
+            });
+        }
+        Ok(())
     }
+}
+
+/// Median time of one solve of `c`, over batches filling about a millisecond.
+fn time_solves<S: Solver>(c: &S) -> (f64, usize) {
+    use std::hint::black_box;
+    use std::time::Instant;
+    let solve = || {
+        black_box(c.v_fin());
+        black_box(c.ke_fin());
+        black_box(c.crunch());
+    };
+    // Size a batch to take ~100 us, then time 11 batches and take the median.
+    let mut batch = 1usize;
+    loop {
+        let t = Instant::now();
+        for _ in 0..batch {
+            solve();
+        }
+        if t.elapsed().as_micros() >= 100 || batch >= 1 << 20 {
+            break;
+        }
+        batch *= 2;
+    }
+    let mut per: Vec<f64> = (0..11)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..batch {
+                solve();
+            }
+            t.elapsed().as_nanos() as f64 / batch as f64
+        })
+        .collect();
+    per.sort_by(f64::total_cmp);
+    (per[per.len() / 2], 11 * batch)
 }

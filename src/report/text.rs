@@ -4,8 +4,10 @@
 
 use std::fmt::Write;
 
-use super::{Ellipses, Energy, Forms, Momentum, Products, Report, Vectors};
+use super::{Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Vectors};
 use crate::case::Case;
+use crate::ellipse::Ellipse;
+use crate::quantity::Scalar;
 
 /// A number as people read it: shortest round-trip digits, plain for 1e-5 <= |x| < 1e16 and in
 /// scientific notation outside.
@@ -20,8 +22,8 @@ pub fn num(x: f64) -> String {
     }
 }
 
-fn pair(v: [f64; 2]) -> String {
-    format!("({}, {})", num(v[0]), num(v[1]))
+fn pair<N: Scalar>(v: &[N; 2]) -> String {
+    format!("({}, {})", v[0].show(), v[1].show())
 }
 
 /// Rows of cells (`label  value  note ...`), aligned into columns under a heading.
@@ -68,7 +70,7 @@ impl Block {
 }
 
 /// Renders the report of `case` as text.
-pub fn render(case: &Case, report: &Report) -> String {
+pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
     let mut out = String::new();
     let e = case.restitution();
     let _ = writeln!(
@@ -84,13 +86,13 @@ pub fn render(case: &Case, report: &Report) -> String {
         vectors(case, v).render(&mut out);
     }
     if let Some(m) = &report.momentum {
-        momentum(case, m).render(&mut out);
+        momentum(case, m, &report.notes).render(&mut out);
     }
     if let Some(f) = &report.forms {
         forms(case, f, report.energy.as_ref()).render(&mut out);
     }
     if let Some(en) = &report.energy {
-        energy(case, en).render(&mut out);
+        energy(case, en, &report.notes).render(&mut out);
     }
     if let Some(el) = &report.ellipses {
         ellipses(case, el).render(&mut out);
@@ -98,164 +100,190 @@ pub fn render(case: &Case, report: &Report) -> String {
     if let Some(p) = &report.products {
         products(p).render(&mut out);
     }
+    if let Some(d) = &report.diagnostics {
+        diagnostics(d).render(&mut out);
+    }
     out
 }
 
-fn vectors(case: &Case, v: &Vectors) -> Block {
+fn diagnostics(d: &Diagnostics) -> Block {
+    let mut b = Block::new("Diagnostics (this run's own error and run time)");
+    let ulps = |r: f64| format!("{:.2} ulp", r / f64::EPSILON);
+    b.row(
+        "momentum residual",
+        format!("{:.1e}", d.momentum_residual),
+        ulps(d.momentum_residual),
+    );
+    b.row(
+        "KE_FIN - (KE_COM + e^2 crunch)",
+        format!("{:.1e}", d.energy_residual),
+        ulps(d.energy_residual),
+    );
+    b.row(
+        "solve time",
+        format!("{:.0} ns", d.solve_ns),
+        format!("median, {} solves", d.repetitions),
+    );
+    b
+}
+
+fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>) -> Block {
     let mut b = Block::new("Vectors (V1, V2)");
-    b.row("IN   V_IN", pair(v.v_in), "");
+    b.row("IN   V_IN", pair(&v.v_in), "");
     b.row(
         "COM  V_COM u",
-        pair(v.com),
-        format!("V_COM = P_total / M_total = {}", num(v.v_com)),
+        pair(&v.com),
+        format!("V_COM = P_total / M_total = {}", v.v_com.show()),
     );
     if case.restitution().is_totally_inelastic() {
         b.row("FIN  V_FIN", "= COM", "the bodies stick and move together");
     } else {
-        b.row("FIN  V_FIN", pair(v.fin), "= (1 + e) V_COM u - e V_IN");
+        b.row("FIN  V_FIN", pair(&v.fin), "= (1 + e) V_COM u - e V_IN");
     }
-    if v.v_in[0] == v.v_in[1] {
+    if case.collision.v_in.x == case.collision.v_in.y {
         b.row("", "", "V1 = V2: the bodies never meet, so FIN = IN");
     }
     b
 }
 
-fn momentum(case: &Case, p: &Momentum) -> Block {
+fn momentum<N: Scalar>(case: &Case, p: &Momentum<N>, notes: &Notes<N>) -> Block {
     let mut b = Block::new("Momentum (P = M.V)");
-    b.row("P_IN   M.V_IN", pair(p.p_in), "");
-    if !case.restitution().is_totally_inelastic() {
-        b.row("P_FIN  M.V_FIN", pair(p.fin), "");
+    b.row("P_IN   M.V_IN", pair(&p.p_in), "");
+    let stuck = case.restitution().is_totally_inelastic();
+    let note = if stuck {
+        "the bodies' shares of P_total once stuck"
     } else {
-        b.row(
-            "P_FIN  M.V_FIN",
-            pair(p.fin),
-            "the bodies' shares of P_total once stuck",
-        );
-    }
-    let m = case.inertia().matrix();
-    let (k1, k2) = (m[(0, 0)] + m[(0, 1)], m[(0, 1)] + m[(1, 1)]);
+        ""
+    };
+    b.row("P_FIN  M.V_FIN", pair(&p.fin), note);
+    let (k1, k2, slope) = &notes.line;
+    let slope = match slope {
+        Some(s) => format!("slope {}", s.show()),
+        None => "vertical".to_string(),
+    };
     b.row(
         "P_total  u.M.V",
-        num(p.total),
+        p.total.show(),
         format!(
-            "momentum line {} V1 + {} V2 = {}, slope {}",
-            num(k1),
-            num(k2),
-            num(p.total),
-            num(-k1 / k2)
+            "momentum line {} V1 + {} V2 = {}, {slope}",
+            k1.show(),
+            k2.show(),
+            p.total.show()
         ),
     );
     b
 }
 
-fn forms(case: &Case, f: &Forms, energy: Option<&Energy>) -> Block {
+fn forms<N: Scalar>(case: &Case, f: &Forms<N>, energy: Option<&Energy<N>>) -> Block {
     let mut b = Block::new("Quadratic forms (X.M.Y)");
     let e = case.restitution();
     if e.is_totally_inelastic() {
         b.row(
             "V_COM.M.V_IN = V_COM.M.V_COM = V_FIN.M.V_IN = V_FIN.M.V_FIN = V_COM P_total",
-            num(f.com_m_in),
+            f.com_m_in.show(),
             "",
         );
-        b.row("V_IN.M.V_IN", num(f.in_m_in), "");
+        b.row("V_IN.M.V_IN", f.in_m_in.show(), "");
         return b;
     }
     b.row(
         "V_COM.M.V_IN = V_COM.M.V_FIN = V_COM.M.V_COM = V_COM P_total",
-        num(f.com_m_in),
+        f.com_m_in.show(),
         "",
     );
     b.row(
         "V_FIN.M.V_IN = V_IN.M.V_FIN",
-        num(f.fin_m_in),
+        f.fin_m_in.show(),
         "M is symmetric",
     );
     if e.is_elastic() {
         b.row(
             "V_IN.M.V_IN = V_FIN.M.V_FIN",
-            num(f.in_m_in),
+            f.in_m_in.show(),
             "elastic: one energy ellipse",
         );
         // The lecture's check: crunch = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4 when elastic.
         let crunch = energy
-            .map(|en| format!(" = {}", num(en.crunch)))
+            .map(|en| format!(" = {}", en.crunch.show()))
             .unwrap_or_default();
         b.row(
             "V_IN.M.V_IN/4 - V_FIN.M.V_IN/4",
-            format!("{} - {}", num(f.in_m_in / 4.0), num(f.fin_m_in / 4.0)),
+            format!(
+                "{} - {}",
+                f.in_m_in.quarter().show(),
+                f.fin_m_in.quarter().show()
+            ),
             format!("= crunch{crunch} (elastic)"),
         );
     } else {
-        b.row("V_IN.M.V_IN", num(f.in_m_in), "");
-        b.row("V_FIN.M.V_FIN", num(f.fin_m_fin), "");
+        b.row("V_IN.M.V_IN", f.in_m_in.show(), "");
+        b.row("V_FIN.M.V_FIN", f.fin_m_fin.show(), "");
     }
     b
 }
 
-fn energy(case: &Case, en: &Energy) -> Block {
+fn energy<N: Scalar>(case: &Case, en: &Energy<N>, notes: &Notes<N>) -> Block {
     let mut b = Block::new("Energy (KE = 1/2 V.M.V)");
     let e = case.restitution();
-    let c = &case.collision;
     if e.is_elastic() {
         b.row(
             "KE_IN = KE_FIN",
-            num(en.ke_in),
+            en.ke_in.show(),
             "elastic: energy is conserved",
         );
     } else {
-        b.row("KE_IN", num(en.ke_in), "");
+        b.row("KE_IN", en.ke_in.show(), "");
     }
     if e.is_totally_inelastic() {
-        b.row("KE_FIN = KE_COM = 1/2 V_COM P_total", num(en.com), "");
+        b.row("KE_FIN = KE_COM = 1/2 V_COM P_total", en.com.show(), "");
     } else {
         if !e.is_elastic() {
-            b.row("KE_FIN = KE_COM + e^2 crunch", num(en.fin), "");
+            b.row("KE_FIN = KE_COM + e^2 crunch", en.fin.show(), "");
         }
-        b.row("KE_COM = 1/2 V_COM P_total", num(en.com), "");
+        b.row("KE_COM = 1/2 V_COM P_total", en.com.show(), "");
     }
-    let mu = c.inertia.reduced_mass();
-    let mu_name = if c.inertia.is_diagonal() {
+    let mu_name = if case.inertia().is_diagonal() {
         "mu = M1 M2 / (M1 + M2)"
     } else {
         "mu = det M / M_total"
     };
     b.row(
         "crunch = KE_IN - KE_COM = 1/2 mu (V1 - V2)^2",
-        num(en.crunch),
+        en.crunch.show(),
         format!(
             "{mu_name} = {}, V1 - V2 = {}",
-            num(mu),
-            num(c.relative_velocity())
+            notes.reduced_mass.show(),
+            notes.relative_velocity.show()
         ),
     );
     if e.is_totally_inelastic() {
         b.row(
             "lost = crunch",
-            num(en.lost),
+            en.lost.show(),
             "all of the crunch energy turns into heat",
         );
     } else if !e.is_elastic() {
-        b.row("lost = (1 - e^2) crunch", num(en.lost), "");
+        b.row("lost = (1 - e^2) crunch", en.lost.show(), "");
     }
     b
 }
 
-fn ellipses(case: &Case, el: &Ellipses) -> Block {
+fn ellipses<N: Scalar>(case: &Case, el: &Ellipses<N>) -> Block {
     let e = case.restitution();
     let heading = match &el.e_in.axes {
         None => "Energy ellipses (1/2 V.M.V = KE; radius a along V1, b along V2)".to_string(),
         Some([qa, qb]) => format!(
             "Energy ellipses (1/2 V.M.V = KE; radius a along {}, b along {}: principal axes of M)",
-            pair(*qa),
-            pair(*qb)
+            pair(qa),
+            pair(qb)
         ),
     };
     let mut b = Block::new(heading);
-    let mut row = |name: &str, x: &crate::ellipse::Ellipse| {
+    let mut row = |name: &str, x: &Ellipse<N>| {
         b.cells([
             name.to_string(),
-            format!("a = {}", num(x.a)),
-            format!("b = {}", num(x.b)),
+            format!("a = {}", x.a.show()),
+            format!("b = {}", x.b.show()),
         ]);
     };
     if e.is_elastic() {
@@ -272,18 +300,18 @@ fn ellipses(case: &Case, el: &Ellipses) -> Block {
     b
 }
 
-fn products(p: &Products) -> Block {
+fn products<N: Scalar>(p: &Products<N>) -> Block {
     let mut b = Block::new("Products");
-    b.row("V_FIN . V_IN", num(p.dot_fin_in), "plain dot product");
-    let o = p.outer_in_fin;
+    b.row("V_FIN . V_IN", p.dot_fin_in.show(), "plain dot product");
+    let o = &p.outer_in_fin;
     b.row(
         "V_IN (x) V_FIN",
         format!(
             "[[{}, {}], [{}, {}]]",
-            num(o[0][0]),
-            num(o[0][1]),
-            num(o[1][0]),
-            num(o[1][1])
+            o[0][0].show(),
+            o[0][1].show(),
+            o[1][0].show(),
+            o[1][1].show()
         ),
         "outer product",
     );
