@@ -5,7 +5,7 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 
 use crate::case::Case;
-use crate::cli::{CaseArgs, Command, Format, SceneArgs, SolveArgs};
+use crate::cli::{AccuracyArgs, CaseArgs, Command, Format, SceneArgs, SolveArgs};
 use crate::exact::ExactCollision;
 use crate::expect::Check;
 use crate::inertia::InertiaTensor;
@@ -25,6 +25,7 @@ pub fn run(command: Command) -> Result<Outcome> {
     match command {
         Command::Solve(args) => solve(args),
         Command::Scene(args) => scene(args),
+        Command::Accuracy(args) => accuracy(args),
     }
 }
 
@@ -262,4 +263,82 @@ fn scene_summary(solved: &[Solved]) -> String {
         bad
     ));
     out
+}
+
+fn accuracy(args: AccuracyArgs) -> Result<Outcome> {
+    use crate::accuracy::{Spread, families, report};
+    let fams = families(args.seed, args.cases as usize);
+    let rows = report(&fams, &args.methods, args.budget_ms);
+    let stdout = match args.format {
+        Format::Json => json::render(&serde_json::json!({
+            "seed": args.seed,
+            "families": fams.iter().map(|f| serde_json::json!({
+                "name": f.name, "about": f.about, "cases": f.cases.len()})).collect::<Vec<_>>(),
+            "rows": rows,
+        })),
+        Format::Text => {
+            let mut out = format!(
+                "Error against run time, seed {}: errors in ulps of each quantity's natural scale \
+                 (FIN: max(|V1|, |V2|, |FIN1|, |FIN2|); crunch and lost: themselves), median / worst; \
+                 time per solve, median (fastest-slowest pass).\n\
+                 inf: no finite result (overflow), or a non-zero result where the exact value is 0.\n",
+                args.seed
+            );
+            let u = |s: &Spread| format!("{} / {}", ulp_text(s.median), ulp_text(s.worst));
+            let mut table = vec![[
+                "family".to_string(),
+                "method".into(),
+                "cases".into(),
+                "FIN ulps".into(),
+                "crunch ulps".into(),
+                "lost ulps".into(),
+                "ns/solve".into(),
+            ]];
+            for r in &rows {
+                table.push([
+                    r.family.to_string(),
+                    r.method.name().to_string(),
+                    r.cases.to_string(),
+                    u(&r.fin_ulps),
+                    u(&r.crunch_ulps),
+                    u(&r.lost_ulps),
+                    format!("{:.1} ({:.1}-{:.1})", r.ns_median, r.ns_min, r.ns_max),
+                ]);
+            }
+            let widths: Vec<usize> =
+                (0..7).map(|i| table.iter().map(|r| r[i].chars().count()).max().unwrap_or(0)).collect();
+            for (i, r) in table.iter().enumerate() {
+                if i > 0 && table[i - 1][0] != r[0] {
+                    out.push('\n');
+                }
+                let cells: Vec<String> = r
+                    .iter()
+                    .zip(&widths)
+                    .enumerate()
+                    .map(|(j, (c, w))| if (2..6).contains(&j) { format!("{c:>w$}") } else { format!("{c:<w$}") })
+                    .collect();
+                out.push_str(cells.join("  ").trim_end());
+                out.push('\n');
+            }
+            out.push_str("\nFamilies:\n");
+            for f in &fams {
+                out.push_str(&format!("  {:<15} {}\n", f.name, f.about));
+            }
+            out
+        }
+    };
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// An error in ulps for the table: `0`, `0.5`, `3`, `2.1e12`, or `inf`.
+fn ulp_text(x: f64) -> String {
+    if !x.is_finite() {
+        "inf".into()
+    } else if x == 0.0 {
+        "0".into()
+    } else if x < 100.0 {
+        format!("{x:.2}").trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{x:.1e}")
+    }
 }

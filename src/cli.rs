@@ -31,6 +31,31 @@ pub enum Command {
     Solve(SolveArgs),
     /// Solve TOML scene files and check their [expect] numbers
     Scene(SceneArgs),
+    /// Error against run time: each method against exact arithmetic on seeded case families
+    Accuracy(AccuracyArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct AccuracyArgs {
+    /// Seed of the case families (the same seed gives the same cases everywhere)
+    #[arg(long, default_value_t = 2026)]
+    pub seed: u64,
+
+    /// Cases per family (the lecture family always has its 5)
+    #[arg(long, default_value_t = 48, value_parser = clap::value_parser!(u64).range(1..=100_000))]
+    pub cases: u64,
+
+    /// Methods to compare, comma-separated
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "impulse,textbook,quadratic,tensor,exact")]
+    pub methods: Vec<crate::accuracy::Method>,
+
+    /// Time spent timing each method on each family, in milliseconds
+    #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u64).range(1..=60_000))]
+    pub budget_ms: u64,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
 }
 
 /// The case: tensor (masses or a general inertia), velocities, restitution.

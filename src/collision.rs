@@ -34,6 +34,11 @@ impl Collision {
         }
     }
 
+    /// Whether the bodies have a relative velocity (`V1 != V2`), so crunch energy is not zero.
+    pub fn moving_apart(&self) -> bool {
+        self.v_in.x != self.v_in.y
+    }
+
     /// Relative velocity `V1 - V2` at IN.
     pub fn relative_velocity(&self) -> f64 {
         self.v_in.x - self.v_in.y
@@ -48,9 +53,7 @@ impl Collision {
     /// written as the weighted mean `V1 + w2 (V2 - V1)` so it cannot overflow where `P_total`
     /// would, and evaluated in double-double so the one rounding is the last.
     pub fn v_com(&self) -> f64 {
-        let (_, w2) = self.inertia.weights_dd();
-        let v1 = Dd::new(self.v_in.x);
-        (v1 + w2 * self.relative_velocity_dd()).value()
+        self.v_com_dd().value()
     }
 
     /// `V2 - V1` exactly, as a double-double.
@@ -88,11 +91,31 @@ impl Collision {
         )
     }
 
+    /// `P_total` as a double-double: `(M11 + M12) V1 + (M12 + M22) V2` with exact coefficient sums.
+    fn total_momentum_dd(&self) -> Dd {
+        let (a, b, c) = (self.inertia.matrix()[(0, 0)], self.inertia.matrix()[(1, 1)], self.inertia.matrix()[(0, 1)]);
+        Dd::sum(a, c) * Dd::new(self.v_in.x) + Dd::sum(c, b) * Dd::new(self.v_in.y)
+    }
+
+    /// `V_COM` as a double-double (see `v_com`).
+    fn v_com_dd(&self) -> Dd {
+        let (_, w2) = self.inertia.weights_dd();
+        Dd::new(self.v_in.x) + w2 * self.relative_velocity_dd()
+    }
+
+    fn crunch_dd(&self) -> Dd {
+        let d = -self.relative_velocity_dd();
+        Dd::new(0.5) * ((self.inertia.reduced_mass_dd() * d) * d)
+    }
+
+    fn ke_com_dd(&self) -> Dd {
+        Dd::new(0.5) * (self.v_com_dd() * self.total_momentum_dd())
+    }
+
     /// Crunch energy `KE_IN - KE_COM = 1/2 mu (V1 - V2)^2` (Sec. 2), as `1/2 (mu d) d`: the same in
     /// every Galilean frame and never the difference of two energies.
     pub fn crunch(&self) -> f64 {
-        let d = self.relative_velocity();
-        0.5 * (self.inertia.reduced_mass() * d) * d
+        self.crunch_dd().value()
     }
 
     /// `KE_IN = 1/2 V_IN.M.V_IN`.
@@ -102,18 +125,20 @@ impl Collision {
 
     /// `KE_COM = 1/2 V_COM P_total` (Sec. 2): the least energy on the momentum line.
     pub fn ke_com(&self) -> f64 {
-        0.5 * self.v_com() * self.total_momentum()
+        self.ke_com_dd().value()
     }
 
     /// `KE_FIN = KE_COM + e^2 crunch` (Sec. 2): a sum of two non-negative terms.
     pub fn ke_fin(&self) -> f64 {
         let e = self.restitution.value();
-        self.ke_com() + e * e * self.crunch()
+        (self.ke_com_dd() + Dd::prod(e, e) * self.crunch_dd()).value()
     }
 
-    /// Energy lost to heat, `(1 - e^2) crunch`.
+    /// Energy lost to heat, `(1 - e^2) crunch`, with `1 - e^2 = (1 - e)(1 + e)` exact in its
+    /// factors.
     pub fn energy_lost(&self) -> f64 {
-        self.restitution.loss_factor() * self.crunch()
+        let e = self.restitution.value();
+        (Dd::sum(1.0, -e) * Dd::sum(1.0, e) * self.crunch_dd()).value()
     }
 }
 

@@ -110,7 +110,7 @@ mod tests {
 
 /// A double-double `hi + lo` (|lo| <= ulp(hi)/2): about 106 significant bits, enough that a short
 /// formula evaluated in it and rounded once is correctly rounded but for near-ties.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Dd {
     pub hi: f64,
     pub lo: f64,

@@ -55,11 +55,21 @@ pub enum InertiaError {
     TooLarge(String),
 }
 
-/// A symmetric positive definite 2x2 inertia tensor, as typed and as a nalgebra matrix.
+/// A symmetric positive definite 2x2 inertia tensor, as typed and as a nalgebra matrix, with the
+/// quantities every solve needs computed once, when it is validated.
 #[derive(Clone, Debug, PartialEq)]
 pub struct InertiaTensor {
     entries: [[Number; 2]; 2],
     m: Matrix2<f64>,
+    derived: Derived,
+}
+
+/// Tensor-only quantities, computed once.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+struct Derived {
+    total: f64,
+    weights: (Dd, Dd),
+    reduced_mass: Dd,
 }
 
 impl InertiaTensor {
@@ -86,14 +96,20 @@ impl InertiaTensor {
                 entries[1][0].to_string(),
             ));
         }
-        let t = InertiaTensor { entries, m };
+        let mut t = InertiaTensor { entries, m, derived: Derived::default() };
         let text = || t.describe();
         if Cholesky::new(m).is_none() || t.scaled_det().0 <= 0.0 {
             return Err(InertiaError::NotPositiveDefinite(text()));
         }
-        if !t.total().is_finite() {
+        let total = t.compute_total();
+        if !total.is_finite() {
             return Err(InertiaError::TooLarge(text()));
         }
+        t.derived = Derived {
+            total,
+            weights: t.compute_weights_dd(),
+            reduced_mass: t.compute_reduced_mass(),
+        };
         Ok(t)
     }
 
@@ -122,6 +138,10 @@ impl InertiaTensor {
 
     /// `M_total = u.M.u = M11 + 2 M12 + M22`, summed with one rounding.
     pub fn total(&self) -> f64 {
+        self.derived.total
+    }
+
+    fn compute_total(&self) -> f64 {
         let (a, b, c) = self.abc();
         sum2(&[a, 2.0 * c, b])
     }
@@ -137,6 +157,10 @@ impl InertiaTensor {
     /// The weights as double-doubles, from the exact sums `M11 + M12`, `M12 + M22` and
     /// `M_total`.
     pub fn weights_dd(&self) -> (Dd, Dd) {
+        self.derived.weights
+    }
+
+    fn compute_weights_dd(&self) -> (Dd, Dd) {
         let (a, b, c) = self.abc();
         let total = Dd::sum(a, 2.0 * c) + Dd::new(b);
         (Dd::sum(a, c) / total, Dd::sum(c, b) / total)
@@ -153,17 +177,35 @@ impl InertiaTensor {
     /// tensor scaled by the power of two nearest the geometric mean of `M11` and `M22`, so
     /// `M11 M22` cannot overflow or underflow, and the scale is put back last.
     pub fn reduced_mass(&self) -> f64 {
-        let (det, k) = self.scaled_det();
+        self.derived.reduced_mass.value()
+    }
+
+    /// `mu` as a double-double.
+    pub fn reduced_mass_dd(&self) -> Dd {
+        self.derived.reduced_mass
+    }
+
+    fn compute_reduced_mass(&self) -> Dd {
         let (a, b, c) = self.abc();
+        let k = self.scale_exponent();
         let s = pow2(-k);
-        let total = sum2(&[a * s, 2.0 * c * s, b * s]);
-        det / total * pow2(k)
+        let (a, b, c) = (a * s, b * s, c * s);
+        let det = Dd::prod(a, b) - Dd::prod(c, c);
+        let total = Dd::sum(a, 2.0 * c) + Dd::new(b);
+        det / total * Dd::new(pow2(k))
+    }
+
+    /// The power of two nearest the geometric mean of `M11` and `M22`: dividing by it keeps
+    /// `M11 M22` near 1, far from overflow and underflow.
+    fn scale_exponent(&self) -> i32 {
+        let (a, b, _) = self.abc();
+        ((exponent(a) + exponent(b)) / 2).clamp(-1022, 1022)
     }
 
     /// `det(M / 2^k)` with the `k` used (Kahan's 2x2 determinant, 1.5 ulp).
     fn scaled_det(&self) -> (f64, i32) {
         let (a, b, c) = self.abc();
-        let k = ((exponent(a) + exponent(b)) / 2).clamp(-1022, 1022);
+        let k = self.scale_exponent();
         let s = pow2(-k);
         (diff_of_products(a * s, b * s, c * s, c * s), k)
     }

@@ -11,6 +11,7 @@
 //! assert_eq!((fin.x, fin.y), (40.0, 90.0)); // lecture Fig. 1.3
 //! ```
 
+pub mod accuracy;
 pub mod app;
 pub mod case;
 pub mod cli;

@@ -57,6 +57,17 @@ fn vec2(p: &Pair<f64>) -> Vector2<f64> {
     Vector2::new(p[0], p[1])
 }
 
+/// `x`, or NaN (reported as unrepresentable) when a quantity known to be non-zero came out
+/// below the normal range: it underflowed, and printing 0 or a subnormal would be wrong.
+fn unless_underflow(x: f64, nonzero: bool) -> f64 {
+    if nonzero && x.abs() < f64::MIN_POSITIVE { f64::NAN } else { x }
+}
+
+/// `x * y`, or NaN when two non-zero factors underflow.
+fn product(x: f64, y: f64) -> f64 {
+    unless_underflow(x * y, x != 0.0 && y != 0.0)
+}
+
 impl Solver for Collision {
     type N = f64;
     fn restitution(&self) -> f64 {
@@ -87,32 +98,36 @@ impl Solver for Collision {
         self.inertia.form(&vec2(x), &vec2(y))
     }
     fn com_form(&self) -> f64 {
-        Collision::v_com(self) * Collision::total_momentum(self)
+        2.0 * Collision::ke_com(self)
     }
     fn ke_in(&self) -> f64 {
-        Collision::ke_in(self)
+        unless_underflow(Collision::ke_in(self), self.v_in != Vector2::zeros())
     }
     fn ke_fin(&self) -> f64 {
-        Collision::ke_fin(self)
+        let e = self.restitution.value();
+        let moving = Collision::v_com(self) != 0.0 || (e != 0.0 && self.moving_apart());
+        unless_underflow(Collision::ke_fin(self), moving)
     }
     fn ke_com(&self) -> f64 {
-        Collision::ke_com(self)
+        unless_underflow(Collision::ke_com(self), Collision::v_com(self) != 0.0)
     }
     fn crunch(&self) -> f64 {
-        Collision::crunch(self)
+        unless_underflow(Collision::crunch(self), self.moving_apart())
     }
     fn lost(&self) -> f64 {
-        self.energy_lost()
+        let inelastic = !self.restitution.is_elastic();
+        unless_underflow(self.energy_lost(), inelastic && self.moving_apart())
     }
     fn ellipse(&self, ke: &f64) -> Ellipse<f64> {
         let axes = (!self.inertia.is_diagonal()).then(|| self.inertia.principal_axes());
         Ellipse::new(&self.inertia, *ke, axes.as_ref())
     }
     fn dot(&self, x: &Pair<f64>, y: &Pair<f64>) -> f64 {
-        dot2(x, y)
+        let underflow = (0..2).any(|i| product(x[i], y[i]).is_nan());
+        if underflow { f64::NAN } else { dot2(x, y) }
     }
     fn outer(&self, x: &Pair<f64>, y: &Pair<f64>) -> [Pair<f64>; 2] {
-        [[x[0] * y[0], x[0] * y[1]], [x[1] * y[0], x[1] * y[1]]]
+        [[product(x[0], y[0]), product(x[0], y[1])], [product(x[1], y[0]), product(x[1], y[1])]]
     }
     fn reduced_mass(&self) -> f64 {
         self.inertia.reduced_mass()

@@ -204,7 +204,7 @@ pub struct Notes<N = f64> {
 /// Why a report cannot be given in binary64.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
-    "{quantity} is not representable in binary64 (its magnitude is beyond 1.8e308): \
+    "{quantity} is not representable in binary64 (its magnitude is outside 2.2e-308 to 1.8e308): \
      use --exact, rescale the units, or ask only for other sections with --show"
 )]
 pub struct Unrepresentable {
