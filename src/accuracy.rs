@@ -35,8 +35,13 @@ pub enum Method {
 }
 
 impl Method {
-    pub const ALL: [Method; 5] =
-        [Method::Impulse, Method::Textbook, Method::Quadratic, Method::Tensor, Method::Exact];
+    pub const ALL: [Method; 5] = [
+        Method::Impulse,
+        Method::Textbook,
+        Method::Quadratic,
+        Method::Tensor,
+        Method::Exact,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -62,7 +67,11 @@ pub fn solve(method: Method, c: &Collision) -> Outcome {
     match method {
         Method::Impulse => {
             let f = c.v_fin();
-            Outcome { fin: [f.x, f.y], crunch: c.crunch(), lost: c.energy_lost() }
+            Outcome {
+                fin: [f.x, f.y],
+                crunch: c.crunch(),
+                lost: c.energy_lost(),
+            }
         }
         Method::Textbook => textbook(c),
         Method::Quadratic => quadratic(c),
@@ -71,7 +80,11 @@ pub fn solve(method: Method, c: &Collision) -> Outcome {
             let x = ExactCollision::from_binary64(c);
             let [f1, f2] = x.v_fin_q();
             let f = |q: &BigRational| to_f64(q).unwrap_or(f64::INFINITY);
-            Outcome { fin: [f(&f1), f(&f2)], crunch: f(&x.crunch_q()), lost: f(&x.lost_q()) }
+            Outcome {
+                fin: [f(&f1), f(&f2)],
+                crunch: f(&x.crunch_q()),
+                lost: f(&x.lost_q()),
+            }
         }
     }
 }
@@ -95,7 +108,11 @@ fn textbook(c: &Collision) -> Outcome {
     let ke_in = ke(u1, u2);
     let ke_com = 0.5 * mt * vcom * vcom;
     let ke_fin = ke(fin1, fin2);
-    Outcome { fin: [fin1, fin2], crunch: ke_in - ke_com, lost: ke_in - ke_fin }
+    Outcome {
+        fin: [fin1, fin2],
+        crunch: ke_in - ke_com,
+        lost: ke_in - ke_fin,
+    }
 }
 
 /// The construction taken literally: along `V_IN + s t`, `t = (k2, -k1)`, solve
@@ -119,7 +136,11 @@ fn quadratic(c: &Collision) -> Outcome {
     let ke_in = 0.5 * form(&v, &v);
     let ke_com = 0.5 * form(&com, &com);
     let crunch = ke_in - ke_com;
-    Outcome { fin: [fin.x, fin.y], crunch, lost: (1.0 - e * e) * crunch }
+    Outcome {
+        fin: [fin.x, fin.y],
+        crunch,
+        lost: (1.0 - e * e) * crunch,
+    }
 }
 
 /// Matrix expressions: `P = u.M.V`, `M_total = u.M.u`, `KE = V.M.V / 2`, energies subtracted.
@@ -135,7 +156,11 @@ fn tensor(c: &Collision) -> Outcome {
     let ke = |x: &Vector2<f64>| 0.5 * x.dot(&(m * x));
     let ke_in = ke(&v);
     let ke_com = ke(&(vcom * u));
-    Outcome { fin: [fin.x, fin.y], crunch: ke_in - ke_com, lost: ke_in - ke(&fin) }
+    Outcome {
+        fin: [fin.x, fin.y],
+        crunch: ke_in - ke_com,
+        lost: ke_in - ke(&fin),
+    }
 }
 
 /// The exact values a method is measured against, with their scales.
@@ -156,7 +181,12 @@ impl Reference {
         for f in &fin {
             scale = scale.max(to_f64(&f.abs()).unwrap_or(f64::MAX));
         }
-        Reference { crunch: x.crunch_q(), lost: x.lost_q(), fin, velocity_scale: scale }
+        Reference {
+            crunch: x.crunch_q(),
+            lost: x.lost_q(),
+            fin,
+            velocity_scale: scale,
+        }
     }
 }
 
@@ -173,7 +203,9 @@ pub fn ulps(approx: f64, exact: &BigRational, scale: f64) -> f64 {
     if scale == 0.0 {
         return f64::INFINITY;
     }
-    let ulp = from_f64(crate::compensated::pow2(exponent(scale).max(-1022 + 52) - 52));
+    let ulp = from_f64(crate::compensated::pow2(
+        exponent(scale).max(-1022 + 52) - 52,
+    ));
     to_f64(&(err / ulp)).unwrap_or(f64::INFINITY)
 }
 
@@ -189,7 +221,11 @@ pub struct Errors {
 pub fn errors(o: &Outcome, r: &Reference) -> Errors {
     let self_scale = |q: &BigRational| to_f64(&q.abs()).unwrap_or(f64::MAX);
     Errors {
-        fin: ulps(o.fin[0], &r.fin[0], r.velocity_scale).max(ulps(o.fin[1], &r.fin[1], r.velocity_scale)),
+        fin: ulps(o.fin[0], &r.fin[0], r.velocity_scale).max(ulps(
+            o.fin[1],
+            &r.fin[1],
+            r.velocity_scale,
+        )),
         crunch: ulps(o.crunch, &r.crunch, self_scale(&r.crunch)),
         lost: ulps(o.lost, &r.lost, self_scale(&r.lost)),
     }
@@ -245,7 +281,8 @@ impl Rng {
 /// A binary64 case (inputs taken exactly as the given binary64 values).
 pub fn case(m: [[f64; 2]; 2], v: [f64; 2], e: f64) -> Option<Collision> {
     let n = |x: f64| Number::from_f64(x).ok();
-    let inertia = InertiaTensor::general([[n(m[0][0])?, n(m[0][1])?], [n(m[1][0])?, n(m[1][1])?]]).ok()?;
+    let inertia =
+        InertiaTensor::general([[n(m[0][0])?, n(m[0][1])?], [n(m[1][0])?, n(m[1][1])?]]).ok()?;
     let e = Restitution::new(n(e)?).ok()?;
     Some(Collision::new(inertia, Vector2::new(v[0], v[1]), e))
 }
@@ -276,27 +313,45 @@ pub fn families(seed: u64, n: usize) -> Vec<Family> {
         .flatten()
         .collect(),
     };
-    let moderate = make("moderate", "masses 1e-3..1e3, velocities -100..100", &mut |r, i| {
-        let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
-        diag(r.log_uniform(-3.0, 3.0), r.log_uniform(-3.0, 3.0), v, r.restitution(i))
-    });
-    let ratio = make("mass-ratio", "m2/m1 = 1e-290..1e290, both orders", &mut |r, i| {
-        let k = r.uniform(0.0, 290.0) * r.sign();
-        let m1 = r.log_uniform(-1.0, 1.0);
-        let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
-        if i % 2 == 0 {
-            diag(m1, m1 * 10f64.powf(k), v, r.restitution(i / 2))
-        } else {
-            diag(m1 * 10f64.powf(k), m1, v, r.restitution(i / 2))
-        }
-    });
+    let moderate = make(
+        "moderate",
+        "masses 1e-3..1e3, velocities -100..100",
+        &mut |r, i| {
+            let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
+            diag(
+                r.log_uniform(-3.0, 3.0),
+                r.log_uniform(-3.0, 3.0),
+                v,
+                r.restitution(i),
+            )
+        },
+    );
+    let ratio = make(
+        "mass-ratio",
+        "m2/m1 = 1e-290..1e290, both orders",
+        &mut |r, i| {
+            let k = r.uniform(0.0, 290.0) * r.sign();
+            let m1 = r.log_uniform(-1.0, 1.0);
+            let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
+            if i % 2 == 0 {
+                diag(m1, m1 * 10f64.powf(k), v, r.restitution(i / 2))
+            } else {
+                diag(m1 * 10f64.powf(k), m1, v, r.restitution(i / 2))
+            }
+        },
+    );
     let overflow = make(
         "overflow-prone",
         "M=(1e300,1e10); M=(1e-200,2e-200), V~1e245; M~1e200, V~1e-200",
         &mut |r, i| {
             let jitter = |r: &mut Rng| r.uniform(1.0, 2.0);
             match i % 3 {
-                0 => diag(1e300 * jitter(r), 1e10 * jitter(r), [r.uniform(-9.0, 9.0), r.uniform(-9.0, 9.0)], r.restitution(i / 3)),
+                0 => diag(
+                    1e300 * jitter(r),
+                    1e10 * jitter(r),
+                    [r.uniform(-9.0, 9.0), r.uniform(-9.0, 9.0)],
+                    r.restitution(i / 3),
+                ),
                 1 => diag(
                     1e-200 * jitter(r),
                     2e-200 * jitter(r),
@@ -312,26 +367,48 @@ pub fn families(seed: u64, n: usize) -> Vec<Family> {
             }
         },
     );
-    let boost = make("boost", "common velocity 1e6..1e15, relative velocity ~1", &mut |r, i| {
-        let w = r.log_uniform(6.0, 15.0) * r.sign();
-        let v = [w + r.uniform(-1.0, 1.0), w + r.uniform(-1.0, 1.0)];
-        diag(r.log_uniform(-2.0, 2.0), r.log_uniform(-2.0, 2.0), v, r.restitution(i))
-    });
-    let grazing = make("grazing", "relative velocity 1e-15..1e-8 of V; equal; receding", &mut |r, i| {
-        let x = r.uniform(-100.0, 100.0);
-        let v = match i % 6 {
-            0 => [x, x],
-            1 => [-x.abs(), x.abs()],
-            _ => [x, x * (1.0 + r.log_uniform(-15.0, -8.0) * r.sign())],
-        };
-        diag(r.log_uniform(-2.0, 2.0), r.log_uniform(-2.0, 2.0), v, r.restitution(i))
-    });
-    let general = make("general-tensor", "symmetric M with M12 = rho sqrt(M11 M22), |rho| < 0.99", &mut |r, i| {
-        let (a, b) = (r.log_uniform(-3.0, 3.0), r.log_uniform(-3.0, 3.0));
-        let c = r.uniform(-0.99, 0.99) * (a * b).sqrt();
-        let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
-        case([[a, c], [c, b]], v, r.restitution(i))
-    });
+    let boost = make(
+        "boost",
+        "common velocity 1e6..1e15, relative velocity ~1",
+        &mut |r, i| {
+            let w = r.log_uniform(6.0, 15.0) * r.sign();
+            let v = [w + r.uniform(-1.0, 1.0), w + r.uniform(-1.0, 1.0)];
+            diag(
+                r.log_uniform(-2.0, 2.0),
+                r.log_uniform(-2.0, 2.0),
+                v,
+                r.restitution(i),
+            )
+        },
+    );
+    let grazing = make(
+        "grazing",
+        "relative velocity 1e-15..1e-8 of V; equal; receding",
+        &mut |r, i| {
+            let x = r.uniform(-100.0, 100.0);
+            let v = match i % 6 {
+                0 => [x, x],
+                1 => [-x.abs(), x.abs()],
+                _ => [x, x * (1.0 + r.log_uniform(-15.0, -8.0) * r.sign())],
+            };
+            diag(
+                r.log_uniform(-2.0, 2.0),
+                r.log_uniform(-2.0, 2.0),
+                v,
+                r.restitution(i),
+            )
+        },
+    );
+    let general = make(
+        "general-tensor",
+        "symmetric M with M12 = rho sqrt(M11 M22), |rho| < 0.99",
+        &mut |r, i| {
+            let (a, b) = (r.log_uniform(-3.0, 3.0), r.log_uniform(-3.0, 3.0));
+            let c = r.uniform(-0.99, 0.99) * (a * b).sqrt();
+            let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
+            case([[a, c], [c, b]], v, r.restitution(i))
+        },
+    );
     vec![lecture, moderate, ratio, overflow, boost, grazing, general]
 }
 
@@ -345,7 +422,10 @@ pub struct Spread {
 fn spread(mut xs: Vec<f64>) -> Spread {
     xs.sort_by(f64::total_cmp);
     let median = xs.get(xs.len() / 2).copied().unwrap_or(0.0);
-    Spread { median, worst: xs.last().copied().unwrap_or(0.0) }
+    Spread {
+        median,
+        worst: xs.last().copied().unwrap_or(0.0),
+    }
 }
 
 /// One row of the work-precision report.
@@ -370,7 +450,10 @@ pub struct Row {
 
 /// Relative error from ulps of the scale: at most `ulps * 2^-52`.
 fn rel(s: Spread) -> Spread {
-    Spread { median: s.median * f64::EPSILON, worst: s.worst * f64::EPSILON }
+    Spread {
+        median: s.median * f64::EPSILON,
+        worst: s.worst * f64::EPSILON,
+    }
 }
 
 /// Times `method` over `cases`: passes over the whole family for about `budget_ms`, at least 5.
@@ -388,7 +471,11 @@ pub fn time(method: Method, cases: &[Collision], budget_ms: u64) -> (f64, f64, f
         }
     }
     per_pass.sort_by(f64::total_cmp);
-    (per_pass[per_pass.len() / 2], per_pass[0], per_pass[per_pass.len() - 1])
+    (
+        per_pass[per_pass.len() / 2],
+        per_pass[0],
+        per_pass[per_pass.len() - 1],
+    )
 }
 
 /// The whole report: every method on every family.
@@ -397,8 +484,12 @@ pub fn report(families: &[Family], methods: &[Method], budget_ms: u64) -> Vec<Ro
     for f in families {
         let refs: Vec<Reference> = f.cases.iter().map(Reference::of).collect();
         for &m in methods {
-            let errs: Vec<Errors> =
-                f.cases.iter().zip(&refs).map(|(c, r)| errors(&solve(m, c), r)).collect();
+            let errs: Vec<Errors> = f
+                .cases
+                .iter()
+                .zip(&refs)
+                .map(|(c, r)| errors(&solve(m, c), r))
+                .collect();
             let fin = spread(errs.iter().map(|e| e.fin).collect());
             let crunch = spread(errs.iter().map(|e| e.crunch).collect());
             let lost = spread(errs.iter().map(|e| e.lost).collect());
@@ -443,7 +534,10 @@ mod tests {
         assert_eq!(ulps(1.0 + f64::EPSILON, &exact, 1.0), 1.0);
         assert_eq!(ulps(f64::NAN, &exact, 1.0), f64::INFINITY);
         // An error of 1 at scale 2^52 is one ulp.
-        assert_eq!(ulps(2f64.powi(52) + 1.0, &from_f64(2f64.powi(52)), 2f64.powi(52)), 1.0);
+        assert_eq!(
+            ulps(2f64.powi(52) + 1.0, &from_f64(2f64.powi(52)), 2f64.powi(52)),
+            1.0
+        );
     }
 
     #[test]
@@ -452,7 +546,12 @@ mod tests {
         let b = families(7, 24);
         assert_eq!(a.len(), 7);
         for (x, y) in a.iter().zip(&b) {
-            assert_eq!(x.cases.len(), if x.name == "lecture" { 5 } else { 24 }, "{}", x.name);
+            assert_eq!(
+                x.cases.len(),
+                if x.name == "lecture" { 5 } else { 24 },
+                "{}",
+                x.name
+            );
             let vx: Vec<_> = x.cases.iter().map(|c| c.v_in).collect();
             let vy: Vec<_> = y.cases.iter().map(|c| c.v_in).collect();
             assert_eq!(vx, vy);

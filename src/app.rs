@@ -305,8 +305,15 @@ fn accuracy(args: AccuracyArgs) -> Result<Outcome> {
                     format!("{:.1} ({:.1}-{:.1})", r.ns_median, r.ns_min, r.ns_max),
                 ]);
             }
-            let widths: Vec<usize> =
-                (0..7).map(|i| table.iter().map(|r| r[i].chars().count()).max().unwrap_or(0)).collect();
+            let widths: Vec<usize> = (0..7)
+                .map(|i| {
+                    table
+                        .iter()
+                        .map(|r| r[i].chars().count())
+                        .max()
+                        .unwrap_or(0)
+                })
+                .collect();
             for (i, r) in table.iter().enumerate() {
                 if i > 0 && table[i - 1][0] != r[0] {
                     out.push('\n');
@@ -315,7 +322,13 @@ fn accuracy(args: AccuracyArgs) -> Result<Outcome> {
                     .iter()
                     .zip(&widths)
                     .enumerate()
-                    .map(|(j, (c, w))| if (2..6).contains(&j) { format!("{c:>w$}") } else { format!("{c:<w$}") })
+                    .map(|(j, (c, w))| {
+                        if (2..6).contains(&j) {
+                            format!("{c:>w$}")
+                        } else {
+                            format!("{c:<w$}")
+                        }
+                    })
                     .collect();
                 out.push_str(cells.join("  ").trim_end());
                 out.push('\n');
@@ -337,7 +350,10 @@ fn ulp_text(x: f64) -> String {
     } else if x == 0.0 {
         "0".into()
     } else if x < 100.0 {
-        format!("{x:.2}").trim_end_matches('0').trim_end_matches('.').to_string()
+        format!("{x:.2}")
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .to_string()
     } else {
         format!("{x:.1e}")
     }

@@ -46,7 +46,12 @@ pub struct AccuracyArgs {
     pub cases: u64,
 
     /// Methods to compare, comma-separated
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "impulse,textbook,quadratic,tensor,exact")]
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        default_value = "impulse,textbook,quadratic,tensor,exact"
+    )]
     pub methods: Vec<crate::accuracy::Method>,
 
     /// Time spent timing each method on each family, in milliseconds

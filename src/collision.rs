@@ -93,7 +93,11 @@ impl Collision {
 
     /// `P_total` as a double-double: `(M11 + M12) V1 + (M12 + M22) V2` with exact coefficient sums.
     fn total_momentum_dd(&self) -> Dd {
-        let (a, b, c) = (self.inertia.matrix()[(0, 0)], self.inertia.matrix()[(1, 1)], self.inertia.matrix()[(0, 1)]);
+        let (a, b, c) = (
+            self.inertia.matrix()[(0, 0)],
+            self.inertia.matrix()[(1, 1)],
+            self.inertia.matrix()[(0, 1)],
+        );
         Dd::sum(a, c) * Dd::new(self.v_in.x) + Dd::sum(c, b) * Dd::new(self.v_in.y)
     }
 

@@ -96,7 +96,11 @@ impl InertiaTensor {
                 entries[1][0].to_string(),
             ));
         }
-        let mut t = InertiaTensor { entries, m, derived: Derived::default() };
+        let mut t = InertiaTensor {
+            entries,
+            m,
+            derived: Derived::default(),
+        };
         let text = || t.describe();
         if Cholesky::new(m).is_none() || t.scaled_det().0 <= 0.0 {
             return Err(InertiaError::NotPositiveDefinite(text()));

@@ -60,7 +60,11 @@ fn vec2(p: &Pair<f64>) -> Vector2<f64> {
 /// `x`, or NaN (reported as unrepresentable) when a quantity known to be non-zero came out
 /// below the normal range: it underflowed, and printing 0 or a subnormal would be wrong.
 fn unless_underflow(x: f64, nonzero: bool) -> f64 {
-    if nonzero && x.abs() < f64::MIN_POSITIVE { f64::NAN } else { x }
+    if nonzero && x.abs() < f64::MIN_POSITIVE {
+        f64::NAN
+    } else {
+        x
+    }
 }
 
 /// `x * y`, or NaN when two non-zero factors underflow.
@@ -127,7 +131,10 @@ impl Solver for Collision {
         if underflow { f64::NAN } else { dot2(x, y) }
     }
     fn outer(&self, x: &Pair<f64>, y: &Pair<f64>) -> [Pair<f64>; 2] {
-        [[product(x[0], y[0]), product(x[0], y[1])], [product(x[1], y[0]), product(x[1], y[1])]]
+        [
+            [product(x[0], y[0]), product(x[0], y[1])],
+            [product(x[1], y[0]), product(x[1], y[1])],
+        ]
     }
     fn reduced_mass(&self) -> f64 {
         self.inertia.reduced_mass()

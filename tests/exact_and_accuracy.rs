@@ -1,0 +1,169 @@
+//! `--exact`, `exact = true` scenes, `--show diagnostics` and `collide accuracy`, as a user runs them.
+
+mod common;
+
+use common::collide;
+use serde_json::Value;
+
+fn stdout(args: &[&str]) -> String {
+    let out = collide().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn exact_ka_whump_prints_the_lecture_fractions() {
+    // Fig. 2.3, e = 2/3: FIN = (4/3, 6), KE_FIN = 70/3 (the lecture's 23.33), lost = 35/3.
+    let text = stdout(&["solve", "-m", "6,1", "-v", "3,-4", "-e", "2/3", "--exact"]);
+    assert!(text.contains("(4/3, 6)"), "{text}");
+    assert!(
+        text.contains("KE_FIN = KE_COM + e^2 crunch                  70/3"),
+        "{text}"
+    );
+    assert!(text.contains("35/3"), "{text}");
+    assert!(text.contains("mu = M1 M2 / (M1 + M2) = 6/7"), "{text}");
+
+    let json: Value = serde_json::from_str(&stdout(&[
+        "solve", "-m", "6,1", "-v", "3,-4", "-e", "2/3", "--exact", "--show", "all", "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["fin"], serde_json::json!(["4/3", "6"]));
+    assert_eq!(json["restitution"], "2/3");
+    assert_eq!(json["energy"]["fin"], "70/3");
+    assert_eq!(json["energy"]["lost"], "35/3");
+    assert_eq!(
+        json["forms"]["fin_m_in"], "0",
+        "exactly M-orthogonal in exact arithmetic"
+    );
+    assert_eq!(json["products"]["outer_in_fin"][1][0], "-16/3");
+    // Radii are irrational: 20 significant digits, marked approximate.
+    // sqrt(2 * 35 / 6) = 3.4156502553198661277... (Python decimal, 30 digits: 3.41565025531986612774...)
+    assert_eq!(json["ellipses"]["in"]["a"], "3.4156502553198661277");
+    assert_eq!(json["ellipses"]["in"]["approx"], true);
+}
+
+#[test]
+fn exact_mode_starts_from_the_typed_decimals() {
+    // 0.1 + 0.2 as typed is 3/10 exactly; from binary64 it would not be.
+    let json: Value = serde_json::from_str(&stdout(&[
+        "solve", "-m", "1,1", "-v", "0.1,0.2", "-e", "0", "--exact", "--show", "vectors",
+        "--format", "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["v_com"], "3/20");
+    // Case A with a huge KE (1e400) is fine in exact mode.
+    let json: Value = serde_json::from_str(&stdout(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "1e200,-1e200",
+        "--exact",
+        "--show",
+        "energy",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["energy"]["in"], format!("1{}", "0".repeat(400)));
+}
+
+#[test]
+fn exact_scene_passes_with_fractions() {
+    let text = stdout(&["scene", "scenarios/fig-2-3-ka-whump-exact.toml"]);
+    assert!(
+        text.contains("(4/3, 6)") && text.contains("Checks: 8 of 8 pass"),
+        "{text}"
+    );
+}
+
+#[test]
+fn diagnostics_report_residuals_and_time() {
+    let json: Value = serde_json::from_str(&stdout(&[
+        "solve",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--show",
+        "diagnostics",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let d = &json["diagnostics"];
+    assert_eq!(d["momentum_residual"], 0.0);
+    assert_eq!(d["energy_residual"], 0.0);
+    assert!(d["solve_ns"].as_f64().unwrap() > 0.0);
+    assert!(d["repetitions"].as_u64().unwrap() >= 11);
+    let text = stdout(&[
+        "solve",
+        "-m",
+        "6,1",
+        "-v",
+        "3,-4",
+        "-e",
+        "2/3",
+        "--show",
+        "diagnostics",
+    ]);
+    assert!(
+        text.contains("momentum residual") && text.contains("solve time"),
+        "{text}"
+    );
+}
+
+#[test]
+fn accuracy_report_puts_error_beside_run_time() {
+    let json: Value = serde_json::from_str(&stdout(&[
+        "accuracy",
+        "--cases",
+        "8",
+        "--budget-ms",
+        "1",
+        "--format",
+        "json",
+        "--seed",
+        "5",
+    ]))
+    .unwrap();
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 7 * 5, "7 families x 5 methods");
+    for r in rows {
+        assert!(r["ns_median"].as_f64().unwrap() > 0.0);
+        if r["method"] == "impulse" || r["method"] == "exact" {
+            for q in ["fin_ulps", "crunch_ulps", "lost_ulps"] {
+                assert!(r[q]["worst"].as_f64().unwrap() <= 1.0, "{r}");
+            }
+        }
+    }
+    // The textbook formula loses the crunch of a boosted collision entirely.
+    let boost = rows
+        .iter()
+        .find(|r| r["family"] == "boost" && r["method"] == "textbook")
+        .unwrap();
+    assert!(
+        boost["crunch_ulps"]["worst"]
+            .as_f64()
+            .is_none_or(|w| w > 1e6),
+        "{boost}"
+    );
+    let text = stdout(&[
+        "accuracy",
+        "--cases",
+        "4",
+        "--budget-ms",
+        "1",
+        "--methods",
+        "impulse,textbook",
+    ]);
+    assert!(
+        text.contains("mass-ratio") && text.contains("ns/solve"),
+        "{text}"
+    );
+}
