@@ -4,6 +4,7 @@
 //!     cargo run --example case_a
 
 use collide::case::{Case, parse_masses, parse_velocities};
+use collide::frame::Observed;
 use collide::inertia::InertiaTensor;
 use collide::report::{Report, Section, Sections};
 
@@ -17,7 +18,10 @@ fn main() -> anyhow::Result<()> {
             velocities.clone(),
             e.parse().map_err(anyhow::Error::msg)?,
         );
-        let r = Report::build(&case.collision, &Sections::new([Section::All]))?;
+        let r = Report::build(
+            &Observed::lab(&case.collision),
+            &Sections::new([Section::All]),
+        )?;
         let (v, m, f) = (r.vectors.unwrap(), r.momentum.unwrap(), r.forms.unwrap());
         let (en, el, p) = (r.energy.unwrap(), r.ellipses.unwrap(), r.products.unwrap());
         println!(

@@ -5,11 +5,15 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 
 use crate::case::Case;
-use crate::cli::{AccuracyArgs, CaseArgs, Command, Format, SceneArgs, SolveArgs};
+use crate::cli::{AccuracyArgs, CaseArgs, Command, Format, FramesArgs, SceneArgs, SolveArgs};
 use crate::exact::ExactCollision;
 use crate::expect::Check;
+use crate::frame::{
+    Frame, FrameInfo, FramesTable, Observed, restitution_exact, restitution_observed,
+    reverse_equals_original, table,
+};
 use crate::inertia::InertiaTensor;
-use crate::quantity::{Exact, Scalar};
+use crate::quantity::Exact;
 use crate::report::{Report, Sections, json, text};
 use crate::scene::{Scene, SceneError};
 
@@ -26,6 +30,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Solve(args) => solve(args),
         Command::Scene(args) => scene(args),
         Command::Accuracy(args) => accuracy(args),
+        Command::Frames(args) => frames(args),
     }
 }
 
@@ -43,42 +48,70 @@ impl CaseArgs {
 fn solve(args: SolveArgs) -> Result<Outcome> {
     let case = args.case.into_case()?;
     let sections = Sections::new(args.show);
-    let stdout = if args.exact {
-        let report = Report::build(&ExactCollision::from_case(&case), &sections)?;
-        render(&case, &report, args.format)
-    } else {
-        render(
-            &case,
-            &Report::build(&case.collision, &sections)?,
-            args.format,
-        )
+    let report = solve_case(&case, &args.frame, args.exact, &sections, args.reverse)?;
+    let stdout = match args.format {
+        Format::Text => report.text(&case, &sections),
+        Format::Json => json::render(&report.json()),
     };
     Ok(Outcome { stdout, status: 0 })
 }
 
-fn render<N: Scalar>(case: &Case, report: &Report<N>, format: Format) -> String {
-    match format {
-        Format::Text => text::render(case, report),
-        Format::Json => json::render(report),
+/// Solves `case` seen from `frame`, in exact or binary64 arithmetic, with the time-reversed
+/// collision when `reverse`.
+pub fn solve_case(
+    case: &Case,
+    frame: &Frame,
+    exact: bool,
+    sections: &Sections,
+    reverse: bool,
+) -> Result<AnyReport> {
+    if exact {
+        let lab = ExactCollision::from_case(case);
+        let w = frame.w_exact(&lab);
+        let seen = lab.observed(&w);
+        let mut r = Report::build(&seen, sections)?;
+        r.frame = frame_info(frame, Exact::Rational(w.clone()));
+        if reverse {
+            r = r.with_reverse(&seen, reverse_equals_original(&lab, &w))?;
+        }
+        Ok(AnyReport::Exact(Box::new(r)))
+    } else {
+        let seen = Observed::new(&case.collision, frame);
+        let mut r = Report::build(&seen, sections)?;
+        r.frame = frame_info(frame, seen.w.value());
+        if reverse {
+            let lab = ExactCollision::from_binary64(&case.collision);
+            let equal = reverse_equals_original(&lab, &frame.w_exact(&lab));
+            r = r.with_reverse(&seen, equal)?;
+        }
+        Ok(AnyReport::Binary64(Box::new(r)))
     }
 }
 
-/// A scene's report, in the arithmetic the scene asked for.
-enum AnyReport {
+/// `"frame": {"name", "w"}` for any frame but the lab.
+fn frame_info<N>(frame: &Frame, w: N) -> Option<FrameInfo<N>> {
+    (*frame != Frame::Lab).then(|| FrameInfo {
+        name: frame.to_string(),
+        w,
+    })
+}
+
+/// A report in the arithmetic that was asked for.
+pub enum AnyReport {
     Binary64(Box<Report<f64>>),
     Exact(Box<Report<Exact>>),
 }
 
 impl AnyReport {
-    fn json(&self) -> serde_json::Value {
+    pub fn json(&self) -> serde_json::Value {
         match self {
             AnyReport::Binary64(r) => serde_json::to_value(r),
             AnyReport::Exact(r) => serde_json::to_value(r),
         }
         .expect("reports serialize")
     }
-    /// Text of the sections in `show` (others were computed only for the checks).
-    fn text(&self, case: &Case, show: &Sections) -> String {
+    /// Text of the sections in `show` (others were computed only for a scene's checks).
+    pub fn text(&self, case: &Case, show: &Sections) -> String {
         match self {
             AnyReport::Binary64(r) => text::render(case, &r.only(show)),
             AnyReport::Exact(r) => text::render(case, &r.only(show)),
@@ -102,17 +135,8 @@ impl Solved {
 
 fn solve_scene(scene: Scene) -> Result<Solved> {
     let sections = scene.sections_needed();
-    let report = if scene.exact {
-        AnyReport::Exact(Box::new(Report::build(
-            &ExactCollision::from_case(&scene.case),
-            &sections,
-        )?))
-    } else {
-        AnyReport::Binary64(Box::new(
-            Report::build(&scene.case.collision, &sections)
-                .with_context(|| format!("{}", scene.path.display()))?,
-        ))
-    };
+    let report = solve_case(&scene.case, &scene.frame, scene.exact, &sections, false)
+        .with_context(|| format!("{}", scene.path.display()))?;
     let json = report.json();
     let checks = scene
         .expect
@@ -356,5 +380,57 @@ fn ulp_text(x: f64) -> String {
             .to_string()
     } else {
         format!("{x:.1e}")
+    }
+}
+
+fn frames(args: FramesArgs) -> Result<Outcome> {
+    let case = args.case.into_case()?;
+    let stuck = case.restitution().is_totally_inelastic();
+    let mut list: Vec<Frame> = Frame::standard()
+        .into_iter()
+        // e = 0: FIN = COM, so "finally at rest" is the COM frame again.
+        .filter(|f| !(stuck && matches!(f, Frame::RestFin(_))))
+        .collect();
+    list.extend(args.frame);
+    if args.reverse && stuck {
+        return Err(crate::report::Irreversible.into());
+    }
+    let stdout = if args.exact {
+        let lab = ExactCollision::from_case(&case);
+        let rows = list
+            .into_iter()
+            .map(|f| {
+                let w = f.w_exact(&lab);
+                let reverse = args.reverse.then(|| reverse_equals_original(&lab, &w));
+                (f, Exact::Rational(w.clone()), lab.observed(&w), reverse)
+            })
+            .collect();
+        render_frames(&case, &table(rows, restitution_exact)?, args.format)
+    } else {
+        let lab = &case.collision;
+        let exact_lab = args.reverse.then(|| ExactCollision::from_binary64(lab));
+        let rows = list
+            .into_iter()
+            .map(|f| {
+                let seen = Observed::new(lab, &f);
+                let reverse = exact_lab
+                    .as_ref()
+                    .map(|x| reverse_equals_original(x, &f.w_exact(x)));
+                (f, seen.w.value(), seen, reverse)
+            })
+            .collect();
+        render_frames(&case, &table(rows, restitution_observed)?, args.format)
+    };
+    Ok(Outcome { stdout, status: 0 })
+}
+
+fn render_frames<N: crate::quantity::Scalar>(
+    case: &Case,
+    t: &FramesTable<N>,
+    format: Format,
+) -> String {
+    match format {
+        Format::Json => json::render(t),
+        Format::Text => text::frames(case, t),
     }
 }

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::case::{parse_inertia, parse_masses, parse_velocities};
+use crate::frame::Frame;
 use crate::inertia::{InertiaTensor, Mass};
 use crate::number::Number;
 use crate::report::Section;
@@ -33,6 +34,38 @@ pub enum Command {
     Scene(SceneArgs),
     /// Error against run time: each method against exact arithmetic on seeded case families
     Accuracy(AccuracyArgs),
+    /// The same collision in the standard Galilean frames (lecture Figs. 2.5 and 3.4)
+    Frames(FramesArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct FramesArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+
+    /// More frames to add as rows: com, rest-in:1, rest-fin:2, ..., or an observer velocity
+    #[arg(long, value_name = "FRAME", allow_hyphen_values = true,
+          value_parser = clap::value_parser!(Frame))]
+    pub frame: Vec<Frame>,
+
+    /// Add a column saying whether the time-reversed collision equals the original
+    #[arg(long)]
+    pub reverse: bool,
+
+    /// Exact rational arithmetic from the numbers as typed
+    #[arg(long)]
+    pub exact: bool,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+}
+
+impl clap::builder::ValueParserFactory for Frame {
+    type Parser = fn(&str) -> Result<Frame, String>;
+    fn value_parser() -> Self::Parser {
+        |s| s.parse()
+    }
 }
 
 #[derive(Args, Debug)]
@@ -105,6 +138,16 @@ pub struct SolveArgs {
     /// marked approximate
     #[arg(long)]
     pub exact: bool,
+
+    /// The frame to see the collision from: lab, com, rest-in:1, rest-in:2, rest-fin:1,
+    /// rest-fin:2, or an observer velocity
+    #[arg(long, default_value = "lab", allow_hyphen_values = true,
+          value_parser = clap::value_parser!(Frame))]
+    pub frame: Frame,
+
+    /// Also print the time-reversed collision (IN' = -FIN, FIN' = -IN)
+    #[arg(long)]
+    pub reverse: bool,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]

@@ -57,7 +57,7 @@ impl Collision {
     }
 
     /// `V2 - V1` exactly, as a double-double.
-    fn relative_velocity_dd(&self) -> Dd {
+    pub fn relative_velocity_dd(&self) -> Dd {
         Dd::sum(self.v_in.y, -self.v_in.x)
     }
 
@@ -77,18 +77,24 @@ impl Collision {
     /// relative velocity, evaluated in double-double and rounded once: each component is
     /// correctly rounded but for near-ties, however IN's components compare in size.
     pub fn v_fin(&self) -> Vector2<f64> {
+        let [f1, f2] = self.v_fin_dd();
+        Vector2::new(f1.value(), f2.value())
+    }
+
+    /// `V_FIN` as double-doubles (see `v_fin`).
+    pub fn v_fin_dd(&self) -> [Dd; 2] {
         if self.restitution.is_totally_inelastic() {
-            let c = self.v_com();
-            return Vector2::new(c, c);
+            let c = self.v_com_dd();
+            return [c, c];
         }
         let (w1, w2) = self.inertia.weights_dd();
         let d = self.relative_velocity_dd();
         let k = Dd::sum(1.0, self.restitution.value());
         let kd = k * d;
-        Vector2::new(
-            (Dd::new(self.v_in.x) + w2 * kd).value(),
-            (Dd::new(self.v_in.y) - w1 * kd).value(),
-        )
+        [
+            Dd::new(self.v_in.x) + w2 * kd,
+            Dd::new(self.v_in.y) - w1 * kd,
+        ]
     }
 
     /// `P_total` as a double-double: `(M11 + M12) V1 + (M12 + M22) V2` with exact coefficient sums.
@@ -102,7 +108,7 @@ impl Collision {
     }
 
     /// `V_COM` as a double-double (see `v_com`).
-    fn v_com_dd(&self) -> Dd {
+    pub fn v_com_dd(&self) -> Dd {
         let (_, w2) = self.inertia.weights_dd();
         Dd::new(self.v_in.x) + w2 * self.relative_velocity_dd()
     }

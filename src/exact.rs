@@ -61,6 +61,14 @@ impl ExactCollision {
         }
     }
 
+    /// The same collision seen by an observer moving at `w`: every velocity shifted by `-w`.
+    pub fn observed(&self, w: &Q) -> ExactCollision {
+        ExactCollision {
+            v: [&self.v[0] - w, &self.v[1] - w],
+            ..self.clone()
+        }
+    }
+
     pub fn m_total(&self) -> Q {
         &self.a + &self.c + &self.c + &self.b
     }

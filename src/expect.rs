@@ -94,7 +94,9 @@ impl Expectation {
     /// `{ value = ..., abs = ..., rel = ... }`.
     pub fn from_toml(key: &str, v: toml::Value) -> Result<Expectation, String> {
         let top = key.split('.').next().unwrap_or_default();
-        if Section::of_json_key(top).is_none() && top != "restitution" && top != "inertia" {
+        if Section::of_json_key(top).is_none()
+            && !["restitution", "inertia", "frame"].contains(&top)
+        {
             return Err(format!(
                 "unknown quantity '{top}': expected one of {TOP_LEVEL}"
             ));

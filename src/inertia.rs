@@ -145,6 +145,12 @@ impl InertiaTensor {
         self.derived.total
     }
 
+    /// `M_total` as a double-double (exact but for extreme magnitude spreads).
+    pub fn total_dd(&self) -> Dd {
+        let (a, b, c) = self.abc();
+        Dd::sum(a, 2.0 * c) + Dd::new(b)
+    }
+
     fn compute_total(&self) -> f64 {
         let (a, b, c) = self.abc();
         sum2(&[a, 2.0 * c, b])

@@ -20,6 +20,7 @@ pub mod compensated;
 pub mod ellipse;
 pub mod exact;
 pub mod expect;
+pub mod frame;
 pub mod inertia;
 pub mod number;
 pub mod quantity;

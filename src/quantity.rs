@@ -23,6 +23,9 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     /// Whether the value is a real result (finite, for binary64).
     fn is_representable(&self) -> bool;
     fn quarter(&self) -> Self;
+    fn neg(&self) -> Self;
+    /// `1/x`, `None` for 0.
+    fn recip(&self) -> Option<Self>;
 }
 
 impl Scalar for f64 {
@@ -34,6 +37,12 @@ impl Scalar for f64 {
     }
     fn quarter(&self) -> f64 {
         self / 4.0
+    }
+    fn neg(&self) -> f64 {
+        -self
+    }
+    fn recip(&self) -> Option<f64> {
+        (*self != 0.0).then(|| 1.0 / self)
     }
 }
 
@@ -93,6 +102,19 @@ impl Scalar for Exact {
     }
     fn quarter(&self) -> Exact {
         let q = self.rational() / BigRational::from_integer(4.into());
+        self.with(q)
+    }
+    fn neg(&self) -> Exact {
+        self.with(-self.rational())
+    }
+    fn recip(&self) -> Option<Exact> {
+        (!self.rational().is_zero()).then(|| self.with(self.rational().recip()))
+    }
+}
+
+impl Exact {
+    /// `q`, as exact or approximate as `self`.
+    fn with(&self, q: BigRational) -> Exact {
         match self {
             Exact::Rational(_) => Exact::Rational(q),
             Exact::Approx(_) => Exact::Approx(q),

@@ -24,6 +24,7 @@ use toml::Spanned;
 
 use crate::case::Case;
 use crate::expect::Expectation;
+use crate::frame::Frame;
 use crate::inertia::{InertiaTensor, Mass};
 use crate::number::Number;
 use crate::report::{Section, Sections};
@@ -41,6 +42,7 @@ struct SceneFile {
     restitution: Option<Restitution>,
     show: Option<Vec<Section>>,
     exact: Option<bool>,
+    frame: Option<Frame>,
     expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
 }
 
@@ -55,6 +57,8 @@ pub struct Scene {
     pub show: Sections,
     /// Exact rational arithmetic (`exact = true`).
     pub exact: bool,
+    /// The frame to see the collision from (`frame = "com"`).
+    pub frame: Frame,
     pub expect: Vec<Expectation>,
 }
 
@@ -149,6 +153,7 @@ impl Scene {
             case,
             show,
             exact: file.exact.unwrap_or(false),
+            frame: file.frame.unwrap_or(Frame::Lab),
             expect,
         })
     }

@@ -198,7 +198,10 @@ proptest! {
         let _ = Scene::parse(Path::new("fuzz.toml"), &text);
         let _ = Scene::parse(Path::new("fuzz.toml"), &noise);
         if let Ok(scene) = Scene::parse(Path::new("fuzz.toml"), &text) {
-            let _ = collide::report::Report::build(&scene.case.collision, &scene.sections_needed());
+            let _ = collide::report::Report::build(
+                &collide::frame::Observed::new(&scene.case.collision, &scene.frame),
+                &scene.sections_needed(),
+            );
         }
     }
 }

@@ -9,6 +9,7 @@ use std::collections::BTreeSet;
 use serde::{Deserialize, Serialize};
 
 use crate::ellipse::Ellipse;
+use crate::frame::FrameInfo;
 use crate::quantity::Scalar;
 use crate::solver::Solver;
 
@@ -102,6 +103,13 @@ impl Sections {
 pub struct Report<N = f64> {
     pub restitution: N,
     pub inertia: [[N; 2]; 2],
+    /// The frame, when not the lab (`--frame`).
+    #[serde(
+        default = "none",
+        skip_deserializing,
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub frame: Option<FrameInfo<N>>,
     #[serde(flatten, default = "none", skip_serializing_if = "Option::is_none")]
     pub vectors: Option<Vectors<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
@@ -116,6 +124,13 @@ pub struct Report<N = f64> {
     pub products: Option<Products<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub diagnostics: Option<Diagnostics>,
+    /// The time-reversed collision (`--reverse`).
+    #[serde(
+        default = "none",
+        skip_deserializing,
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub reverse: Option<Reverse<N>>,
     /// What the text notes quote (not part of the JSON schema).
     #[serde(skip)]
     pub notes: Notes<N>,
@@ -190,6 +205,64 @@ pub struct Diagnostics {
     pub repetitions: usize,
 }
 
+/// The time-reversed collision: `t -> -t`, so `IN' = -FIN` and `FIN' = -IN` (lecture Sec. 4).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Reverse<N> {
+    #[serde(rename = "in")]
+    pub v_in: [N; 2],
+    pub fin: [N; 2],
+    /// `1/e`: above 1 for `e < 1`, an explosion that gains the energy the original lost.
+    pub restitution: N,
+    pub energy: ReverseEnergy<N>,
+    /// Whether it is the original collision again (elastic, seen from the COM frame).
+    pub equals_original: bool,
+}
+
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct ReverseEnergy<N> {
+    /// `KE_IN' = KE_FIN`.
+    #[serde(rename = "in")]
+    pub ke_in: N,
+    /// `KE_FIN' = KE_IN`.
+    pub fin: N,
+    /// `KE_FIN' - KE_IN'`: the original's energy lost.
+    pub gained: N,
+}
+
+/// Why a collision cannot be reversed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "the time reverse of a totally inelastic collision (e = 0) is not determined: bodies stuck \
+     together at COM can split apart in any way that conserves momentum, so there is no unique \
+     IN' to print; use e > 0"
+)]
+pub struct Irreversible;
+
+impl<N: Scalar> Report<N> {
+    /// Adds the time-reversed collision (needs the vectors and energy of `c`).
+    pub fn with_reverse<S: Solver<N = N>>(
+        mut self,
+        c: &S,
+        equals_original: bool,
+    ) -> Result<Self, Irreversible> {
+        let recip = c.restitution().recip().ok_or(Irreversible)?;
+        let fin = c.v_fin();
+        let v_in = c.v_in();
+        self.reverse = Some(Reverse {
+            v_in: [fin[0].neg(), fin[1].neg()],
+            fin: [v_in[0].neg(), v_in[1].neg()],
+            restitution: recip,
+            energy: ReverseEnergy {
+                ke_in: c.ke_fin(),
+                fin: c.ke_in(),
+                gained: c.lost(),
+            },
+            equals_original,
+        });
+        Ok(self)
+    }
+}
+
 /// Values the text notes quote beside the sections.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Notes<N = f64> {
@@ -242,6 +315,8 @@ impl<N: Scalar> Report<N> {
         let report = Report {
             restitution: c.restitution(),
             inertia: c.inertia(),
+            frame: None,
+            reverse: None,
             vectors: has(Section::Vectors).then(|| {
                 let v_com = c.v_com();
                 Vectors {

@@ -4,9 +4,12 @@
 
 use std::fmt::Write;
 
-use super::{Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Vectors};
+use super::{
+    Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Reverse, Vectors,
+};
 use crate::case::Case;
 use crate::ellipse::Ellipse;
+use crate::frame::FramesTable;
 use crate::quantity::Scalar;
 
 /// A number as people read it: shortest round-trip digits, plain for 1e-5 <= |x| < 1e16 and in
@@ -82,6 +85,14 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         e,
         e.kind()
     );
+    if let Some(f) = &report.frame {
+        let _ = writeln!(
+            out,
+            "Frame: {} (observer velocity w = {}; every velocity shifted by -w)",
+            f.name,
+            f.w.show()
+        );
+    }
     if let Some(v) = &report.vectors {
         vectors(case, v).render(&mut out);
     }
@@ -102,6 +113,126 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
     }
     if let Some(d) = &report.diagnostics {
         diagnostics(d).render(&mut out);
+    }
+    if let Some(r) = &report.reverse {
+        reverse(case, r).render(&mut out);
+    }
+    out
+}
+
+fn reverse<N: Scalar>(case: &Case, r: &Reverse<N>) -> Block {
+    let mut b = Block::new("Time reversed (t -> -t: V -> -V, IN and FIN trade places)");
+    b.row("IN'  = -FIN", pair(&r.v_in), "");
+    b.row("FIN' = -IN", pair(&r.fin), "");
+    if case.restitution().is_elastic() {
+        let (same, why) = if r.equals_original {
+            ("yes", "elastic, seen from the COM frame")
+        } else {
+            (
+                "no",
+                "only in the COM frame is an elastic collision its own time reverse",
+            )
+        };
+        b.row("same as the original?", same, why);
+    } else {
+        b.row(
+            "e'",
+            r.restitution.show(),
+            "= 1/e > 1: an explosion, not a collision",
+        );
+        b.row("KE_IN' = KE_FIN", r.energy.ke_in.show(), "");
+        b.row("KE_FIN' = KE_IN", r.energy.fin.show(), "");
+        b.row(
+            "energy gained",
+            r.energy.gained.show(),
+            "= the original's energy lost",
+        );
+    }
+    b
+}
+
+/// The frames table (lecture Figs. 2.5 and 3.4) with its checked invariants.
+pub fn frames<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
+    let e = case.restitution();
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "M = {}   V_IN = ({}, {})   e = {} ({})",
+        case.inertia().describe(),
+        case.velocities[0],
+        case.velocities[1],
+        e,
+        e.kind()
+    );
+    let heading = "Frames (an observer moving at w sees every velocity shifted by -w)";
+    let mut b = Block::new(heading);
+    let mut header = vec!["frame", "w", "IN", "COM"];
+    if !e.is_totally_inelastic() {
+        header.push("FIN");
+    }
+    if e.is_elastic() {
+        header.extend(["KE_IN = KE_FIN", "KE_COM", "crunch"]);
+    } else if e.is_totally_inelastic() {
+        header.extend(["KE_IN", "KE_FIN = KE_COM", "crunch = lost"]);
+    } else {
+        header.extend(["KE_IN", "KE_FIN", "KE_COM", "crunch", "lost"]);
+    }
+    let reversing = t.frames.iter().any(|r| r.reverse_equals_original.is_some());
+    if reversing {
+        header.push("reversed = original");
+    }
+    b.rows.push(header.into_iter().map(String::from).collect());
+    for r in &t.frames {
+        let en = &r.energy;
+        let mut row = vec![r.label.clone(), r.w.show(), pair(&r.v_in), pair(&r.com)];
+        if !e.is_totally_inelastic() {
+            row.push(pair(&r.fin));
+        }
+        if e.is_elastic() || e.is_totally_inelastic() {
+            // Elastic: KE_IN = KE_FIN; stuck: KE_FIN = KE_COM and lost = crunch.
+            row.extend([en.ke_in.show(), en.com.show(), en.crunch.show()]);
+        } else {
+            row.extend([
+                en.ke_in.show(),
+                en.fin.show(),
+                en.com.show(),
+                en.crunch.show(),
+                en.lost.show(),
+            ]);
+        }
+        if let Some(same) = r.reverse_equals_original {
+            row.push(if same { "yes" } else { "no" }.into());
+        }
+        b.rows.push(row);
+    }
+    b.render(&mut out);
+    let inv = &t.invariants;
+    let mut lines = vec![
+        format!("crunch = 1/2 mu (V1 - V2)^2 = {}", inv.crunch.show()),
+        format!(
+            "relative velocity V1 - V2 = {}",
+            inv.relative_velocity.show()
+        ),
+        format!(
+            "e = -(FIN1 - FIN2)/(IN1 - IN2) = {}",
+            inv.restitution.show()
+        ),
+    ];
+    if !e.is_elastic() {
+        lines.insert(1, format!("energy lost = {}", inv.lost.show()));
+    }
+    let _ = writeln!(
+        out,
+        "\nInvariants, computed in each frame from its own velocities and equal in all:"
+    );
+    for l in lines {
+        let _ = writeln!(out, "  {l}");
+    }
+    if e.is_totally_inelastic() {
+        let _ = writeln!(
+            out,
+            "  (e = 0: FIN = COM, so the bodies' \"finally at rest\" frames are the COM frame)"
+        );
     }
     out
 }

@@ -1,0 +1,283 @@
+//! Galilean frames and time reversal (lecture Sec. 4, Figs. 2.5 and 3.4), as a user runs them.
+
+mod common;
+
+use collide::accuracy::case;
+use collide::frame::{Frame, Observed};
+use collide::quantity::from_f64;
+use collide::solver::Solver;
+use common::{REL, assert_close, assert_pair, collide};
+use proptest::prelude::*;
+use serde::Deserialize;
+use serde_json::Value;
+
+#[derive(Deserialize)]
+struct Table {
+    frames: Vec<Row>,
+    invariants: Invariants,
+}
+
+#[derive(Deserialize)]
+struct Row {
+    name: String,
+    w: f64,
+    #[serde(rename = "in")]
+    v_in: [f64; 2],
+    com: [f64; 2],
+    fin: [f64; 2],
+    energy: collide::report::Energy,
+}
+
+#[derive(Deserialize)]
+struct Invariants {
+    crunch: f64,
+    lost: f64,
+    relative_velocity: f64,
+    restitution: f64,
+}
+
+fn stdout(args: &[&str]) -> String {
+    let out = collide().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn fig_3_4_table_from_collide_frames() {
+    let t: Table = serde_json::from_str(&stdout(&[
+        "frames", "-m", "6,1", "-v", "3,-4", "--format", "json",
+    ]))
+    .unwrap();
+    let names: Vec<&str> = t.frames.iter().map(|r| r.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "lab",
+            "rest-in:1",
+            "rest-in:2",
+            "com",
+            "rest-fin:1",
+            "rest-fin:2"
+        ]
+    );
+    let row = |n: &str| t.frames.iter().find(|r| r.name == n).unwrap();
+    // Lecture Fig. 3.4: (frame, w, IN, FIN): Earth, VW initially at rest, COM, VW finally at rest.
+    for (name, w, v_in, fin) in [
+        ("lab", 0.0, [3.0, -4.0], [1.0, 8.0]),
+        ("rest-in:2", -4.0, [7.0, 0.0], [5.0, 12.0]),
+        ("com", 2.0, [1.0, -6.0], [-1.0, 6.0]),
+        ("rest-fin:2", 8.0, [-5.0, -12.0], [-7.0, 0.0]),
+    ] {
+        let r = row(name);
+        assert_close(r.w, w, REL, name);
+        assert_pair(r.v_in, v_in, &format!("{name} IN"));
+        assert_pair(r.fin, fin, &format!("{name} FIN"));
+        assert_close(r.energy.crunch, 21.0, REL, &format!("{name} crunch"));
+        assert_eq!(r.energy.lost, 0.0);
+    }
+    assert_pair(
+        row("com").com,
+        [0.0, 0.0],
+        "COM at the origin of the COM frame",
+    );
+    assert_close(
+        row("com").energy.ke_in,
+        21.0,
+        REL,
+        "KE in the COM frame is all crunch",
+    );
+    assert_close(
+        row("rest-in:2").energy.ke_in,
+        147.0,
+        REL,
+        "KE with the VW initially at rest",
+    );
+    assert_eq!(t.invariants.crunch, 21.0);
+    assert_eq!(t.invariants.lost, 0.0);
+    assert_eq!(t.invariants.relative_velocity, 7.0);
+    assert_eq!(t.invariants.restitution, 1.0);
+}
+
+#[test]
+fn frames_text_and_extra_rows() {
+    let text = stdout(&[
+        "frames",
+        "-m",
+        "6,1",
+        "-v",
+        "3,-4",
+        "--frame",
+        "-10",
+        "--reverse",
+    ]);
+    assert!(text.contains("observer at -10"), "{text}");
+    assert!(text.contains("crunch = 1/2 mu (V1 - V2)^2 = 21"), "{text}");
+    // The time reverse equals the original in the COM row only.
+    let verdicts: Vec<&str> = text
+        .lines()
+        .filter(|l| l.trim_end().ends_with(" yes") || l.trim_end().ends_with(" no"))
+        .map(|l| {
+            if l.trim_end().ends_with("yes") {
+                l.split_whitespace().next().unwrap()
+            } else {
+                "-"
+            }
+        })
+        .collect();
+    assert_eq!(
+        verdicts.iter().filter(|v| **v != "-").collect::<Vec<_>>(),
+        [&"COM"],
+        "{text}"
+    );
+    assert_eq!(verdicts.len(), 7, "{text}");
+}
+
+#[test]
+fn case_a_in_the_com_frame() {
+    let j: Value = serde_json::from_str(&stdout(&[
+        "solve",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--frame",
+        "com",
+        "--show",
+        "vectors,energy",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(j["frame"], serde_json::json!({"name": "com", "w": 50.0}));
+    assert_eq!(j["in"], serde_json::json!([10.0, -40.0]));
+    assert_eq!(j["fin"], serde_json::json!([-10.0, 40.0]));
+    assert_eq!(j["com"], serde_json::json!([0.0, 0.0]));
+    assert_eq!(j["energy"]["crunch"], 1000.0);
+    assert_eq!(
+        j["energy"]["in"], 1000.0,
+        "in the COM frame all KE is crunch"
+    );
+}
+
+#[test]
+fn reversal_of_case_a() {
+    let lab: Value = serde_json::from_str(&stdout(&[
+        "solve",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--reverse",
+        "--show",
+        "vectors",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(lab["reverse"]["in"], serde_json::json!([-40.0, -90.0]));
+    assert_eq!(lab["reverse"]["fin"], serde_json::json!([-60.0, -10.0]));
+    assert_eq!(lab["reverse"]["equals_original"], false);
+    let com: Value = serde_json::from_str(&stdout(&[
+        "solve",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--frame",
+        "com",
+        "--reverse",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(com["reverse"]["equals_original"], true);
+    assert_eq!(com["reverse"]["in"], com["in"]);
+}
+
+#[test]
+fn reversal_of_ka_whump_is_an_explosion() {
+    let j: Value = serde_json::from_str(&stdout(&[
+        "solve",
+        "-m",
+        "6,1",
+        "-v",
+        "3,-4",
+        "-e",
+        "2/3",
+        "--reverse",
+        "--exact",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(j["reverse"]["restitution"], "3/2");
+    assert_eq!(j["reverse"]["energy"]["gained"], "35/3");
+    assert_eq!(j["reverse"]["energy"]["in"], "70/3");
+    let text = stdout(&["solve", "-m", "6,1", "-v", "3,-4", "-e", "2/3", "--reverse"]);
+    assert!(text.contains("an explosion"), "{text}");
+}
+
+#[test]
+fn reversal_of_ka_runch_is_refused() {
+    for cmd in [
+        ["solve", "-m", "4,1", "-v", "60,10", "-e", "0", "--reverse"],
+        ["frames", "-m", "4,1", "-v", "60,10", "-e", "0", "--reverse"],
+    ] {
+        let out = collide().args(cmd).output().unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+        assert!(String::from_utf8_lossy(&out.stderr).contains("not determined"));
+    }
+}
+
+#[test]
+fn bad_frames_are_refused() {
+    let out = collide()
+        .args(["solve", "-m", "4,1", "-v", "60,10", "--frame", "rest-in:3"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("'rest-in:3' is not a frame"));
+}
+
+#[test]
+fn fig_3_4_scenes_pass() {
+    let out = stdout(&[
+        "scene",
+        "scenarios/fig-2-3-elastic.toml",
+        "scenarios/fig-3-4-vw-initially-at-rest.toml",
+        "scenarios/fig-3-4-com.toml",
+        "scenarios/fig-3-4-vw-finally-at-rest.toml",
+    ]);
+    assert!(out.contains("4 scenes: 4 pass, 0 fail"), "{out}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// Crunch, energy lost and the relative velocity are the same in every frame, even under
+    /// boosts of 1e15 with relative velocities of order 1; FIN shifts by exactly -w (1 ulp).
+    #[test]
+    fn invariance_under_random_boosts(
+        m1 in 1e-3f64..1e3, m2 in 1e-3f64..1e3, v1 in -10.0f64..10.0, v2 in -10.0f64..10.0,
+        e in prop_oneof![Just(0.0), Just(1.0), 0.0f64..1.0], k in 0i32..=15, s in -1.0f64..1.0,
+    ) {
+        let c = case([[m1, 0.0], [0.0, m2]], [v1, v2], e).unwrap();
+        let w = s * 10f64.powi(k);
+        let lab = Observed::lab(&c);
+        let moving = Observed::new(&c, &Frame::Velocity(collide::number::Number::from_f64(w).unwrap()));
+        prop_assert_eq!(moving.crunch(), lab.crunch());
+        prop_assert_eq!(moving.lost(), lab.lost());
+        prop_assert_eq!(moving.relative_velocity(), lab.relative_velocity());
+        let (fin, fin_w) = (lab.v_fin(), moving.v_fin());
+        for i in 0..2 {
+            let expected = from_f64(fin[i]) - from_f64(w);
+            let scale = fin_w[i].abs().max(w.abs()).max(1e-300);
+            prop_assert!(collide::accuracy::ulps(fin_w[i], &expected, scale) <= 1.0);
+        }
+    }
+}
