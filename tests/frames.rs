@@ -273,10 +273,12 @@ proptest! {
         prop_assert_eq!(moving.crunch(), lab.crunch());
         prop_assert_eq!(moving.lost(), lab.lost());
         prop_assert_eq!(moving.relative_velocity(), lab.relative_velocity());
-        let (fin, fin_w) = (lab.v_fin(), moving.v_fin());
+        // Against the exact FIN of the binary64 inputs, shifted by the exact w.
+        let exact_fin = collide::exact::ExactCollision::from_binary64(&c).v_fin_q();
+        let fin_w = moving.v_fin();
         for i in 0..2 {
-            let expected = from_f64(fin[i]) - from_f64(w);
-            let scale = fin_w[i].abs().max(w.abs()).max(1e-300);
+            let expected = &exact_fin[i] - from_f64(w);
+            let scale = fin_w[i].abs().max(w.abs()).max(lab.v_fin()[i].abs()).max(1e-300);
             prop_assert!(collide::accuracy::ulps(fin_w[i], &expected, scale) <= 1.0);
         }
     }
