@@ -90,7 +90,7 @@ impl InertiaTensor {
             entries[1][0].value(),
             entries[1][1].value(),
         );
-        if entries[0][1].exact() != entries[1][0].exact() {
+        if !entries[0][1].same_value(&entries[1][0]) {
             return Err(InertiaError::NotSymmetric(
                 entries[0][1].to_string(),
                 entries[1][0].to_string(),

@@ -13,11 +13,12 @@ use num_traits::{ToPrimitive, Zero};
 /// only cost memory in exact arithmetic.
 const MAX_EXPONENT: i64 = 9999;
 
-/// A finite number with the text it came from.
+/// A finite number with the text it came from (none for a number made from a binary64, whose
+/// text is its shortest round-trip decimal, derived when asked for).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Number {
     value: f64,
-    text: String,
+    text: Option<Box<str>>,
 }
 
 /// Why a text is not a number.
@@ -134,29 +135,53 @@ impl Number {
         self.value
     }
 
-    /// The text as typed (trimmed).
-    pub fn text(&self) -> &str {
-        &self.text
+    /// The text as typed (trimmed), or the shortest decimal of a binary64-born number.
+    pub fn text(&self) -> std::borrow::Cow<'_, str> {
+        match &self.text {
+            Some(t) => std::borrow::Cow::Borrowed(t),
+            None => std::borrow::Cow::Owned(format!("{:?}", self.value)),
+        }
     }
 
-    /// The typed value as an exact rational.
+    /// Whether this number was typed as text (rather than made from a binary64).
+    pub fn is_typed(&self) -> bool {
+        self.text.is_some()
+    }
+
+    /// The typed value as an exact rational (a binary64-born number: its exact binary value).
     pub fn exact(&self) -> BigRational {
+        let Some(text) = &self.text else {
+            return BigRational::from_float(self.value).unwrap_or_default();
+        };
         // The text was validated when this Number was made, so both parses succeed.
-        match self.text.split_once('/') {
+        match text.split_once('/') {
             Some((n, d)) => match (Decimal::parse(n), Decimal::parse(d)) {
                 (Some(n), Some(d)) => n.to_rational() / d.to_rational(),
                 _ => BigRational::zero(),
             },
-            None => Decimal::parse(&self.text)
-                .map(|d| d.to_rational())
-                .unwrap_or_default(),
+            None => Decimal::parse(text).map(|d| d.to_rational()).unwrap_or_default(),
         }
     }
 
-    /// A number known to be exactly the given binary64 value (its text is the shortest decimal
-    /// that rounds back to it).
+    /// Exactly the given binary64 value, which must be finite; no allocation.
     pub fn from_f64(value: f64) -> Result<Number, NumberError> {
-        format!("{value:?}").parse()
+        if value.is_finite() {
+            Ok(Number { value, text: None })
+        } else {
+            Err(NumberError::Syntax(format!("{value}")))
+        }
+    }
+
+    /// Whether two numbers have the same exact value.
+    pub fn same_value(&self, other: &Number) -> bool {
+        // Different nearest binary64 values mean different exact values; equal ones need the
+        // exact comparison only when a typed text is involved and the texts differ.
+        self.value == other.value
+            && match (&self.text, &other.text) {
+                (None, None) => true,
+                (Some(a), Some(b)) if a == b => true,
+                _ => self.exact() == other.exact(),
+            }
     }
 }
 
@@ -206,14 +231,17 @@ impl FromStr for Number {
         };
         Ok(Number {
             value,
-            text: text.to_string(),
+            text: Some(text.into()),
         })
     }
 }
 
 impl fmt::Display for Number {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.text)
+        match &self.text {
+            Some(t) => f.write_str(t),
+            None => write!(f, "{}", crate::report::text::num(self.value)),
+        }
     }
 }
 
