@@ -4,8 +4,12 @@
 use anyhow::{Context, Result};
 use serde::Serialize;
 
+use crate::batch;
 use crate::case::Case;
-use crate::cli::{AccuracyArgs, CaseArgs, Command, Format, FramesArgs, SceneArgs, SolveArgs};
+use crate::cli::{
+    AccuracyArgs, BatchArgs, CaseArgs, Command, Format, FramesArgs, SceneArgs, SolveArgs,
+    SweepArgs, TableArgs,
+};
 use crate::exact::ExactCollision;
 use crate::expect::Check;
 use crate::frame::{
@@ -13,9 +17,16 @@ use crate::frame::{
     reverse_equals_original, table,
 };
 use crate::inertia::InertiaTensor;
+use crate::number::Number;
 use crate::quantity::Exact;
 use crate::report::{Report, Sections, json, text};
+use crate::rows::{
+    CHUNK_ROWS, Column, Output, Progress, RowCase, RowWriter, RowsError, Summary, chunk,
+    write_chunks,
+};
 use crate::scene::{Scene, SceneError};
+use crate::sweep::{Grid, Param, Shard};
+use std::io::Write;
 
 /// What a command prints and how it exits.
 #[derive(Debug, PartialEq)]
@@ -31,6 +42,8 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Scene(args) => scene(args),
         Command::Accuracy(args) => accuracy(args),
         Command::Frames(args) => frames(args),
+        Command::Sweep(args) => sweep(args),
+        Command::Batch(args) => batch(args),
     }
 }
 
@@ -176,12 +189,30 @@ struct FailedJson<'a> {
 }
 
 fn scene(args: SceneArgs) -> Result<Outcome> {
+    // A [sweep] scene writes a table, and comes alone.
+    if let [path] = args.files.as_slice() {
+        let scene = Scene::load(path)?;
+        if let Some(sw) = &scene.sweep {
+            let table = TableArgs {
+                columns: sw.columns.clone(),
+                format: sw.format,
+                output: None,
+                skip_bad: sw.skip_bad,
+            };
+            return run_sweep(&scene.case, &sw.grid, Shard::WHOLE, &table);
+        }
+    }
     // Load and solve every scene first: a bad file is an error before anything is printed.
-    let solved = args
-        .files
-        .iter()
-        .map(|p| solve_scene(Scene::load(p)?))
-        .collect::<Result<Vec<_>>>()?;
+    let mut tables = Vec::new();
+    let mut solved = Vec::new();
+    for p in &args.files {
+        let scene = Scene::load(p)?;
+        match &scene.sweep {
+            // Among several files a [sweep] scene is listed, not written.
+            Some(sw) => tables.push((scene.path.clone(), sw.grid.total, scene.title.clone())),
+            None => solved.push(solve_scene(scene)?),
+        }
+    }
     let failed = solved.iter().any(|s| s.failures().next().is_some());
     let stdout = match args.format {
         Format::Json => {
@@ -193,7 +224,7 @@ fn scene(args: SceneArgs) -> Result<Outcome> {
             }
         }
         Format::Text if solved.len() == 1 => scene_text(&solved[0]),
-        Format::Text => scene_summary(&solved),
+        Format::Text => scene_summary(&solved, &tables),
     };
     Ok(Outcome {
         stdout,
@@ -257,11 +288,15 @@ fn scene_text(s: &Solved) -> String {
     out
 }
 
-fn scene_summary(solved: &[Solved]) -> String {
+fn scene_summary(
+    solved: &[Solved],
+    tables: &[(std::path::PathBuf, u64, Option<String>)],
+) -> String {
     let mut out = String::new();
     let width = solved
         .iter()
         .map(|s| s.scene.path.display().to_string().len())
+        .chain(tables.iter().map(|t| t.0.display().to_string().len()))
         .max()
         .unwrap_or(0);
     for s in solved {
@@ -280,6 +315,14 @@ fn scene_summary(solved: &[Solved]) -> String {
         .iter()
         .filter(|s| s.failures().next().is_some())
         .count();
+    for (path, rows, title) in tables {
+        let rows = format!("{rows} rows");
+        out.push_str(&format!(
+            "table {:<width$}  {rows:>13}  {} (a [sweep] scene: run it alone to write it)\n",
+            path.display(),
+            title.as_deref().unwrap_or("")
+        ));
+    }
     out.push_str(&format!(
         "{} scenes: {} pass, {} fail\n",
         solved.len(),
@@ -433,4 +476,180 @@ fn render_frames<N: crate::quantity::Scalar>(
         Format::Json => json::render(t),
         Format::Text => text::frames(case, t),
     }
+}
+
+fn sweep(args: SweepArgs) -> Result<Outcome> {
+    let case = args.case.into_case()?;
+    let grid = Grid::new(args.vary, args.max_rows).map_err(anyhow::Error::msg)?;
+    run_sweep(&case, &grid, args.shard, &args.table)
+}
+
+/// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
+pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> Result<Outcome> {
+    let m = case.inertia().matrix();
+    let general = !case.inertia().is_diagonal();
+    if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
+        anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
+    }
+    let writer = RowWriter::new(columns(&table.columns, general), table.format);
+    // A tensor every row shares, when no mass varies (made from binary64 values: cloning it
+    // allocates nothing).
+    let shared = (!grid.varies(Param::M1) && !grid.varies(Param::M2))
+        .then(|| {
+            let n = |x: f64| Number::from_f64(x).expect("a validated tensor is finite");
+            InertiaTensor::general([[n(m[(0, 0)]), n(m[(0, 1)])], [n(m[(1, 0)]), n(m[(1, 1)])]])
+        })
+        .transpose()?;
+    let c = &case.collision;
+    let base = RowCase {
+        m11: m[(0, 0)],
+        m12: m[(0, 1)],
+        m22: m[(1, 1)],
+        v: [c.v_in.x, c.v_in.y],
+        e: c.restitution.value(),
+    };
+    let rows = shard.rows(grid.total);
+    let mut out = Output::open(table.output.as_deref()).map_err(|e| output_error(table, e))?;
+    if shard.k == 1 {
+        let mut header = Vec::new();
+        writer.header(&mut header);
+        out.write_all(&header)?;
+    }
+    let chunk_ranges = (rows.start..rows.end)
+        .step_by(CHUNK_ROWS)
+        .map(move |s| s..(s + CHUNK_ROWS as u64).min(rows.end));
+    let batches = batched(chunk_ranges);
+    let mut progress = Progress::new(Some(rows.end - rows.start));
+    let solve = |range: std::ops::Range<u64>| {
+        let mut varied = [(Param::E, 0.0); 5];
+        let varied = &mut varied[..grid.vary.len()];
+        let items = range.map(|r| {
+            grid.row(r, varied);
+            let mut row = base;
+            for &(p, x) in varied.iter() {
+                match p {
+                    Param::M1 => row.m11 = x,
+                    Param::M2 => row.m22 = x,
+                    Param::V1 => row.v[0] = x,
+                    Param::V2 => row.v[1] = x,
+                    Param::E => row.e = x,
+                }
+            }
+            Ok((r + 1, row))
+        });
+        chunk(
+            items,
+            &|r| format!("row {r}"),
+            shared.as_ref(),
+            &writer,
+            table.skip_bad,
+        )
+    };
+    finish_table(
+        write_chunks(batches, solve, &mut out, &mut progress),
+        out,
+        &progress,
+        table,
+    )
+}
+
+fn batch(args: BatchArgs) -> Result<Outcome> {
+    let input = batch::open(
+        args.input.as_deref(),
+        args.input_format,
+        args.restitution.value(),
+    )
+    .map_err(anyhow::Error::msg)?;
+    let writer = RowWriter::new(
+        columns(&args.table.columns, input.general),
+        args.table.format,
+    );
+    let mut out =
+        Output::open(args.table.output.as_deref()).map_err(|e| output_error(&args.table, e))?;
+    let mut header = Vec::new();
+    writer.header(&mut header);
+    out.write_all(&header)?;
+    // Read a batch of chunks at a time: memory stays bounded whatever the input's size.
+    let mut input = input.peekable();
+    let chunks = std::iter::from_fn(move || {
+        input.peek()?;
+        Some(input.by_ref().take(CHUNK_ROWS).collect::<Vec<_>>())
+    });
+    let mut progress = Progress::new(None);
+    let solve = |items: Vec<Result<(u64, RowCase), crate::rows::RowError>>| {
+        chunk(
+            items.into_iter(),
+            &|l| format!("line {l}"),
+            None,
+            &writer,
+            args.table.skip_bad,
+        )
+    };
+    finish_table(
+        write_chunks(batched(chunks), solve, &mut out, &mut progress),
+        out,
+        &progress,
+        &args.table,
+    )
+}
+
+/// Groups chunks into batches of a few per thread.
+fn batched<C>(chunks: impl Iterator<Item = C>) -> impl Iterator<Item = Vec<C>> {
+    let per_batch = 4 * rayon::current_num_threads().max(1);
+    let mut chunks = chunks.peekable();
+    std::iter::from_fn(move || {
+        chunks.peek()?;
+        Some(chunks.by_ref().take(per_batch).collect())
+    })
+}
+
+fn columns(chosen: &[Column], general: bool) -> Vec<Column> {
+    if chosen.is_empty() {
+        Column::defaults(general)
+    } else {
+        chosen.to_vec()
+    }
+}
+
+fn output_error(table: &TableArgs, e: std::io::Error) -> anyhow::Error {
+    let path = table
+        .output
+        .as_ref()
+        .map_or("stdout".into(), |p| p.display().to_string());
+    anyhow::anyhow!("cannot write {path}: {e}")
+}
+
+/// Ends a table run: commits the output when complete (a bad row leaves no file behind), and
+/// reports skipped rows.
+fn finish_table(
+    result: Result<Summary, RowsError>,
+    out: Output,
+    progress: &Progress,
+    table: &TableArgs,
+) -> Result<Outcome> {
+    progress.finish();
+    let summary = match result {
+        Ok(s) => s,
+        // `out` is dropped unfinished: a temporary file is removed, stdout keeps whole rows.
+        Err(RowsError::Row(e)) => {
+            let hint = if table.skip_bad {
+                ""
+            } else {
+                " (--skip-bad reports bad rows and goes on)"
+            };
+            return Err(anyhow::anyhow!("{e}{hint}"));
+        }
+        Err(RowsError::Io(e)) => return Err(e.into()),
+    };
+    out.commit().map_err(|e| output_error(table, e))?;
+    if summary.skipped > 0 {
+        eprintln!(
+            "{} rows written, {} bad rows skipped",
+            summary.rows, summary.skipped
+        );
+    }
+    Ok(Outcome {
+        stdout: String::new(),
+        status: 0,
+    })
 }

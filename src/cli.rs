@@ -5,12 +5,15 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+use crate::batch::InputFormat;
 use crate::case::{parse_inertia, parse_masses, parse_velocities};
 use crate::frame::Frame;
 use crate::inertia::{InertiaTensor, Mass};
 use crate::number::Number;
 use crate::report::Section;
 use crate::restitution::Restitution;
+use crate::rows::{Column, RowFormat};
+use crate::sweep::{Shard, Vary};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -36,7 +39,90 @@ pub enum Command {
     Accuracy(AccuracyArgs),
     /// The same collision in the standard Galilean frames (lecture Figs. 2.5 and 3.4)
     Frames(FramesArgs),
+    /// A table of collisions over a grid of parameters (--vary), one row each
+    Sweep(SweepArgs),
+    /// A table of collisions read from CSV or JSON Lines, one row each
+    Batch(BatchArgs),
 }
+
+/// Output of a table of rows.
+#[derive(Args, Debug, Clone)]
+pub struct TableArgs {
+    /// Columns, comma-separated [default: the inputs, fin1, fin2, v_com, ke_in, ke_fin, crunch,
+    /// lost] [possible values: m1, m2, m11, m12, m22, v1, v2, e, fin1, fin2, v_com, p_total,
+    /// ke_in, ke_fin, ke_com, crunch, lost, mu, in_m_in, fin_m_in, fin_m_fin, com_m_in]
+    #[arg(long, value_delimiter = ',', value_name = "COLUMNS",
+          value_parser = clap::value_parser!(Column))]
+    pub columns: Vec<Column>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = RowFormat::Csv)]
+    pub format: RowFormat,
+
+    /// Write to FILE atomically (a temporary file renamed into place when complete)
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+
+    /// Report each bad row on stderr and go on (default: stop at the first, exit 2)
+    #[arg(long)]
+    pub skip_bad: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+
+    /// A parameter to vary: NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or NAME=a,b,c, with NAME
+    /// one of m1, m2, v1, v2, e; repeat for a cartesian product (the last varies fastest)
+    #[arg(long, required = true, value_name = "NAME=RANGE", allow_hyphen_values = true,
+          value_parser = clap::value_parser!(Vary))]
+    pub vary: Vec<Vary>,
+
+    /// Only the K-th of N contiguous slices of the rows (K from 1); the shards concatenated in
+    /// order are the whole table (shard 1 carries the header)
+    #[arg(long, value_name = "K/N", default_value = "1/1", value_parser = clap::value_parser!(Shard))]
+    pub shard: Shard,
+
+    /// Refuse sweeps of more rows than this
+    #[arg(long, value_name = "N", default_value_t = 10_000_000_000)]
+    pub max_rows: u64,
+
+    #[command(flatten)]
+    pub table: TableArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct BatchArgs {
+    /// CSV or JSON Lines file of cases; '-' or nothing for stdin
+    #[arg(value_name = "FILE")]
+    pub input: Option<PathBuf>,
+
+    /// Input format [default: from the extension; for stdin, JSON Lines if it starts with '{']
+    #[arg(long, value_enum)]
+    pub input_format: Option<InputFormat>,
+
+    /// Restitution for rows without an e column
+    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
+          value_parser = clap::value_parser!(Restitution), allow_hyphen_values = true)]
+    pub restitution: Restitution,
+
+    #[command(flatten)]
+    pub table: TableArgs,
+}
+
+macro_rules! parse_with_from_str {
+    ($($t:ty),*) => {$(
+        impl clap::builder::ValueParserFactory for $t {
+            type Parser = fn(&str) -> Result<$t, String>;
+            fn value_parser() -> Self::Parser {
+                |s| s.parse()
+            }
+        }
+    )*};
+}
+
+parse_with_from_str!(Column, Vary, Shard);
 
 #[derive(Args, Debug)]
 pub struct FramesArgs {

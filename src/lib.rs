@@ -13,6 +13,7 @@
 
 pub mod accuracy;
 pub mod app;
+pub mod batch;
 pub mod case;
 pub mod cli;
 pub mod collision;
@@ -26,5 +27,7 @@ pub mod number;
 pub mod quantity;
 pub mod report;
 pub mod restitution;
+pub mod rows;
 pub mod scene;
 pub mod solver;
+pub mod sweep;

@@ -23,9 +23,20 @@ fn main() -> ExitCode {
                 Ok(()) => ExitCode::from(outcome.status),
             }
         }
+        // A table streamed into `collide ... | head`: the reader left; that is not an error.
+        Err(e) if broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::from(2)
         }
     }
+}
+
+fn broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>().is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+            || c.downcast_ref::<collide::rows::RowsError>().is_some_and(|r| {
+                matches!(r, collide::rows::RowsError::Io(io) if io.kind() == std::io::ErrorKind::BrokenPipe)
+            })
+    })
 }

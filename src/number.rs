@@ -159,7 +159,9 @@ impl Number {
                 (Some(n), Some(d)) => n.to_rational() / d.to_rational(),
                 _ => BigRational::zero(),
             },
-            None => Decimal::parse(text).map(|d| d.to_rational()).unwrap_or_default(),
+            None => Decimal::parse(text)
+                .map(|d| d.to_rational())
+                .unwrap_or_default(),
         }
     }
 

@@ -29,6 +29,8 @@ use crate::inertia::{InertiaTensor, Mass};
 use crate::number::Number;
 use crate::report::{Section, Sections};
 use crate::restitution::Restitution;
+use crate::rows::{Column, RowFormat};
+use crate::sweep::Grid;
 
 /// The file as written. Field names are the scene format.
 #[derive(Deserialize)]
@@ -43,7 +45,28 @@ struct SceneFile {
     show: Option<Vec<Section>>,
     exact: Option<bool>,
     frame: Option<Frame>,
+    sweep: Option<Spanned<SweepTable>>,
     expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
+}
+
+/// `[sweep]`: the scene's case is the base of a table.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SweepTable {
+    vary: Vec<String>,
+    columns: Option<Vec<String>>,
+    format: Option<String>,
+    max_rows: Option<u64>,
+    skip_bad: Option<bool>,
+}
+
+/// A scene's sweep, validated.
+#[derive(Clone, Debug)]
+pub struct SceneSweep {
+    pub grid: Grid,
+    pub columns: Vec<Column>,
+    pub format: RowFormat,
+    pub skip_bad: bool,
 }
 
 /// A loaded, validated scene.
@@ -59,6 +82,8 @@ pub struct Scene {
     pub exact: bool,
     /// The frame to see the collision from (`frame = "com"`).
     pub frame: Frame,
+    /// A table over a grid of parameters instead of a single case (`[sweep]`).
+    pub sweep: Option<SceneSweep>,
     pub expect: Vec<Expectation>,
 }
 
@@ -136,6 +161,47 @@ impl Scene {
                 ));
             }
         };
+        let sweep = match file.sweep {
+            None => None,
+            Some(t) => {
+                let span = t.span();
+                let t = t.into_inner();
+                let at = |m: String| err(Some(span.clone()), format!("[sweep] {m}"));
+                if file.expect.is_some() {
+                    return Err(at(
+                        "a scene with [sweep] writes a table; it cannot have [expect]".into(),
+                    ));
+                }
+                let vary = t
+                    .vary
+                    .iter()
+                    .map(|v| v.parse())
+                    .collect::<Result<Vec<_>, String>>()
+                    .map_err(at)?;
+                let grid = Grid::new(vary, t.max_rows.unwrap_or(10_000_000_000)).map_err(at)?;
+                let columns = t
+                    .columns
+                    .unwrap_or_default()
+                    .iter()
+                    .map(|c| c.parse())
+                    .collect::<Result<Vec<Column>, String>>()
+                    .map_err(at)?;
+                let format = match t.format.as_deref() {
+                    None | Some("csv") => RowFormat::Csv,
+                    Some("jsonl") => RowFormat::Jsonl,
+                    Some("text") => RowFormat::Text,
+                    Some(f) => {
+                        return Err(at(format!("format '{f}': expected csv, jsonl or text")));
+                    }
+                };
+                Some(SceneSweep {
+                    grid,
+                    columns,
+                    format,
+                    skip_bad: t.skip_bad.unwrap_or(false),
+                })
+            }
+        };
         let restitution = file.restitution.unwrap_or_else(Restitution::elastic);
         let case = Case::new(inertia, file.velocities, restitution);
         let show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
@@ -154,6 +220,7 @@ impl Scene {
             show,
             exact: file.exact.unwrap_or(false),
             frame: file.frame.unwrap_or(Frame::Lab),
+            sweep,
             expect,
         })
     }
@@ -236,6 +303,28 @@ mod tests {
         );
         let e = parse("inertia = [[1, 2], [2, 1]]\nvelocities = [1, 2]\n").unwrap_err();
         assert!(e.message.contains("positive definite"), "{e}");
+    }
+
+    #[test]
+    fn sweep_tables() {
+        let s = parse("masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"e=0:1:11\"]\ncolumns = [\"e\", \"lost\"]\n")
+            .unwrap();
+        let sw = s.sweep.unwrap();
+        assert_eq!(sw.grid.total, 11);
+        assert_eq!(sw.columns, [Column::E, Column::Lost]);
+        let e = parse("masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"e=0:2:3\"]\n")
+            .unwrap_err();
+        assert!(
+            e.message.contains("[sweep]")
+                && e.message.contains("outside [0, 1]")
+                && e.at.unwrap().0 == 3,
+            "{e}"
+        );
+        let e = parse(
+            "masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"e=0:1:3\"]\nrows = 3\n",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("unknown field `rows`"), "{e}");
     }
 
     #[test]

@@ -1,0 +1,364 @@
+//! Cases for `collide batch`: CSV with a header naming `m1,m2,v1,v2` and optionally `e` (or
+//! `m11,m12,m22` for a general tensor), or JSON Lines with the same keys. Read as a stream, one
+//! row at a time: memory stays constant whatever the input size.
+
+use std::collections::HashMap;
+use std::fs::File;
+use std::io::{self, BufRead, BufReader, Read};
+use std::path::Path;
+
+use crate::number::Number;
+use crate::rows::{RowCase, RowError};
+
+/// Input format (`--input-format`; by default from the file's extension, or for stdin from its
+/// first character: `{` means JSON Lines).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum InputFormat {
+    Csv,
+    Jsonl,
+}
+
+const DIAGONAL: [&str; 4] = ["m1", "m2", "v1", "v2"];
+const GENERAL: [&str; 5] = ["m11", "m12", "m22", "v1", "v2"];
+const KNOWN: &str = "m1, m2, v1, v2 and optionally e (or m11, m12, m22 for a general tensor)";
+
+/// Which columns hold what.
+#[derive(Clone, Debug)]
+struct Layout {
+    general: bool,
+    /// Field index of m11 (m1), m12, m22 (m2), v1, v2, e.
+    at: [Option<usize>; 6],
+}
+
+impl Layout {
+    fn of(names: &[String]) -> Result<Layout, String> {
+        let find = |n: &str| names.iter().position(|h| h == n);
+        for n in names {
+            if !DIAGONAL.contains(&n.as_str()) && !GENERAL.contains(&n.as_str()) && n != "e" {
+                return Err(format!("unknown column '{n}': expected {KNOWN}"));
+            }
+        }
+        let general = find("m11").is_some() || find("m12").is_some() || find("m22").is_some();
+        let needed: &[&str] = if general { &GENERAL } else { &DIAGONAL };
+        if let Some(missing) = needed.iter().find(|n| find(n).is_none()) {
+            return Err(format!("missing column '{missing}': expected {KNOWN}"));
+        }
+        if general && (find("m1").is_some() || find("m2").is_some()) {
+            return Err("give m1, m2 or m11, m12, m22, not both".into());
+        }
+        let at = if general {
+            [
+                find("m11"),
+                find("m12"),
+                find("m22"),
+                find("v1"),
+                find("v2"),
+                find("e"),
+            ]
+        } else {
+            [
+                find("m1"),
+                None,
+                find("m2"),
+                find("v1"),
+                find("v2"),
+                find("e"),
+            ]
+        };
+        Ok(Layout { general, at })
+    }
+
+    /// A row from its fields (`get(i)` is field `i` as text).
+    fn case<'a>(
+        &self,
+        get: impl Fn(usize) -> Option<&'a str>,
+        line: u64,
+        default_e: f64,
+    ) -> Result<(u64, RowCase), RowError> {
+        let names = if self.general {
+            ["m11", "m12", "m22", "v1", "v2", "e"]
+        } else {
+            ["m1", "m12", "m2", "v1", "v2", "e"]
+        };
+        let mut x = [0.0, 0.0, 0.0, 0.0, 0.0, default_e];
+        for (k, slot) in x.iter_mut().enumerate() {
+            let Some(i) = self.at[k] else { continue };
+            let name = names[k];
+            let bad = |message: String| RowError {
+                place: format!("line {line}"),
+                message: format!("field '{name}': {message}"),
+            };
+            let text = get(i).ok_or_else(|| bad("missing".into()))?;
+            let n: Number = text
+                .parse()
+                .map_err(|e: crate::number::NumberError| bad(e.to_string()))?;
+            *slot = n.value();
+            if (name == "m1" || name == "m2") && *slot <= 0.0 {
+                return Err(bad(format!(
+                    "mass '{}' must be greater than 0",
+                    text.trim()
+                )));
+            }
+            if name == "e" && !(0.0..=1.0).contains(slot) {
+                return Err(bad(format!(
+                    "restitution '{}' is outside [0, 1]",
+                    text.trim()
+                )));
+            }
+        }
+        Ok((
+            line,
+            RowCase {
+                m11: x[0],
+                m12: x[1],
+                m22: x[2],
+                v: [x[3], x[4]],
+                e: x[5],
+            },
+        ))
+    }
+}
+
+/// A stream of cases.
+pub struct Batch {
+    /// Whether the input gives a general tensor (so the default columns are m11, m12, m22).
+    pub general: bool,
+    rows: Box<dyn Iterator<Item = Result<(u64, RowCase), RowError>>>,
+}
+
+impl Iterator for Batch {
+    type Item = Result<(u64, RowCase), RowError>;
+    fn next(&mut self) -> Option<Self::Item> {
+        self.rows.next()
+    }
+}
+
+/// Opens `path` (`None` or `-`: stdin). `default_e` is used where a row has no `e`.
+pub fn open(
+    path: Option<&Path>,
+    format: Option<InputFormat>,
+    default_e: f64,
+) -> Result<Batch, String> {
+    let (reader, name): (Box<dyn Read>, String) = match path {
+        None => (Box::new(io::stdin()), "stdin".into()),
+        Some(p) if p == Path::new("-") => (Box::new(io::stdin()), "stdin".into()),
+        Some(p) => (
+            Box::new(File::open(p).map_err(|e| format!("cannot read {}: {e}", p.display()))?),
+            p.display().to_string(),
+        ),
+    };
+    let mut reader = BufReader::with_capacity(1 << 20, reader);
+    let format = match format {
+        Some(f) => f,
+        None => match path.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
+            Some("jsonl" | "ndjson") => InputFormat::Jsonl,
+            Some("csv") => InputFormat::Csv,
+            _ => {
+                let head = reader
+                    .fill_buf()
+                    .map_err(|e| format!("cannot read {name}: {e}"))?;
+                let first = head.iter().find(|b| !b.is_ascii_whitespace());
+                if first == Some(&b'{') {
+                    InputFormat::Jsonl
+                } else {
+                    InputFormat::Csv
+                }
+            }
+        },
+    };
+    match format {
+        InputFormat::Csv => csv_rows(reader, &name, default_e),
+        InputFormat::Jsonl => jsonl_rows(reader, &name, default_e),
+    }
+}
+
+fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<Batch, String> {
+    let mut r = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .flexible(true)
+        .from_reader(reader);
+    let header: Vec<String> = r
+        .headers()
+        .map_err(|e| format!("{name}: cannot read the CSV header: {e}"))?
+        .iter()
+        .map(String::from)
+        .collect();
+    let layout = Layout::of(&header).map_err(|e| format!("{name}: line 1 (header): {e}"))?;
+    let general = layout.general;
+    let rows = r.into_records().map(move |rec| {
+        let rec = rec.map_err(|e| RowError {
+            place: format!("line {}", e.position().map_or(0, |p| p.line())),
+            message: format!("not a CSV record: {e}"),
+        })?;
+        let line = rec.position().map_or(0, |p| p.line());
+        if rec.len() != header.len() {
+            return Err(RowError {
+                place: format!("line {line}"),
+                message: format!(
+                    "{} fields, but the header names {}",
+                    rec.len(),
+                    header.len()
+                ),
+            });
+        }
+        layout.case(|i| rec.get(i), line, default_e)
+    });
+    Ok(Batch {
+        general,
+        rows: Box::new(rows),
+    })
+}
+
+fn jsonl_rows(reader: impl BufRead + 'static, name: &str, default_e: f64) -> Result<Batch, String> {
+    let mut lines = reader.lines().enumerate().peekable();
+    // The first object decides the layout; every object must have the same keys.
+    let mut layout: Option<Layout> = None;
+    let mut general = false;
+    while let Some((i, Ok(l))) = lines.peek() {
+        if l.trim().is_empty() {
+            lines.next();
+            continue;
+        }
+        let keys = object(l)
+            .map(|o| o.into_keys().collect::<Vec<_>>())
+            .map_err(|e| format!("{name}: line {}: {e}", i + 1))?;
+        let l = Layout::of(&keys).map_err(|e| format!("{name}: line {}: {e}", i + 1))?;
+        general = l.general;
+        layout = Some(l);
+        break;
+    }
+    let rows = lines.filter_map(move |(i, l)| {
+        let line = i as u64 + 1;
+        let err = |message: String| RowError {
+            place: format!("line {line}"),
+            message,
+        };
+        let l = match l {
+            Ok(l) => l,
+            Err(e) => return Some(Err(err(format!("cannot read: {e}")))),
+        };
+        if l.trim().is_empty() {
+            return None;
+        }
+        let layout = layout.as_ref()?;
+        Some((|| {
+            let o = object(&l).map_err(err)?;
+            let keys: Vec<String> = o.keys().cloned().collect();
+            let this = Layout::of(&keys).map_err(err)?;
+            if this.general != layout.general {
+                return Err(err(
+                    "this object gives the tensor differently from the first line".into(),
+                ));
+            }
+            let values: HashMap<usize, String> = keys
+                .iter()
+                .enumerate()
+                .map(|(k, key)| (k, o[key].clone()))
+                .collect();
+            this.case(|k| values.get(&k).map(String::as_str), line, default_e)
+        })())
+    });
+    Ok(Batch {
+        general,
+        rows: Box::new(rows),
+    })
+}
+
+/// A JSON object of numbers (or strings holding numbers), as text.
+fn object(line: &str) -> Result<HashMap<String, String>, String> {
+    let v: serde_json::Value = serde_json::from_str(line).map_err(|e| format!("not JSON: {e}"))?;
+    let o = v
+        .as_object()
+        .ok_or("expected a JSON object such as {\"m1\": 4, \"m2\": 1, \"v1\": 60, \"v2\": 10}")?;
+    o.iter()
+        .map(|(k, v)| match v {
+            serde_json::Value::Number(n) => Ok((k.clone(), n.to_string())),
+            serde_json::Value::String(s) => Ok((k.clone(), s.clone())),
+            other => Err(format!("field '{k}': expected a number, got {other}")),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(text: &str, format: InputFormat) -> Vec<Result<(u64, RowCase), RowError>> {
+        static N: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let n = N.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        let path = std::env::temp_dir().join(format!("collide-batch-{}-{n}", std::process::id()));
+        std::fs::write(&path, text).unwrap();
+        let rows: Vec<_> = open(Some(&path), Some(format), 1.0).unwrap().collect();
+        std::fs::remove_file(&path).ok();
+        rows
+    }
+
+    #[test]
+    fn csv_with_and_without_e() {
+        let rows = read("m1,m2,v1,v2\n4,1,60,10\n6, 1, 3, -4\n", InputFormat::Csv);
+        assert_eq!(rows.len(), 2);
+        let (line, c) = rows[1].clone().unwrap();
+        assert_eq!(
+            (line, c.m11, c.m22, c.v, c.e),
+            (3, 6.0, 1.0, [3.0, -4.0], 1.0)
+        );
+        let rows = read("v1,v2,e,m2,m1\n3,-4,2/3,1,6\n", InputFormat::Csv);
+        assert_eq!(rows[0].clone().unwrap().1.e, 2.0 / 3.0);
+    }
+
+    #[test]
+    fn bad_rows_name_line_and_field() {
+        let rows = read(
+            "m1,m2,v1,v2\n4,1,60,10\n4,-1,60,10\n4,1,x,10\n4,1\n",
+            InputFormat::Csv,
+        );
+        let e = rows[1].clone().unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 3: field 'm2': mass '-1' must be greater than 0"
+        );
+        assert!(
+            rows[2]
+                .clone()
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 4: field 'v1': 'x' is not a number")
+        );
+        assert!(
+            rows[3]
+                .clone()
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 5: 2 fields")
+        );
+    }
+
+    #[test]
+    fn jsonl_rows() {
+        let rows = read(
+            "{\"m1\": 4, \"m2\": 1, \"v1\": 60, \"v2\": 10}\n\n{\"m1\": \"6\", \"m2\": 1, \"v1\": 3, \"v2\": -4, \"e\": \"2/3\"}\n{\"m1\": 1}\n",
+            InputFormat::Jsonl,
+        );
+        assert_eq!(rows.len(), 3);
+        assert_eq!(rows[1].clone().unwrap().0, 3);
+        assert_eq!(rows[1].clone().unwrap().1.e, 2.0 / 3.0);
+        assert!(
+            rows[2]
+                .clone()
+                .unwrap_err()
+                .to_string()
+                .contains("line 4: missing column 'm2'")
+        );
+    }
+
+    #[test]
+    fn headers_are_checked() {
+        let path = std::env::temp_dir().join(format!("collide-batch-h-{}", std::process::id()));
+        std::fs::write(&path, "m1,m2,v1,speed\n").unwrap();
+        let e = open(Some(&path), Some(InputFormat::Csv), 1.0)
+            .err()
+            .unwrap();
+        assert!(e.contains("unknown column 'speed'"), "{e}");
+        std::fs::remove_file(&path).ok();
+    }
+}
