@@ -486,20 +486,46 @@ fn sweep(args: SweepArgs) -> Result<Outcome> {
 
 /// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
 pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> Result<Outcome> {
-    let m = case.inertia().matrix();
     let general = !case.inertia().is_diagonal();
     if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
         anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
     }
     let writer = RowWriter::new(columns(&table.columns, general), table.format);
+    let mut out = Output::open(table.output.as_deref()).map_err(|e| output_error(table, e))?;
+    let mut progress = Progress::new(Some(
+        shard.rows(grid.total).end - shard.rows(grid.total).start,
+    ));
+    let result = write_sweep(
+        case,
+        grid,
+        shard,
+        &writer,
+        table.skip_bad,
+        &mut out,
+        &mut progress,
+    );
+    finish_table(result, out, &progress, table)
+}
+
+/// Solves the rows of `shard` of a sweep and writes them (with the header when `shard` is the
+/// first) to `out`: the engine of `collide sweep`, callable with any writer.
+pub fn write_sweep(
+    case: &Case,
+    grid: &Grid,
+    shard: Shard,
+    writer: &RowWriter,
+    skip_bad: bool,
+    out: &mut dyn Write,
+    progress: &mut Progress,
+) -> Result<Summary, RowsError> {
+    let m = case.inertia().matrix();
     // A tensor every row shares, when no mass varies (made from binary64 values: cloning it
     // allocates nothing).
-    let shared = (!grid.varies(Param::M1) && !grid.varies(Param::M2))
-        .then(|| {
-            let n = |x: f64| Number::from_f64(x).expect("a validated tensor is finite");
-            InertiaTensor::general([[n(m[(0, 0)]), n(m[(0, 1)])], [n(m[(1, 0)]), n(m[(1, 1)])]])
-        })
-        .transpose()?;
+    let shared = (!grid.varies(Param::M1) && !grid.varies(Param::M2)).then(|| {
+        let n = |x: f64| Number::from_f64(x).expect("a validated tensor is finite");
+        InertiaTensor::general([[n(m[(0, 0)]), n(m[(0, 1)])], [n(m[(1, 0)]), n(m[(1, 1)])]])
+            .expect("the case's tensor is valid")
+    });
     let c = &case.collision;
     let base = RowCase {
         m11: m[(0, 0)],
@@ -509,7 +535,6 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
         e: c.restitution.value(),
     };
     let rows = shard.rows(grid.total);
-    let mut out = Output::open(table.output.as_deref()).map_err(|e| output_error(table, e))?;
     if shard.k == 1 {
         let mut header = Vec::new();
         writer.header(&mut header);
@@ -518,8 +543,6 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
     let chunk_ranges = (rows.start..rows.end)
         .step_by(CHUNK_ROWS)
         .map(move |s| s..(s + CHUNK_ROWS as u64).min(rows.end));
-    let batches = batched(chunk_ranges);
-    let mut progress = Progress::new(Some(rows.end - rows.start));
     let solve = |range: std::ops::Range<u64>| {
         let mut varied = [(Param::E, 0.0); 5];
         let varied = &mut varied[..grid.vary.len()];
@@ -541,16 +564,11 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
             items,
             &|r| format!("row {r}"),
             shared.as_ref(),
-            &writer,
-            table.skip_bad,
+            writer,
+            skip_bad,
         )
     };
-    finish_table(
-        write_chunks(batches, solve, &mut out, &mut progress),
-        out,
-        &progress,
-        table,
-    )
+    write_chunks(batched(chunk_ranges), solve, out, progress)
 }
 
 fn batch(args: BatchArgs) -> Result<Outcome> {

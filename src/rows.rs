@@ -391,8 +391,9 @@ pub fn chunk(
     out
 }
 
-/// Where rows go: stdout, or a file written atomically (a temporary file renamed into place
-/// when the run completes, removed if it does not).
+/// Where rows go: stdout; a regular file written atomically (a temporary file beside it renamed
+/// into place when the run completes, removed if it does not); or a device, FIFO or other
+/// non-regular file (`-o /dev/null`), written directly and never replaced.
 pub enum Output {
     Stdout(io::StdoutLock<'static>),
     File {
@@ -401,12 +402,22 @@ pub enum Output {
         file: BufWriter<File>,
         done: bool,
     },
+    Direct(BufWriter<File>),
 }
 
 impl Output {
     pub fn open(path: Option<&Path>) -> io::Result<Output> {
         let Some(path) = path else {
             return Ok(Output::Stdout(io::stdout().lock()));
+        };
+        // Follow a symlink to the file it names, so the rename replaces that file, not the link.
+        let path = match std::fs::metadata(path) {
+            Ok(m) if !m.is_file() => {
+                let file = std::fs::OpenOptions::new().write(true).open(path)?;
+                return Ok(Output::Direct(BufWriter::with_capacity(1 << 20, file)));
+            }
+            Ok(_) => std::fs::canonicalize(path)?,
+            Err(_) => path.to_path_buf(),
         };
         let name = path
             .file_name()
@@ -416,7 +427,7 @@ impl Output {
         let file = BufWriter::with_capacity(1 << 20, File::create(&tmp)?);
         Ok(Output::File {
             tmp,
-            path: path.to_path_buf(),
+            path,
             file,
             done: false,
         })
@@ -426,6 +437,7 @@ impl Output {
     pub fn commit(mut self) -> io::Result<()> {
         match &mut self {
             Output::Stdout(s) => s.flush(),
+            Output::Direct(f) => f.flush(),
             Output::File {
                 tmp,
                 path,
@@ -446,19 +458,19 @@ impl Write for Output {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
         match self {
             Output::Stdout(s) => s.write(buf),
-            Output::File { file, .. } => file.write(buf),
+            Output::File { file, .. } | Output::Direct(file) => file.write(buf),
         }
     }
     fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
         match self {
             Output::Stdout(s) => s.write_all(buf),
-            Output::File { file, .. } => file.write_all(buf),
+            Output::File { file, .. } | Output::Direct(file) => file.write_all(buf),
         }
     }
     fn flush(&mut self) -> io::Result<()> {
         match self {
             Output::Stdout(s) => s.flush(),
-            Output::File { file, .. } => file.flush(),
+            Output::File { file, .. } | Output::Direct(file) => file.flush(),
         }
     }
 }

@@ -328,3 +328,49 @@ fn sweep_scene_writes_its_table() {
     let last: Vec<&str> = lines[11].split_whitespace().collect();
     assert_eq!(last, ["1.0", "40.0", "90.0", "7250.0", "0.0"]);
 }
+
+#[test]
+fn output_to_a_device_or_through_a_symlink_is_never_replaced() {
+    use std::os::unix::fs::FileTypeExt;
+    // `-o /dev/null` writes into the device; renaming a file over it (as root) would destroy it.
+    ok(&[
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "e=0:1:3",
+        "-o",
+        "/dev/null",
+    ]);
+    let dev_null = std::fs::metadata("/dev/null").unwrap();
+    assert!(
+        dev_null.file_type().is_char_device(),
+        "/dev/null must still be a device"
+    );
+    // A symlink stays a symlink; the file it names gets the table.
+    let target = temp("target.csv");
+    let link = temp("link.csv");
+    std::fs::write(&target, "old\n").unwrap();
+    let _ = std::fs::remove_file(&link);
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    ok(&[
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "e=0:1:3",
+        "-o",
+        link.to_str().unwrap(),
+    ]);
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(std::fs::read_to_string(&target).unwrap().lines().count(), 4);
+}
