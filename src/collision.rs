@@ -50,8 +50,8 @@ impl Collision {
     }
 
     /// `V_COM = P_total / M_total`: the momentum line meets the diagonal `V1 = V2` (Sec. 1),
-    /// written as the weighted mean `V1 + w2 (V2 - V1)` so it cannot overflow where `P_total`
-    /// would, and evaluated in double-double so the one rounding is the last.
+    /// written as a weighted mean (`v_com_dd`) so it cannot overflow where `P_total` would, and
+    /// evaluated in double-double so the one rounding is the last.
     pub fn v_com(&self) -> f64 {
         self.v_com_dd().value()
     }
@@ -107,10 +107,18 @@ impl Collision {
         Dd::sum(a, c) * Dd::new(self.v_in.x) + Dd::sum(c, b) * Dd::new(self.v_in.y)
     }
 
-    /// `V_COM` as a double-double (see `v_com`).
+    /// `V_COM` as a double-double (see `v_com`): from the body with the larger weight, moved
+    /// toward the other by the smaller weight, `V1 + w2 (V2 - V1)` or `V2 - w1 (V2 - V1)`, so the
+    /// correction is the small term (with a mass ratio of 1e27, the other form cancels two terms
+    /// 1e27 times larger than the result).
     pub fn v_com_dd(&self) -> Dd {
-        let (_, w2) = self.inertia.weights_dd();
-        Dd::new(self.v_in.x) + w2 * self.relative_velocity_dd()
+        let (w1, w2) = self.inertia.weights_dd();
+        let d = self.relative_velocity_dd();
+        if w2.hi.abs() <= w1.hi.abs() {
+            Dd::new(self.v_in.x) + w2 * d
+        } else {
+            Dd::new(self.v_in.y) - w1 * d
+        }
     }
 
     fn crunch_dd(&self) -> Dd {

@@ -285,6 +285,8 @@ impl RowWriter {
             RowFormat::Csv => RowBuf::Csv(Box::new(
                 csv::WriterBuilder::new()
                     .has_headers(false)
+                    // Fields are numbers: they never need quotes, so skip looking for them.
+                    .quote_style(csv::QuoteStyle::Never)
                     .from_writer(Vec::with_capacity(1 << 16)),
             )),
             _ => RowBuf::Raw(Vec::with_capacity(1 << 16)),
@@ -292,12 +294,11 @@ impl RowWriter {
     }
 
     /// Writes one row of values (all finite).
-    pub fn row(&self, values: &[f64], buf: &mut RowBuf) {
-        let mut ryu = ryu::Buffer::new();
+    pub fn row(&self, values: &[f64], buf: &mut RowBuf, fields: &mut FieldCache) {
         match buf {
             RowBuf::Csv(csv) => {
-                for v in values {
-                    let _ = csv.write_field(ryu.format_finite(*v));
+                for (i, v) in values.iter().enumerate() {
+                    let _ = csv.write_field(fields.format(i, *v));
                 }
                 let _ = csv.write_record(None::<&[u8]>);
             }
@@ -310,20 +311,50 @@ impl RowWriter {
                     out.push(b'"');
                     out.extend_from_slice(c.name().as_bytes());
                     out.extend_from_slice(b"\":");
-                    out.extend_from_slice(ryu.format_finite(*v).as_bytes());
+                    out.extend_from_slice(fields.format(i, *v));
                 }
                 out.extend_from_slice(b"}\n");
             }
             RowBuf::Raw(out) => {
                 for (i, v) in values.iter().enumerate() {
-                    let s = ryu.format_finite(*v);
+                    let s = fields.format(i, *v);
                     let pad = TEXT_WIDTH.saturating_sub(s.len()) + usize::from(i > 0);
                     out.extend(std::iter::repeat_n(b' ', pad));
-                    out.extend_from_slice(s.as_bytes());
+                    out.extend_from_slice(s);
                 }
                 out.push(b'\n');
             }
         }
+    }
+}
+
+/// Shortest round-trip text of each column's last value: in a sweep most fields repeat from one
+/// row to the next (inputs that do not vary, and whatever does not depend on the fastest
+/// parameter), and formatting numbers is most of a table's cost.
+pub struct FieldCache {
+    last: Vec<(u64, [u8; 32], u8)>,
+    ryu: ryu::Buffer,
+}
+
+impl FieldCache {
+    pub fn new(columns: usize) -> FieldCache {
+        // A NaN bit pattern: never equal to a finite value's.
+        FieldCache {
+            last: vec![(u64::MAX, [0; 32], 0); columns],
+            ryu: ryu::Buffer::new(),
+        }
+    }
+
+    /// The text of `v` (finite) in column `i`.
+    pub fn format(&mut self, i: usize, v: f64) -> &[u8] {
+        let (bits, text, len) = &mut self.last[i];
+        if *bits != v.to_bits() {
+            let s = self.ryu.format_finite(v).as_bytes();
+            text[..s.len()].copy_from_slice(s);
+            *len = s.len() as u8;
+            *bits = v.to_bits();
+        }
+        &text[..*len as usize]
     }
 }
 
@@ -361,6 +392,7 @@ pub fn chunk(
     skip_bad: bool,
 ) -> ChunkOut {
     let mut buf = writer.buffer();
+    let mut fields = FieldCache::new(writer.columns.len());
     let mut values = vec![0.0; writer.columns.len()];
     let mut out = ChunkOut {
         bytes: Vec::new(),
@@ -377,7 +409,7 @@ pub fn chunk(
         });
         match result {
             Ok(()) => {
-                writer.row(&values, &mut buf);
+                writer.row(&values, &mut buf, &mut fields);
                 out.rows += 1;
             }
             Err(e) if skip_bad => out.skipped.push(e),
@@ -617,15 +649,17 @@ mod tests {
         w.header(&mut header);
         assert_eq!(header, b"e,ke_in\n");
         let mut buf = w.buffer();
-        w.row(&[0.3, 1e300], &mut buf);
-        assert_eq!(buf.into_bytes(), b"0.3,1e300\n");
+        let mut f = FieldCache::new(2);
+        w.row(&[0.3, 1e300], &mut buf, &mut f);
+        w.row(&[0.3, -2.5], &mut buf, &mut f);
+        assert_eq!(buf.into_bytes(), b"0.3,1e300\n0.3,-2.5\n");
         let w = RowWriter::new(vec![Column::E, Column::KeIn], RowFormat::Jsonl);
         let mut buf = w.buffer();
-        w.row(&[0.3, 7250.0], &mut buf);
+        w.row(&[0.3, 7250.0], &mut buf, &mut FieldCache::new(2));
         assert_eq!(buf.into_bytes(), b"{\"e\":0.3,\"ke_in\":7250.0}\n");
         let w = RowWriter::new(vec![Column::E], RowFormat::Text);
         let mut buf = w.buffer();
-        w.row(&[0.5], &mut buf);
+        w.row(&[0.5], &mut buf, &mut FieldCache::new(1));
         assert_eq!(buf.into_bytes(), format!("{:>24}\n", "0.5").as_bytes());
     }
 

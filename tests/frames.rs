@@ -257,7 +257,7 @@ fn fig_3_4_scenes_pass() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(400))]
 
     /// Crunch, energy lost and the relative velocity are the same in every frame, even under
     /// boosts of 1e15 with relative velocities of order 1; FIN shifts by exactly -w (1 ulp).

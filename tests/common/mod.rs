@@ -25,3 +25,17 @@ pub fn assert_pair(actual: [f64; 2], expected: [f64; 2], what: &str) {
 pub fn collide() -> Command {
     Command::cargo_bin("collide").expect("the collide binary is built")
 }
+
+/// proptest configuration: `cases` cases from a fixed seed, so CI is reproducible; set
+/// `COLLIDE_PROPTEST_SEED` to explore others.
+pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
+    let seed = std::env::var("COLLIDE_PROPTEST_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2026);
+    proptest::test_runner::Config {
+        cases,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
+        ..proptest::test_runner::Config::default()
+    }
+}
