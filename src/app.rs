@@ -5,10 +5,11 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 
 use crate::batch;
+use crate::batch::InputFormat;
 use crate::case::Case;
 use crate::cli::{
     AccuracyArgs, BatchArgs, CaseArgs, Command, Format, FramesArgs, SceneArgs, SolveArgs,
-    SweepArgs, TableArgs,
+    SweepArgs, TableArgs, TrackArgs,
 };
 use crate::exact::ExactCollision;
 use crate::expect::Check;
@@ -24,8 +25,9 @@ use crate::rows::{
     CHUNK_ROWS, Column, Output, Progress, RowCase, RowWriter, RowsError, Summary, chunk,
     write_chunks,
 };
-use crate::scene::{Scene, SceneError};
+use crate::scene::{AnyScene, Scene, SceneError, TrackScene};
 use crate::sweep::{Grid, Param, Shard};
+use crate::track::{Body, Event, Limits, Run, Track, TrackReport};
 use std::io::Write;
 
 /// What a command prints and how it exits.
@@ -44,6 +46,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Frames(args) => frames(args),
         Command::Sweep(args) => sweep(args),
         Command::Batch(args) => batch(args),
+        Command::Track(args) => track(args),
     }
 }
 
@@ -134,8 +137,11 @@ impl AnyReport {
 
 /// A scene solved and checked.
 struct Solved {
-    scene: Scene,
-    report: AnyReport,
+    path: std::path::PathBuf,
+    title: Option<String>,
+    source: Option<String>,
+    /// The report for people (what a single scene prints).
+    text: String,
     json: serde_json::Value,
     checks: Vec<Check>,
 }
@@ -144,30 +150,61 @@ impl Solved {
     fn failures(&self) -> impl Iterator<Item = &Check> {
         self.checks.iter().filter(|c| !c.passed)
     }
+
+    /// Checks `expect` against `json`; a key that names nothing is an error with its line.
+    fn check(
+        path: &std::path::Path,
+        (title, source): (Option<String>, Option<String>),
+        text: String,
+        json: serde_json::Value,
+        expect: &[crate::expect::Expectation],
+    ) -> Result<Solved> {
+        let checks = expect
+            .iter()
+            .map(|e| {
+                e.check(&json).map_err(|message| SceneError {
+                    path: path.to_path_buf(),
+                    at: Some((e.line, 1)),
+                    message: format!("[expect] {message}"),
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Solved {
+            path: path.to_path_buf(),
+            title,
+            source,
+            text,
+            json,
+            checks,
+        })
+    }
 }
 
 fn solve_scene(scene: Scene) -> Result<Solved> {
     let sections = scene.sections_needed();
     let report = solve_case(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.path.display()))?;
-    let json = report.json();
-    let checks = scene
-        .expect
-        .iter()
-        .map(|e| {
-            e.check(&json).map_err(|message| SceneError {
-                path: scene.path.clone(),
-                at: Some((e.line, 1)),
-                message: format!("[expect] {message}"),
-            })
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(Solved {
-        scene,
-        report,
+    let text = report.text(&scene.case, &scene.show);
+    Solved::check(
+        &scene.path,
+        (scene.title, scene.source),
+        text,
+        report.json(),
+        &scene.expect,
+    )
+}
+
+fn solve_track_scene(scene: TrackScene) -> Result<Solved> {
+    let report = TrackReport::new(&scene.track, scene.track.run(scene.limits, None));
+    let text = text::track(&scene.track, &report, scene.limits);
+    let json = serde_json::to_value(&report)?;
+    Solved::check(
+        &scene.path,
+        (scene.title, scene.source),
+        text,
         json,
-        checks,
-    })
+        &scene.expect,
+    )
 }
 
 #[derive(Serialize)]
@@ -190,27 +227,35 @@ struct FailedJson<'a> {
 
 fn scene(args: SceneArgs) -> Result<Outcome> {
     // A [sweep] scene writes a table, and comes alone.
-    if let [path] = args.files.as_slice() {
-        let scene = Scene::load(path)?;
-        if let Some(sw) = &scene.sweep {
-            let table = TableArgs {
-                columns: sw.columns.clone(),
-                format: sw.format,
-                output: None,
-                skip_bad: sw.skip_bad,
-            };
-            return run_sweep(&scene.case, &sw.grid, Shard::WHOLE, &table);
-        }
+    if let [path] = args.files.as_slice()
+        && let AnyScene::Case(
+            scene @ Scene {
+                sweep: Some(sw), ..
+            },
+        ) = &Scene::load_any(path)?
+    {
+        let table = TableArgs {
+            columns: sw.columns.clone(),
+            format: sw.format,
+            output: None,
+            skip_bad: sw.skip_bad,
+        };
+        return run_sweep(&scene.case, &sw.grid, Shard::WHOLE, &table);
     }
     // Load and solve every scene first: a bad file is an error before anything is printed.
     let mut tables = Vec::new();
     let mut solved = Vec::new();
     for p in &args.files {
-        let scene = Scene::load(p)?;
-        match &scene.sweep {
+        match Scene::load_any(p)? {
             // Among several files a [sweep] scene is listed, not written.
-            Some(sw) => tables.push((scene.path.clone(), sw.grid.total, scene.title.clone())),
-            None => solved.push(solve_scene(scene)?),
+            AnyScene::Case(Scene {
+                sweep: Some(sw),
+                path,
+                title,
+                ..
+            }) => tables.push((path, sw.grid.total, title)),
+            AnyScene::Case(scene) => solved.push(solve_scene(scene)?),
+            AnyScene::Track(scene) => solved.push(solve_track_scene(scene)?),
         }
     }
     let failed = solved.iter().any(|s| s.failures().next().is_some());
@@ -234,9 +279,9 @@ fn scene(args: SceneArgs) -> Result<Outcome> {
 
 fn scene_json(s: &Solved) -> SceneJson<'_> {
     SceneJson {
-        scene: s.scene.path.display().to_string(),
-        title: s.scene.title.as_deref(),
-        source: s.scene.source.as_deref(),
+        scene: s.path.display().to_string(),
+        title: s.title.as_deref(),
+        source: s.source.as_deref(),
         report: &s.json,
         checks: s.checks.len(),
         failed: s
@@ -255,7 +300,7 @@ fn failure_lines(s: &Solved, out: &mut String) {
     for c in s.failures() {
         out.push_str(&format!(
             "  FAIL {}:{}: {}: expected {} ({}), got {}\n",
-            s.scene.path.display(),
+            s.path.display(),
             c.line,
             c.key,
             c.expected,
@@ -267,15 +312,14 @@ fn failure_lines(s: &Solved, out: &mut String) {
 
 fn scene_text(s: &Solved) -> String {
     let mut out = String::new();
-    let sc = &s.scene;
-    if let Some(t) = &sc.title {
+    if let Some(t) = &s.title {
         out.push_str(t);
-        if let Some(src) = &sc.source {
+        if let Some(src) = &s.source {
             out.push_str(&format!(" ({src})"));
         }
         out.push('\n');
     }
-    out.push_str(&s.report.text(&sc.case, &sc.show));
+    out.push_str(&s.text);
     if !s.checks.is_empty() {
         let failed = s.failures().count();
         out.push_str(&format!(
@@ -295,7 +339,7 @@ fn scene_summary(
     let mut out = String::new();
     let width = solved
         .iter()
-        .map(|s| s.scene.path.display().to_string().len())
+        .map(|s| s.path.display().to_string().len())
         .chain(tables.iter().map(|t| t.0.display().to_string().len()))
         .max()
         .unwrap_or(0);
@@ -304,10 +348,10 @@ fn scene_summary(
         let verdict = if failed > 0 { "FAIL" } else { "ok  " };
         out.push_str(&format!(
             "{verdict}  {:<width$}  {:>3}/{:<3} checks  {}\n",
-            s.scene.path.display(),
+            s.path.display(),
             s.checks.len() - failed,
             s.checks.len(),
-            s.scene.title.as_deref().unwrap_or("")
+            s.title.as_deref().unwrap_or("")
         ));
         failure_lines(s, &mut out);
     }
@@ -670,4 +714,126 @@ fn finish_table(
         stdout: String::new(),
         status: 0,
     })
+}
+
+fn track(args: TrackArgs) -> Result<Outcome> {
+    let n = args.masses.0.len();
+    for (what, list) in [
+        ("--positions", &args.positions),
+        ("--velocities", &args.velocities),
+    ] {
+        if list.0.len() != n {
+            anyhow::bail!(
+                "{what} has {} values for {n} masses: give one per body",
+                list.0.len()
+            );
+        }
+    }
+    let sizes = match &args.sizes {
+        Some(s) if s.0.len() != n => {
+            anyhow::bail!("--sizes has {} values for {n} masses", s.0.len())
+        }
+        Some(s) => s.0.clone(),
+        None => vec![0.0; n],
+    };
+    let e = args.restitution.value();
+    let track = Track {
+        bodies: (0..n)
+            .map(|i| Body {
+                m: args.masses.0[i],
+                x: args.positions.0[i],
+                v: args.velocities.0[i],
+                size: sizes[i],
+            })
+            .collect(),
+        left_wall: args.left_wall.map(|x| x.value()),
+        right_wall: args.right_wall.map(|x| x.value()),
+        e,
+        e_wall: args.wall_restitution.map_or(e, |r| r.value()),
+        gravity: args.gravity.value(),
+    };
+    track.check()?;
+    let limits = Limits {
+        until: args.until.map(|t| t.value()),
+        max_collisions: args.max_collisions,
+    };
+    let run = match &args.log {
+        None => track.run(limits, None),
+        Some(path) => run_logged(&track, limits, path, args.log_format)?,
+    };
+    let stdout = match args.format {
+        Format::Json => json::render(&TrackReport::new(&track, run)),
+        Format::Text => text::track(&track, &TrackReport::new(&track, run), limits),
+    };
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// Runs `track`, writing each collision to `path` ('-': stderr) as CSV or JSON Lines.
+fn run_logged(
+    track: &Track,
+    limits: Limits,
+    path: &std::path::Path,
+    format: Option<InputFormat>,
+) -> Result<Run> {
+    let jsonl = match format {
+        Some(f) => f == InputFormat::Jsonl,
+        None => path.extension().is_some_and(|e| e == "jsonl"),
+    };
+    let sink: Box<dyn Write> = if path == std::path::Path::new("-") {
+        Box::new(std::io::stderr())
+    } else {
+        Box::new(
+            std::fs::File::create(path)
+                .with_context(|| format!("cannot write {}", path.display()))?,
+        )
+    };
+    let out = std::io::BufWriter::new(sink);
+    enum Log {
+        Csv(Box<csv::Writer<std::io::BufWriter<Box<dyn Write>>>>),
+        Jsonl(std::io::BufWriter<Box<dyn Write>>),
+    }
+    let mut log = if jsonl {
+        Log::Jsonl(out)
+    } else {
+        Log::Csv(Box::new(csv::Writer::from_writer(out)))
+    };
+    let mut failed: Option<String> = None;
+    if let Log::Csv(w) = &mut log {
+        w.write_record(["n", "t", "who", "v_before", "v_after"])?;
+    }
+    let mut record = |ev: &Event| {
+        if failed.is_some() {
+            return;
+        }
+        let join = |v: &[f64]| {
+            v.iter()
+                .map(|x| ryu::Buffer::new().format(*x).to_string())
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        let result = match &mut log {
+            Log::Csv(w) => w
+                .write_record([
+                    ev.n.to_string(),
+                    ryu::Buffer::new().format(ev.t).to_string(),
+                    ev.who.clone(),
+                    join(&ev.before),
+                    join(&ev.after),
+                ])
+                .map_err(|e| e.to_string()),
+            Log::Jsonl(w) => serde_json::to_writer(&mut *w, ev)
+                .map_err(|e| e.to_string())
+                .and_then(|()| w.write_all(b"\n").map_err(|e| e.to_string())),
+        };
+        failed = result.err();
+    };
+    let run = track.run(limits, Some(&mut record));
+    if let Some(e) = failed {
+        anyhow::bail!("cannot write the log {}: {e}", path.display());
+    }
+    match &mut log {
+        Log::Csv(w) => w.flush()?,
+        Log::Jsonl(w) => w.flush()?,
+    }
+    Ok(run)
 }

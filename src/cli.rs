@@ -9,7 +9,7 @@ use crate::batch::InputFormat;
 use crate::case::{parse_inertia, parse_masses, parse_velocities};
 use crate::frame::Frame;
 use crate::inertia::{InertiaTensor, Mass};
-use crate::number::Number;
+use crate::number::{Number, NumberList};
 use crate::report::Section;
 use crate::restitution::Restitution;
 use crate::rows::{Column, RowFormat};
@@ -43,6 +43,70 @@ pub enum Command {
     Sweep(SweepArgs),
     /// A table of collisions read from CSV or JSON Lines, one row each
     Batch(BatchArgs),
+    /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
+    Track(TrackArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct TrackArgs {
+    /// Masses, left to right, e.g. 1,100
+    #[arg(short, long, value_name = "M1,M2,...", value_parser = clap::value_parser!(NumberList))]
+    pub masses: NumberList,
+
+    /// Positions of the bodies' centres, increasing left to right, e.g. 1,2
+    #[arg(short = 'x', long, value_name = "X1,X2,...", allow_hyphen_values = true,
+          value_parser = clap::value_parser!(NumberList))]
+    pub positions: NumberList,
+
+    /// Velocities, e.g. 0,-1
+    #[arg(short, long, value_name = "V1,V2,...", allow_hyphen_values = true,
+          value_parser = clap::value_parser!(NumberList))]
+    pub velocities: NumberList,
+
+    /// Sizes (lengths along the track) [default: 0, points]
+    #[arg(long, value_name = "S1,S2,...", value_parser = clap::value_parser!(NumberList))]
+    pub sizes: Option<NumberList>,
+
+    /// A wall (an immovable body) at this position, left of every body; the floor under gravity
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub left_wall: Option<Number>,
+
+    /// A wall at this position, right of every body
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub right_wall: Option<Number>,
+
+    /// Restitution between bodies: a number in [0, 1], 'elastic' or 'inelastic'
+    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
+          value_parser = clap::value_parser!(Restitution))]
+    pub restitution: Restitution,
+
+    /// Restitution at the walls [default: the same as between bodies]
+    #[arg(long, value_name = "E", value_parser = clap::value_parser!(Restitution))]
+    pub wall_restitution: Option<Restitution>,
+
+    /// Uniform acceleration toward the left (the left wall is a floor, positions are heights)
+    #[arg(long, value_name = "G", default_value = "0")]
+    pub gravity: Number,
+
+    /// Stop at this time and give the state then
+    #[arg(long, value_name = "T")]
+    pub until: Option<Number>,
+
+    /// Stop after this many collisions
+    #[arg(long, value_name = "N", default_value_t = crate::scene::DEFAULT_MAX_COLLISIONS)]
+    pub max_collisions: u64,
+
+    /// Write every collision (time, who, velocities before and after) to FILE ('-': stderr)
+    #[arg(long, value_name = "FILE")]
+    pub log: Option<PathBuf>,
+
+    /// Format of the log [default: jsonl for a .jsonl file, else csv]
+    #[arg(long, value_enum)]
+    pub log_format: Option<crate::batch::InputFormat>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
 }
 
 /// Output of a table of rows.
@@ -116,13 +180,13 @@ macro_rules! parse_with_from_str {
         impl clap::builder::ValueParserFactory for $t {
             type Parser = fn(&str) -> Result<$t, String>;
             fn value_parser() -> Self::Parser {
-                |s| s.parse()
+                |s| s.parse::<$t>().map_err(|e| e.to_string())
             }
         }
     )*};
 }
 
-parse_with_from_str!(Column, Vary, Shard);
+parse_with_from_str!(Column, Vary, Shard, NumberList, Number);
 
 #[derive(Args, Debug)]
 pub struct FramesArgs {

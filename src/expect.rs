@@ -17,6 +17,8 @@ pub const DEFAULT_REL: f64 = 1e-12;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Expected {
     Number(f64),
+    /// A word, compared exactly (`"stop.reason" = "zeno"`).
+    Text(String),
     Array(Vec<Expected>),
 }
 
@@ -58,16 +60,18 @@ pub struct Check {
     pub tolerance: Tolerance,
 }
 
-const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, momentum.*, forms.*, energy.*, ellipses.*, products.*";
+const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, momentum.*, forms.*, \
+                         energy.*, ellipses.*, products.*, diagnostics.*";
 
 fn expected_of(v: toml::Value) -> Result<Expected, String> {
     match v {
         toml::Value::Integer(i) => Ok(Expected::Number(i as f64)),
         toml::Value::Float(f) if f.is_finite() => Ok(Expected::Number(f)),
-        toml::Value::String(s) => s
-            .parse::<Number>()
-            .map(|n| Expected::Number(n.value()))
-            .map_err(|e| e.to_string()),
+        // A string is a number ("4/3") if it reads as one, else a word compared exactly.
+        toml::Value::String(s) => Ok(match s.parse::<Number>() {
+            Ok(n) => Expected::Number(n.value()),
+            Err(_) => Expected::Text(s),
+        }),
         toml::Value::Array(a) => a
             .into_iter()
             .map(expected_of)
@@ -93,14 +97,6 @@ impl Expectation {
     /// From a TOML value: a number, a string number ("4/3"), an array, or a table
     /// `{ value = ..., abs = ..., rel = ... }`.
     pub fn from_toml(key: &str, v: toml::Value) -> Result<Expectation, String> {
-        let top = key.split('.').next().unwrap_or_default();
-        if Section::of_json_key(top).is_none()
-            && !["restitution", "inertia", "frame"].contains(&top)
-        {
-            return Err(format!(
-                "unknown quantity '{top}': expected one of {TOP_LEVEL}"
-            ));
-        }
         let (expected, tolerance) = match v {
             toml::Value::Table(mut t) => {
                 let value = t
@@ -129,6 +125,19 @@ impl Expectation {
             expected,
             tolerance,
         })
+    }
+
+    /// Checks that `key` names a quantity of a two-body report.
+    pub fn check_report_key(key: &str) -> Result<(), String> {
+        let top = key.split('.').next().unwrap_or_default();
+        if Section::of_json_key(top).is_none()
+            && !["restitution", "inertia", "frame"].contains(&top)
+        {
+            return Err(format!(
+                "unknown quantity '{top}': expected one of {TOP_LEVEL}"
+            ));
+        }
+        Ok(())
     }
 
     pub fn at_line(mut self, line: usize) -> Expectation {
@@ -173,6 +182,7 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
         (Expected::Number(x), Json::String(y)) => y
             .parse::<Number>()
             .is_ok_and(|y| (y.value() - x).abs() <= tol.abs + tol.rel * x.abs()),
+        (Expected::Text(x), Json::String(y)) => x == y,
         (Expected::Array(xs), Json::Array(ys)) => {
             xs.len() == ys.len() && xs.iter().zip(ys).all(|(x, y)| matches(x, y, tol))
         }
@@ -183,6 +193,7 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
 fn show_expected(e: &Expected) -> String {
     match e {
         Expected::Number(x) => num(*x),
+        Expected::Text(t) => t.clone(),
         Expected::Array(a) => {
             format!(
                 "[{}]",
@@ -232,10 +243,24 @@ mod tests {
 
     #[test]
     fn wrong_keys_are_errors() {
+        let e = Expectation::check_report_key("energyy.crunch").unwrap_err();
+        assert!(e.contains("unknown quantity 'energyy'"), "{e}");
+        assert!(Expectation::check_report_key("frame.w").is_ok());
+        // Words are compared exactly.
+        let report = serde_json::json!({"stop": {"reason": "zeno"}});
         assert!(
-            exp("energyy.crunch", "1")
-                .unwrap_err()
-                .contains("unknown quantity 'energyy'")
+            exp("stop.reason", "\"zeno\"")
+                .unwrap()
+                .check(&report)
+                .unwrap()
+                .passed
+        );
+        assert!(
+            !exp("stop.reason", "\"done\"")
+                .unwrap()
+                .check(&report)
+                .unwrap()
+                .passed
         );
         assert!(
             exp("fin", "{ value = 1, tol = 2 }")

@@ -31,3 +31,4 @@ pub mod rows;
 pub mod scene;
 pub mod solver;
 pub mod sweep;
+pub mod track;

@@ -259,6 +259,24 @@ pub fn split_fields<'a, const N: usize>(text: &'a str, what: &str) -> Result<[&'
     })
 }
 
+/// A comma-separated list of numbers (`-x 1,2.5,4` for a track), as binary64 values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NumberList(pub Vec<f64>);
+
+impl FromStr for NumberList {
+    type Err = String;
+    fn from_str(s: &str) -> Result<NumberList, String> {
+        s.split(',')
+            .map(|t| {
+                t.parse::<Number>()
+                    .map(|n| n.value())
+                    .map_err(|e| e.to_string())
+            })
+            .collect::<Result<Vec<f64>, String>>()
+            .map(NumberList)
+    }
+}
+
 /// Serde support: a number may be written as a TOML/JSON integer, float or string ("2/3").
 /// A float is taken as the shortest decimal that rounds to it, which is what was typed.
 impl<'de> serde::Deserialize<'de> for Number {

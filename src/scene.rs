@@ -31,6 +31,7 @@ use crate::report::{Section, Sections};
 use crate::restitution::Restitution;
 use crate::rows::{Column, RowFormat};
 use crate::sweep::Grid;
+use crate::track::{Body, Limits, Track};
 
 /// The file as written. Field names are the scene format.
 #[derive(Deserialize)]
@@ -87,6 +88,14 @@ pub struct Scene {
     pub expect: Vec<Expectation>,
 }
 
+/// A scene file of either kind.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)] // one per file, loaded once
+pub enum AnyScene {
+    Case(Scene),
+    Track(TrackScene),
+}
+
 /// A problem in a scene file, located.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneError {
@@ -126,6 +135,20 @@ impl Scene {
             message: format!("cannot read scene file: {e}"),
         })?;
         Scene::parse(path, &text)
+    }
+
+    /// Reads a scene of either kind: a two-body case (or `[sweep]`), or a `[track]`.
+    pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+            path: path.to_path_buf(),
+            at: None,
+            message: format!("cannot read scene file: {e}"),
+        })?;
+        if is_track(&text) {
+            TrackScene::parse(path, &text).map(AnyScene::Track)
+        } else {
+            Scene::parse(path, &text).map(AnyScene::Case)
+        }
     }
 
     /// Parses scene text; `path` names it in errors.
@@ -208,7 +231,8 @@ impl Scene {
         let mut expect = Vec::new();
         for (key, value) in file.expect.unwrap_or_default() {
             let span = value.span();
-            let e = Expectation::from_toml(&key, value.into_inner())
+            let e = Expectation::check_report_key(&key)
+                .and_then(|()| Expectation::from_toml(&key, value.into_inner()))
                 .map_err(|m| err(Some(span.clone()), format!("[expect] \"{key}\": {m}")))?;
             expect.push(e.at_line(line_col(text, span.start).0));
         }
@@ -331,5 +355,148 @@ mod tests {
     fn line_and_column() {
         assert_eq!(line_col("ab\ncd", 0), (1, 1));
         assert_eq!(line_col("ab\ncd", 4), (2, 2));
+    }
+}
+
+/// `[track]` in a scene: bodies on a track (`collide track`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TrackFile {
+    title: Option<String>,
+    source: Option<String>,
+    track: TrackTable,
+    expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TrackTable {
+    masses: Spanned<Vec<Number>>,
+    positions: Spanned<Vec<Number>>,
+    velocities: Spanned<Vec<Number>>,
+    sizes: Option<Spanned<Vec<Number>>>,
+    left_wall: Option<Number>,
+    right_wall: Option<Number>,
+    restitution: Option<Restitution>,
+    wall_restitution: Option<Restitution>,
+    gravity: Option<Number>,
+    until: Option<Number>,
+    max_collisions: Option<u64>,
+}
+
+/// A track scene, validated.
+#[derive(Clone, Debug)]
+pub struct TrackScene {
+    pub path: PathBuf,
+    pub title: Option<String>,
+    pub source: Option<String>,
+    pub track: Track,
+    pub limits: Limits,
+    pub expect: Vec<Expectation>,
+}
+
+/// Top-level keys of `collide track --format json`.
+pub const TRACK_KEYS: [&str; 11] = [
+    "collisions",
+    "pair_collisions",
+    "wall_collisions",
+    "simultaneous",
+    "time",
+    "x",
+    "v",
+    "stop",
+    "momentum",
+    "energy",
+    "pi",
+];
+
+/// Default cap on collisions (`--max-collisions`): enough for pi billiards with N = 8.
+pub const DEFAULT_MAX_COLLISIONS: u64 = 1_000_000_000;
+
+/// Whether scene text holds a `[track]` table.
+pub fn is_track(text: &str) -> bool {
+    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("track"))
+}
+
+impl TrackScene {
+    pub fn parse(path: &Path, text: &str) -> Result<TrackScene, SceneError> {
+        let err = |span: Option<Range<usize>>, message: String| SceneError {
+            path: path.to_path_buf(),
+            at: span.map(|s| line_col(text, s.start)),
+            message,
+        };
+        let file: TrackFile =
+            toml::from_str(text).map_err(|e| err(e.span(), e.message().trim().to_string()))?;
+        let t = file.track;
+        let n = t.masses.get_ref().len();
+        let list = |l: &Spanned<Vec<Number>>, what: &str| -> Result<Vec<f64>, SceneError> {
+            if l.get_ref().len() != n {
+                return Err(err(
+                    Some(l.span()),
+                    format!(
+                        "[track] {what}: {} values for {n} bodies",
+                        l.get_ref().len()
+                    ),
+                ));
+            }
+            Ok(l.get_ref().iter().map(Number::value).collect())
+        };
+        let (m, x, v) = (
+            list(&t.masses, "masses")?,
+            list(&t.positions, "positions")?,
+            list(&t.velocities, "velocities")?,
+        );
+        let sizes = match &t.sizes {
+            Some(s) => list(s, "sizes")?,
+            None => vec![0.0; n],
+        };
+        let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
+        let track = Track {
+            bodies: (0..n)
+                .map(|i| Body {
+                    m: m[i],
+                    x: x[i],
+                    v: v[i],
+                    size: sizes[i],
+                })
+                .collect(),
+            left_wall: t.left_wall.map(|n| n.value()),
+            right_wall: t.right_wall.map(|n| n.value()),
+            e,
+            e_wall: t.wall_restitution.map_or(e, |r| r.value()),
+            gravity: t.gravity.map_or(0.0, |g| g.value()),
+        };
+        track
+            .check()
+            .map_err(|e| err(Some(t.masses.span()), format!("[track] {e}")))?;
+        let limits = Limits {
+            until: t.until.map(|u| u.value()),
+            max_collisions: t.max_collisions.unwrap_or(DEFAULT_MAX_COLLISIONS),
+        };
+        let mut expect = Vec::new();
+        for (key, value) in file.expect.unwrap_or_default() {
+            let span = value.span();
+            let top = key.split('.').next().unwrap_or_default();
+            let known = if TRACK_KEYS.contains(&top) {
+                Ok(())
+            } else {
+                Err(format!(
+                    "unknown quantity '{top}': expected one of {}",
+                    TRACK_KEYS.join(", ")
+                ))
+            };
+            let e = known
+                .and_then(|()| Expectation::from_toml(&key, value.into_inner()))
+                .map_err(|m| err(Some(span.clone()), format!("[expect] \"{key}\": {m}")))?;
+            expect.push(e.at_line(line_col(text, span.start).0));
+        }
+        Ok(TrackScene {
+            path: path.to_path_buf(),
+            title: file.title,
+            source: file.source,
+            track,
+            limits,
+            expect,
+        })
     }
 }
