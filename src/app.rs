@@ -8,7 +8,7 @@ use crate::batch;
 use crate::batch::InputFormat;
 use crate::case::Case;
 use crate::cli::{
-    AccuracyArgs, BatchArgs, CaseArgs, Command, Format, FramesArgs, SceneArgs, SolveArgs,
+    AccuracyArgs, BatchArgs, CaseArgs, Command, Format, FramesArgs, PlotArgs, SceneArgs, SolveArgs,
     SweepArgs, TableArgs, TrackArgs,
 };
 use crate::exact::ExactCollision;
@@ -19,6 +19,7 @@ use crate::frame::{
 };
 use crate::inertia::InertiaTensor;
 use crate::number::Number;
+use crate::plot;
 use crate::quantity::Exact;
 use crate::report::{Report, Sections, json, text};
 use crate::rows::{
@@ -47,6 +48,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Sweep(args) => sweep(args),
         Command::Batch(args) => batch(args),
         Command::Track(args) => track(args),
+        Command::Plot(args) => plot(args),
     }
 }
 
@@ -65,9 +67,78 @@ fn solve(args: SolveArgs) -> Result<Outcome> {
     let case = args.case.into_case()?;
     let sections = Sections::new(args.show);
     let report = solve_case(&case, &args.frame, args.exact, &sections, args.reverse)?;
-    let stdout = match args.format {
+    let mut stdout = match args.format {
         Format::Text => report.text(&case, &sections),
         Format::Json => json::render(&report.json()),
+    };
+    if let Some(target) = &args.plot {
+        stdout.push_str(&draw(
+            &case,
+            &args.frame,
+            plot::Kind::Velocity,
+            false,
+            target,
+        )?);
+    }
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// Draws to `target` (an SVG file, or `term`); returns what to print (the terminal picture, or
+/// nothing).
+fn draw(
+    case: &Case,
+    frame: &Frame,
+    kind: plot::Kind,
+    frames: bool,
+    target: &std::path::Path,
+) -> Result<String> {
+    if target == std::path::Path::new("term") {
+        if kind != plot::Kind::Velocity {
+            anyhow::bail!(
+                "the terminal plot draws the velocity diagram; use an SVG file for --kind {kind:?}"
+            );
+        }
+        return Ok(format!(
+            "\n{}",
+            plot::term::render(&plot::Picture::new(case, frame, frames), terminal_width())
+        ));
+    }
+    let svg = plot::svg(case, frame, kind, frames);
+    write_atomically(target, svg.as_bytes())?;
+    Ok(String::new())
+}
+
+/// The terminal's width: `COLUMNS`, else 80.
+fn terminal_width() -> usize {
+    std::env::var("COLUMNS")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(80)
+}
+
+/// Writes a whole file through the same atomic output as tables.
+fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
+    let mut out =
+        Output::open(Some(path)).with_context(|| format!("cannot write {}", path.display()))?;
+    out.write_all(bytes)
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    out.commit()
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}
+
+fn plot(args: PlotArgs) -> Result<Outcome> {
+    let case = args.case.into_case()?;
+    let stdout = match (&args.output, args.term) {
+        (_, true) => draw(
+            &case,
+            &args.frame,
+            args.kind,
+            args.frames,
+            std::path::Path::new("term"),
+        )?,
+        (Some(path), false) => draw(&case, &args.frame, args.kind, args.frames, path)?,
+        (None, false) => plot::svg(&case, &args.frame, args.kind, args.frames),
     };
     Ok(Outcome { stdout, status: 0 })
 }
@@ -184,7 +255,11 @@ fn solve_scene(scene: Scene) -> Result<Solved> {
     let sections = scene.sections_needed();
     let report = solve_case(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.path.display()))?;
-    let text = report.text(&scene.case, &scene.show);
+    let mut text = report.text(&scene.case, &scene.show);
+    if let Some(p) = &scene.plot {
+        draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
+        text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
+    }
     Solved::check(
         &scene.path,
         (scene.title, scene.source),

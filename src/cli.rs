@@ -45,6 +45,35 @@ pub enum Command {
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
     Track(TrackArgs),
+    /// Draw the collision: the velocity-velocity diagram, or Newton's or Minkowski's space-time
+    Plot(PlotArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct PlotArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+
+    /// Which picture
+    #[arg(long, value_enum, default_value_t = crate::plot::Kind::Velocity)]
+    pub kind: crate::plot::Kind,
+
+    /// The frame to draw in: lab, com, rest-in:1, ..., or an observer velocity
+    #[arg(long, default_value = "lab", allow_hyphen_values = true,
+          value_parser = clap::value_parser!(Frame))]
+    pub frame: Frame,
+
+    /// Overlay the standard frames as 45-degree-shifted copies (lecture Fig. 2.5)
+    #[arg(long)]
+    pub frames: bool,
+
+    /// Write the SVG to FILE [default: stdout]
+    #[arg(short, long, value_name = "FILE.svg", conflicts_with = "term")]
+    pub output: Option<PathBuf>,
+
+    /// Draw in the terminal (Unicode braille) instead of SVG
+    #[arg(long)]
+    pub term: bool,
 }
 
 #[derive(Args, Debug)]
@@ -298,6 +327,10 @@ pub struct SolveArgs {
     /// Also print the time-reversed collision (IN' = -FIN, FIN' = -IN)
     #[arg(long)]
     pub reverse: bool,
+
+    /// Also draw the velocity diagram: to FILE.svg, or 'term' for the terminal
+    #[arg(long, value_name = "FILE.svg|term")]
+    pub plot: Option<PathBuf>,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]

@@ -24,6 +24,7 @@ pub mod expect;
 pub mod frame;
 pub mod inertia;
 pub mod number;
+pub mod plot;
 pub mod quantity;
 pub mod report;
 pub mod restitution;

@@ -47,7 +47,26 @@ struct SceneFile {
     exact: Option<bool>,
     frame: Option<Frame>,
     sweep: Option<Spanned<SweepTable>>,
+    plot: Option<PlotTable>,
     expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
+}
+
+/// `[plot]`: draw the scene's case to an SVG file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlotTable {
+    /// The SVG file, relative to the directory `collide` runs in.
+    pub output: PathBuf,
+    /// velocity (default), newton or minkowski.
+    #[serde(default = "velocity")]
+    pub kind: crate::plot::Kind,
+    /// Overlay the standard frames (lecture Fig. 2.5).
+    #[serde(default)]
+    pub frames: bool,
+}
+
+fn velocity() -> crate::plot::Kind {
+    crate::plot::Kind::Velocity
 }
 
 /// `[sweep]`: the scene's case is the base of a table.
@@ -85,6 +104,8 @@ pub struct Scene {
     pub frame: Frame,
     /// A table over a grid of parameters instead of a single case (`[sweep]`).
     pub sweep: Option<SceneSweep>,
+    /// A picture to draw (`[plot]`).
+    pub plot: Option<PlotTable>,
     pub expect: Vec<Expectation>,
 }
 
@@ -245,6 +266,7 @@ impl Scene {
             exact: file.exact.unwrap_or(false),
             frame: file.frame.unwrap_or(Frame::Lab),
             sweep,
+            plot: file.plot,
             expect,
         })
     }
