@@ -124,29 +124,10 @@ impl FromStr for Frame {
 /// Serde: a frame word (`"com"`) or an observer velocity (`2.5`, `"-4"`).
 impl<'de> serde::Deserialize<'de> for Frame {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Frame, D::Error> {
-        struct V;
-        impl serde::de::Visitor<'_> for V {
-            type Value = Frame;
-            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                write!(
-                    f,
-                    "a frame (\"lab\", \"com\", \"rest-in:1\", ...) or an observer velocity"
-                )
-            }
-            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Frame, E> {
-                v.to_string().parse().map_err(E::custom)
-            }
-            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Frame, E> {
-                v.to_string().parse().map_err(E::custom)
-            }
-            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Frame, E> {
-                format!("{v:?}").parse().map_err(E::custom)
-            }
-            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Frame, E> {
-                v.parse().map_err(E::custom)
-            }
-        }
-        d.deserialize_any(V)
+        crate::number::deserialize_parsed(
+            d,
+            "a frame (\"lab\", \"com\", \"rest-in:1\", ...) or an observer velocity",
+        )
     }
 }
 

@@ -87,26 +87,7 @@ impl fmt::Display for Restitution {
 
 impl<'de> serde::Deserialize<'de> for Restitution {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Restitution, D::Error> {
-        struct V;
-        impl serde::de::Visitor<'_> for V {
-            type Value = Restitution;
-            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                write!(f, "a number in [0, 1] or \"elastic\" / \"inelastic\"")
-            }
-            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Restitution, E> {
-                v.to_string().parse().map_err(E::custom)
-            }
-            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Restitution, E> {
-                v.to_string().parse().map_err(E::custom)
-            }
-            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Restitution, E> {
-                format!("{v:?}").parse().map_err(E::custom)
-            }
-            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Restitution, E> {
-                v.parse().map_err(E::custom)
-            }
-        }
-        d.deserialize_any(V)
+        crate::number::deserialize_parsed(d, "a number in [0, 1] or \"elastic\" / \"inelastic\"")
     }
 }
 

@@ -181,7 +181,9 @@ mod tests {
     #[test]
     fn ticks_are_round() {
         assert_eq!(ticks(0.0, 100.0, 5), [0.0, 20.0, 40.0, 60.0, 80.0, 100.0]);
-        assert_eq!(ticks(-7.0, 7.0, 5), [-6.0, -4.0, -2.0, 0.0, 2.0, 4.0, 6.0]);
+        // Span 14 in about 5 steps: 2.8, rounded up to the nice step 5.
+        assert_eq!(ticks(-7.0, 7.0, 5), [-5.0, 0.0, 5.0]);
+        assert_eq!(ticks(-7.0, 7.0, 7), [-6.0, -4.0, -2.0, 0.0, 2.0, 4.0, 6.0]);
     }
 
     #[test]

@@ -72,19 +72,23 @@ impl Block {
     }
 }
 
-/// Renders the report of `case` as text.
-pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
-    let mut out = String::new();
+/// `M = diag(4, 1)   V_IN = (60, 10)   e = 1 (elastic: ka-bong)`, a line.
+fn header(case: &Case) -> String {
     let e = case.restitution();
-    let _ = writeln!(
-        out,
-        "M = {}   V_IN = ({}, {})   e = {} ({})",
+    format!(
+        "M = {}   V_IN = ({}, {})   e = {} ({})\n",
         case.inertia().describe(),
         case.velocities[0],
         case.velocities[1],
         e,
         e.kind()
-    );
+    )
+}
+
+/// Renders the report of `case` as text.
+pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
+    let mut out = String::new();
+    out.push_str(&header(case));
     if let Some(f) = &report.frame {
         let _ = writeln!(
             out,
@@ -155,15 +159,7 @@ fn reverse<N: Scalar>(case: &Case, r: &Reverse<N>) -> Block {
 pub fn frames<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
     let e = case.restitution();
     let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "M = {}   V_IN = ({}, {})   e = {} ({})",
-        case.inertia().describe(),
-        case.velocities[0],
-        case.velocities[1],
-        e,
-        e.kind()
-    );
+    out.push_str(&header(case));
     let heading = "Frames (an observer moving at w sees every velocity shifted by -w)";
     let mut b = Block::new(heading);
     let mut header = vec!["frame", "w", "IN", "COM"];
