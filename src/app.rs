@@ -21,7 +21,7 @@ use crate::inertia::InertiaTensor;
 use crate::number::Number;
 use crate::plot;
 use crate::quantity::Exact;
-use crate::report::{Report, Sections, json, text};
+use crate::report::{Report, Section, Sections, json, text};
 use crate::rows::{
     CHUNK_ROWS, Column, Output, Progress, RowCase, RowWriter, RowsError, Summary, chunk,
     write_chunks,
@@ -129,6 +129,8 @@ fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
 
 fn plot(args: PlotArgs) -> Result<Outcome> {
     let case = args.case.into_case()?;
+    let needed = Sections::new([Section::Vectors, Section::Momentum, Section::Energy]);
+    Report::build(&Observed::new(&case.collision, &args.frame), &needed)?;
     let stdout = match (&args.output, args.term) {
         (_, true) => draw(
             &case,
@@ -271,8 +273,15 @@ fn solve_scene(scene: Scene) -> Result<Solved> {
 
 fn solve_track_scene(scene: TrackScene) -> Result<Solved> {
     let report = TrackReport::new(&scene.track, scene.track.run(scene.limits, None));
-    let text = text::track(&scene.track, &report, scene.limits);
     let json = serde_json::to_value(&report)?;
+    if let Some(quantity) = crate::report::first_unrepresentable(&json) {
+        anyhow::bail!(
+            "{}: {}",
+            scene.path.display(),
+            track_unrepresentable(&quantity)
+        );
+    }
+    let text = text::track(&scene.track, &report, scene.limits);
     Solved::check(
         &scene.path,
         (scene.title, scene.source),
@@ -836,11 +845,22 @@ fn track(args: TrackArgs) -> Result<Outcome> {
         None => track.run(limits, None),
         Some(path) => run_logged(&track, limits, path, args.log_format)?,
     };
+    let report = TrackReport::new(&track, run);
+    if let Some(quantity) = crate::report::first_unrepresentable(&serde_json::to_value(&report)?) {
+        anyhow::bail!("{}", track_unrepresentable(&quantity));
+    }
     let stdout = match args.format {
-        Format::Json => json::render(&TrackReport::new(&track, run)),
-        Format::Text => text::track(&track, &TrackReport::new(&track, run), limits),
+        Format::Json => json::render(&report),
+        Format::Text => text::track(&track, &report, limits),
     };
     Ok(Outcome { stdout, status: 0 })
+}
+
+fn track_unrepresentable(quantity: &str) -> String {
+    format!(
+        "{quantity} is not representable in binary64 (its magnitude is outside 2.2e-308 to 1.8e308): \
+         rescale the units (e.g. tons and km/s instead of kg and m/s)"
+    )
 }
 
 /// Runs `track`, writing each collision to `path` ('-': stderr) as CSV or JSON Lines.

@@ -242,3 +242,21 @@ fn solve_and_scenes_write_svg_files() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn hostile_pictures_never_draw_nan_or_inf() {
+    // No motion at all: a unit box, not a zero-size one.
+    for kind in ["velocity", "newton", "minkowski"] {
+        let text = svg(&["-m", "1,1", "-v", "0,0", "--kind", kind]);
+        Picture::new(text.clone());
+        assert!(!text.contains("NaN") && !text.contains("inf"), "{kind}");
+    }
+    // Energies beyond binary64 are refused by name, not drawn.
+    let out = collide()
+        .args(["plot", "-m", "1,1", "-v", "1e200,-1e200"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("energy.in is not representable"));
+}

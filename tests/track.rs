@@ -408,3 +408,28 @@ fn caps_and_bad_layouts() {
         );
     }
 }
+
+#[test]
+fn unrepresentable_bookkeeping_is_refused_by_name() {
+    let out = collide()
+        .args([
+            "track",
+            "-m",
+            "1e300,1e300",
+            "-x",
+            "1,2",
+            "-v",
+            "1e200,-1e200",
+            "--left-wall",
+            "0",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("momentum.start is not representable") && err.contains("rescale"),
+        "{err}"
+    );
+}

@@ -16,11 +16,9 @@ const H: f64 = 420.0;
 pub fn svg(p: &Picture, minkowski: bool) -> String {
     // One unit of time each side of the event.
     let v = [p.v_in.0, p.v_in.1, p.v_fin.0, p.v_fin.1];
-    let reach = v
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v.abs()))
-        .max(f64::MIN_POSITIVE)
-        * 1.1;
+    // No motion at all: a unit range.
+    let fastest = v.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let reach = if fastest > 0.0 { fastest * 1.1 } else { 1.0 };
     let (t_range, x_range) = ((-1.1, 1.1), (-reach, reach));
     // Screen axes: across and up.
     let (across, up) = if minkowski {

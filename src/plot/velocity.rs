@@ -57,7 +57,13 @@ impl Map {
         {
             (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
         }
-        let span = (x1 - x0).max(y1 - y0).max(f64::MIN_POSITIVE) * 1.12;
+        // Everything at the origin (no motion at all): a unit box.
+        let span = (x1 - x0).max(y1 - y0);
+        let span = if span > 0.0 && span.is_finite() {
+            span * 1.12
+        } else {
+            2.0
+        };
         let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
         let x = (cx - span / 2.0, cx + span / 2.0);
         let y = (cy - span / 2.0, cy + span / 2.0);

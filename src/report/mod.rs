@@ -401,26 +401,7 @@ impl<N: Scalar> Report<N> {
     /// Every number in the report must be a real result: an overflow is reported by name.
     fn check_representable(&self) -> Result<(), Unrepresentable> {
         let value = serde_json::to_value(self).expect("a report serializes");
-        // serde_json turns non-finite floats into null.
-        fn find_null(v: &serde_json::Value, path: &str) -> Option<String> {
-            match v {
-                serde_json::Value::Null => Some(path.to_string()),
-                serde_json::Value::Array(a) => a
-                    .iter()
-                    .enumerate()
-                    .find_map(|(i, x)| find_null(x, &format!("{path}[{i}]"))),
-                serde_json::Value::Object(o) => o.iter().find_map(|(k, x)| {
-                    let p = if path.is_empty() {
-                        k.clone()
-                    } else {
-                        format!("{path}.{k}")
-                    };
-                    find_null(x, &p)
-                }),
-                _ => None,
-            }
-        }
-        if let Some(quantity) = find_null(&value, "") {
+        if let Some(quantity) = first_unrepresentable(&value) {
             return Err(Unrepresentable { quantity });
         }
         let n = &self.notes;
@@ -431,6 +412,30 @@ impl<N: Scalar> Report<N> {
         }
         Ok(())
     }
+}
+
+/// The path of the first number in `v` that is not a real result (serde_json writes a non-finite
+/// float as null), as `energy.in` or `x[1]`.
+pub fn first_unrepresentable(v: &serde_json::Value) -> Option<String> {
+    fn find(v: &serde_json::Value, path: &str) -> Option<String> {
+        match v {
+            serde_json::Value::Null => Some(path.to_string()),
+            serde_json::Value::Array(a) => a
+                .iter()
+                .enumerate()
+                .find_map(|(i, x)| find(x, &format!("{path}[{i}]"))),
+            serde_json::Value::Object(o) => o.iter().find_map(|(k, x)| {
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                find(x, &p)
+            }),
+            _ => None,
+        }
+    }
+    find(v, "")
 }
 
 /// Median time of one solve of `c`, over batches filling about a millisecond.
