@@ -108,6 +108,28 @@ fn draw(
     Ok(String::new())
 }
 
+/// A picture needs the vectors, energies and ellipse radii, and a data range binary64 can map:
+/// refuse by name what it cannot hold.
+fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
+    let needed = Sections::new([
+        Section::Vectors,
+        Section::Momentum,
+        Section::Energy,
+        Section::Ellipses,
+    ]);
+    Report::build(&Observed::new(&case.collision, frame), &needed)?;
+    let p = plot::Picture::new(case, frame, false);
+    let fastest = [p.v_in.0, p.v_in.1, p.v_fin.0, p.v_fin.1]
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    if !plot::velocity::Map::fit(&p, (0.0, 0.0), 1.0).is_finite() || fastest > f64::MAX / 8.0 {
+        anyhow::bail!(
+            "the picture's range is beyond binary64 (velocities and radii span more than 1e308): rescale the units"
+        );
+    }
+    Ok(())
+}
+
 /// The terminal's width: `COLUMNS`, else 80.
 fn terminal_width() -> usize {
     std::env::var("COLUMNS")
@@ -129,8 +151,7 @@ fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
 
 fn plot(args: PlotArgs) -> Result<Outcome> {
     let case = args.case.into_case()?;
-    let needed = Sections::new([Section::Vectors, Section::Momentum, Section::Energy]);
-    Report::build(&Observed::new(&case.collision, &args.frame), &needed)?;
+    check_drawable(&case, &args.frame)?;
     let stdout = match (&args.output, args.term) {
         (_, true) => draw(
             &case,

@@ -20,16 +20,21 @@ pub struct Ellipse<N = f64> {
     pub approx: bool,
 }
 
+/// `sqrt(2 KE)` without overflow; a radius is `sqrt(2 KE) / sqrt(lambda)`.
+pub fn root_2ke(ke: f64) -> f64 {
+    if ke < f64::MAX / 2.0 {
+        (2.0 * ke).sqrt()
+    } else {
+        std::f64::consts::SQRT_2 * ke.sqrt()
+    }
+}
+
 impl Ellipse<f64> {
     /// The ellipse of energy `ke`; `axes` are `M`'s principal axes for a general tensor, `None`
     /// for a diagonal one. Radii are `sqrt(2 KE) / sqrt(lambda)`, which cannot overflow.
     pub fn new(m: &InertiaTensor, ke: f64, axes: Option<&[(f64, Vector2<f64>); 2]>) -> Ellipse {
-        let root_2ke = if ke < f64::MAX / 2.0 {
-            (2.0 * ke).sqrt()
-        } else {
-            std::f64::consts::SQRT_2 * ke.sqrt()
-        };
-        let r = |lambda: f64| root_2ke / lambda.sqrt();
+        let root = root_2ke(ke);
+        let r = |lambda: f64| root / lambda.sqrt();
         match axes {
             None => {
                 let d = m.matrix();

@@ -230,6 +230,15 @@ impl Track {
         if self.gravity > 0.0 && self.left_wall.is_none() {
             return bad("gravity pulls toward the left: give a --left-wall as the floor".into());
         }
+        let (x, v): (Vec<f64>, Vec<f64>) = self.bodies.iter().map(|b| (b.x, b.v)).unzip();
+        let energy = self.energy(&x, &v);
+        if !energy.is_finite() || !self.momentum(&v).is_finite() {
+            return bad(
+                "the track's energy or momentum is beyond binary64 (above 1.8e308): rescale the \
+                 units (e.g. tons and km/s instead of kg and m/s)"
+                    .into(),
+            );
+        }
         Ok(())
     }
 
@@ -454,13 +463,17 @@ impl<'a> Sim<'a> {
                 if g == 0.0 {
                     (v < -self.tol).then(|| now + h / -v)
                 } else {
-                    let root = (v * v + 2.0 * g * h).sqrt();
+                    // sqrt(v^2 + 2 g h) without overflow.
+                    let root = v.hypot((std::f64::consts::SQRT_2 * g.sqrt()) * h.sqrt());
                     let s = if v <= 0.0 {
                         2.0 * h / (root - v)
                     } else {
                         (v + root) / g
                     };
-                    let s = if s.is_finite() { s } else { 0.0 };
+                    // A return too far away for binary64 (tiny gravity) is no event.
+                    if !s.is_finite() {
+                        return None;
+                    }
                     // Under gravity a body always comes back down, unless it rests on the floor
                     // (no height, no speed).
                     let resting = h <= 0.0 && v.abs() <= self.tol;
@@ -475,9 +488,9 @@ impl<'a> Sim<'a> {
                 if g == 0.0 {
                     (v > self.tol).then(|| now + h / v)
                 } else if v > self.tol {
-                    // h - v s + g/2 s^2 = 0: reached only if v^2 >= 2 g h.
-                    let disc = v * v - 2.0 * g * h;
-                    (disc >= 0.0).then(|| now + 2.0 * h / (v + disc.sqrt()))
+                    // h - v s + g/2 s^2 = 0: reached only if v >= sqrt(2 g h) (no overflow).
+                    let q = (std::f64::consts::SQRT_2 * g.sqrt()) * h.sqrt();
+                    (v >= q).then(|| now + 2.0 * h / (v + ((v - q) * (v + q)).sqrt()))
                 } else {
                     None
                 }
@@ -534,6 +547,12 @@ impl<'a> Sim<'a> {
                         n - 1
                     };
                     self.advance(i, t);
+                    // At contact: exactly at the wall (rounding must not put it through).
+                    let half = self.track.bodies[i].size / 2.0;
+                    self.x[i] = match contact {
+                        Contact::LeftWall => self.track.left_wall.map_or(self.x[i], |w| w + half),
+                        _ => self.track.right_wall.map_or(self.x[i], |w| w - half),
+                    };
                     let before = vec![self.v[i]];
                     self.v[i] *= -self.track.e_wall;
                     walls += 1;

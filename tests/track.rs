@@ -188,10 +188,17 @@ fn bouncing_ball_stops_at_the_zeno_time() {
         .unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(
-        text.contains("infinitely many collisions in finite time")
-            && text.contains("accumulate at t = 3"),
+        text.contains("infinitely many collisions in finite time"),
         "{text}"
     );
+    let at: f64 = text
+        .split("accumulate at t = ")
+        .nth(1)
+        .and_then(|r| r.split(';').next())
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((at - 3.0).abs() < 1e-9, "{text}");
 }
 
 #[test]
@@ -429,7 +436,8 @@ fn unrepresentable_bookkeeping_is_refused_by_name() {
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     assert!(
-        err.contains("momentum.start is not representable") && err.contains("rescale"),
+        err.contains("energy or momentum is beyond binary64") && err.contains("rescale"),
         "{err}"
     );
+    assert!(!err.contains("inf"), "{err}");
 }

@@ -105,10 +105,14 @@ impl Picture {
             let [(l1, q1), (l2, q2)] = c.inertia.principal_axes();
             [(l1, (q1.x, q1.y)), (l2, (q2.x, q2.y))]
         };
-        let shape = |ke: f64| EllipseShape {
-            ke,
-            radii: ((2.0 * ke / axes[0].0).sqrt(), (2.0 * ke / axes[1].0).sqrt()),
-            axes: [axes[0].1, axes[1].1],
+        // Radii as the report computes them, sqrt(2 KE) / sqrt(lambda): no overflow on the way.
+        let shape = |ke: f64| {
+            let root = crate::ellipse::root_2ke(ke);
+            EllipseShape {
+                ke,
+                radii: (root / axes[0].0.sqrt(), root / axes[1].0.sqrt()),
+                axes: [axes[0].1, axes[1].1],
+            }
         };
         let e = c.restitution.value();
         let (k1, k2, _) = seen.momentum_line();

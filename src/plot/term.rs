@@ -38,6 +38,10 @@ impl Canvas {
     }
 
     fn line(&mut self, a: (f64, f64), b: (f64, f64)) {
+        // Only the part on the canvas (Liang-Barsky), so a huge segment costs nothing.
+        let Some((a, b)) = self.clip(a, b) else {
+            return;
+        };
         let n = ((b.0 - a.0).abs().max((b.1 - a.1).abs()) * 2.0)
             .ceil()
             .max(1.0) as usize;
@@ -45,6 +49,31 @@ impl Canvas {
             let t = i as f64 / n as f64;
             self.dot(a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
         }
+    }
+
+    /// The part of segment `a`-`b` inside the canvas, in dots.
+    fn clip(&self, a: (f64, f64), b: (f64, f64)) -> Option<((f64, f64), (f64, f64))> {
+        let (w, h) = ((self.cols * 2) as f64, (self.rows * 4) as f64);
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        for (p, q) in [(-dx, a.0), (dx, w - a.0), (-dy, a.1), (dy, h - a.1)] {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return None;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r)
+                } else {
+                    t1 = t1.min(r)
+                }
+            }
+        }
+        (t0 <= t1 && t0.is_finite() && t1.is_finite()).then_some((
+            (a.0 + t0 * dx, a.1 + t0 * dy),
+            (a.0 + t1 * dx, a.1 + t1 * dy),
+        ))
     }
 
     fn mark(&mut self, (px, py): (f64, f64), ch: char) {

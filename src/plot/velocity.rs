@@ -77,6 +77,16 @@ impl Map {
         }
     }
 
+    /// Whether the map can be drawn (the data range fits binary64).
+    pub fn is_finite(&self) -> bool {
+        [
+            self.ox, self.oy, self.s, self.x.0, self.x.1, self.y.0, self.y.1,
+        ]
+        .iter()
+        .all(|v| v.is_finite())
+            && self.s > 0.0
+    }
+
     /// The part of the line `k1 x + k2 y = c` inside the data box.
     pub fn clip(&self, (k1, k2, c): (f64, f64, f64)) -> Option<((f64, f64), (f64, f64))> {
         let mut hits = Vec::new();
