@@ -11,27 +11,7 @@ fn main() {
         max_collisions: u64::MAX,
     };
     for n in [6, 7, 8] {
-        let t = Track {
-            bodies: vec![
-                Body {
-                    m: 1.0,
-                    x: 1.0,
-                    v: 0.0,
-                    size: 0.0,
-                },
-                Body {
-                    m: 100f64.powi(n),
-                    x: 2.0,
-                    v: -1.0,
-                    size: 0.0,
-                },
-            ],
-            left_wall: Some(0.0),
-            right_wall: None,
-            e: 1.0,
-            e_wall: 1.0,
-            gravity: 0.0,
-        };
+        let t = Track::pi_billiards(1.0, 100f64.powi(n));
         let s = Instant::now();
         let r = t.run(forever, None);
         let secs = s.elapsed().as_secs_f64();

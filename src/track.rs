@@ -169,6 +169,32 @@ pub enum TrackError {
 }
 
 impl Track {
+    /// Pi billiards: a block of mass `m` at rest at x = 1 between a wall at 0 and a block of mass
+    /// `big_m` at x = 2 moving toward it at speed 1, elastic.
+    pub fn pi_billiards(m: f64, big_m: f64) -> Track {
+        Track {
+            bodies: vec![
+                Body {
+                    m,
+                    x: 1.0,
+                    v: 0.0,
+                    size: 0.0,
+                },
+                Body {
+                    m: big_m,
+                    x: 2.0,
+                    v: -1.0,
+                    size: 0.0,
+                },
+            ],
+            left_wall: Some(0.0),
+            right_wall: None,
+            e: 1.0,
+            e_wall: 1.0,
+            gravity: 0.0,
+        }
+    }
+
     /// Checks the layout: positive masses, sizes >= 0, bodies left to right without overlap,
     /// inside the walls, restitutions in [0, 1], gravity >= 0 and only with a left wall (a floor).
     pub fn check(&self) -> Result<(), TrackError> {
@@ -711,27 +737,7 @@ mod tests {
     use super::*;
 
     fn pi_track(m: f64, big_m: f64) -> Track {
-        Track {
-            bodies: vec![
-                Body {
-                    m,
-                    x: 1.0,
-                    v: 0.0,
-                    size: 0.0,
-                },
-                Body {
-                    m: big_m,
-                    x: 2.0,
-                    v: -1.0,
-                    size: 0.0,
-                },
-            ],
-            left_wall: Some(0.0),
-            right_wall: None,
-            e: 1.0,
-            e_wall: 1.0,
-            gravity: 0.0,
-        }
+        Track::pi_billiards(m, big_m)
     }
 
     const FOREVER: Limits = Limits {

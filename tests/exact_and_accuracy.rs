@@ -2,18 +2,8 @@
 
 mod common;
 
-use common::collide;
+use common::stdout;
 use serde_json::Value;
-
-fn stdout(args: &[&str]) -> String {
-    let out = collide().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
 
 #[test]
 fn exact_ka_whump_prints_the_lecture_fractions() {

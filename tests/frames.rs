@@ -6,7 +6,7 @@ use collide::accuracy::case;
 use collide::frame::{Frame, Observed};
 use collide::quantity::from_f64;
 use collide::solver::Solver;
-use common::{REL, assert_close, assert_pair, collide};
+use common::{REL, assert_close, assert_pair, collide, stdout};
 use proptest::prelude::*;
 use serde::Deserialize;
 use serde_json::Value;
@@ -34,16 +34,6 @@ struct Invariants {
     lost: f64,
     relative_velocity: f64,
     restitution: f64,
-}
-
-fn stdout(args: &[&str]) -> String {
-    let out = collide().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
 }
 
 #[test]

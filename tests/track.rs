@@ -225,27 +225,7 @@ fn an_inelastic_collapse_between_walls_ends() {
 #[test]
 fn elastic_runs_conserve_energy_over_millions_of_collisions() {
     // Pi billiards N = 6: 3,141,592 collisions.
-    let t = Track {
-        bodies: vec![
-            Body {
-                m: 1.0,
-                x: 1.0,
-                v: 0.0,
-                size: 0.0,
-            },
-            Body {
-                m: 1e12,
-                x: 2.0,
-                v: -1.0,
-                size: 0.0,
-            },
-        ],
-        left_wall: Some(0.0),
-        right_wall: None,
-        e: 1.0,
-        e_wall: 1.0,
-        gravity: 0.0,
-    };
+    let t = Track::pi_billiards(1.0, 1e12);
     let r = t.run(
         Limits {
             until: None,
