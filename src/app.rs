@@ -485,6 +485,9 @@ fn accuracy(args: AccuracyArgs) -> Result<Outcome> {
     use crate::accuracy::{Spread, families, report};
     let fams = families(args.seed, args.cases as usize);
     let rows = report(&fams, &args.methods, args.budget_ms);
+    if let Some(path) = &args.plot {
+        write_atomically(path, plot::accuracy::svg(&rows, args.seed).as_bytes())?;
+    }
     let stdout = match args.format {
         Format::Json => json::render(&serde_json::json!({
             "seed": args.seed,

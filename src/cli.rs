@@ -266,6 +266,10 @@ pub struct AccuracyArgs {
     )]
     pub methods: Vec<crate::accuracy::Method>,
 
+    /// Also draw the error-vs-time scatter to FILE.svg
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+
     /// Time spent timing each method on each family, in milliseconds
     #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u64).range(1..=60_000))]
     pub budget_ms: u64,

@@ -157,3 +157,37 @@ fn accuracy_report_puts_error_beside_run_time() {
         "{text}"
     );
 }
+
+#[test]
+fn accuracy_scatter_shows_each_method_on_each_family() {
+    let file = std::env::temp_dir().join(format!("collide-accuracy-{}.svg", std::process::id()));
+    stdout(&[
+        "accuracy",
+        "--cases",
+        "6",
+        "--budget-ms",
+        "1",
+        "--plot",
+        file.to_str().unwrap(),
+    ]);
+    let text = std::fs::read_to_string(&file).unwrap();
+    let doc = roxmltree::Document::parse(&text).expect("well-formed SVG");
+    let points: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.attribute("id").is_some_and(|i| i.starts_with("point-")))
+        .collect();
+    assert_eq!(points.len(), 7 * 5, "one point per method and family");
+    let cy = |id: &str| -> f64 {
+        points
+            .iter()
+            .find(|n| n.attribute("id") == Some(id))
+            .unwrap()
+            .attribute("cy")
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    // Screen y grows downward: the impulse solver's error is far below the textbook formula's.
+    assert!(cy("point-impulse-boost") > cy("point-textbook-boost") + 100.0);
+    std::fs::remove_file(&file).ok();
+}

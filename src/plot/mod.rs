@@ -2,6 +2,7 @@
 //! diagram of the lecture's figures, and space-time diagrams of the two world lines, as SVG and in
 //! the terminal.
 
+pub mod accuracy;
 pub mod spacetime;
 pub mod svg;
 pub mod term;
