@@ -20,6 +20,7 @@ use crate::frame::{
 use crate::inertia::InertiaTensor;
 use crate::number::Number;
 use crate::plot;
+use crate::problem::Problem;
 use crate::quantity::Exact;
 use crate::report::{Report, Section, Sections, json, text};
 use crate::rows::{
@@ -29,6 +30,8 @@ use crate::rows::{
 use crate::scene::{AnyScene, Scene, SceneError, TrackScene};
 use crate::sweep::{Grid, Param, Shard};
 use crate::track::{Body, Event, Limits, Run, Track, TrackReport};
+use crate::units::Pair;
+use num_traits::Zero;
 use std::io::Write;
 
 /// What a command prints and how it exits.
@@ -53,23 +56,47 @@ pub fn run(command: Command) -> Result<Outcome> {
 }
 
 impl CaseArgs {
+    /// The typed problem (masses or tensor, velocities, restitution, units).
+    fn problem(&self, fin: Option<&Pair>) -> Problem {
+        Problem {
+            masses: self.masses.clone(),
+            velocities: self.velocities.clone(),
+            fin: fin.cloned(),
+            restitution: self.restitution.as_ref().map(|r| r.0.clone()),
+            si: self.si,
+        }
+    }
+
+    /// The case, with units resolved; `?` (an unknown) is for `collide solve`.
     pub fn into_case(self) -> Result<Case> {
-        let inertia = match (self.inertia, self.masses) {
-            (Some(t), _) => t,
-            (None, Some([m1, m2])) => InertiaTensor::diagonal(&m1, &m2)?,
-            (None, None) => anyhow::bail!("give --masses M1,M2 or --inertia 'M11,M12;M21,M22'"),
-        };
-        Ok(Case::new(inertia, self.velocities, self.restitution))
+        let problem = self.problem(None);
+        if problem.has_unknowns() {
+            anyhow::bail!(
+                "'?' marks an unknown: `collide solve` solves for unknowns (with --fin for final velocities)"
+            );
+        }
+        Ok(problem.solve(self.inertia)?.0)
     }
 }
 
 fn solve(args: SolveArgs) -> Result<Outcome> {
-    let case = args.case.into_case()?;
+    let problem = args.case.problem(args.fin.as_ref());
+    let (case, solved) = problem.solve(args.case.inertia.clone())?;
     let sections = Sections::new(args.show);
     let report = solve_case(&case, &args.frame, args.exact, &sections, args.reverse)?;
     let mut stdout = match args.format {
-        Format::Text => report.text(&case, &sections),
-        Format::Json => json::render(&report.json()),
+        Format::Text => {
+            let mut text = String::new();
+            if let Some(s) = &solved {
+                text.push_str(&solved_text(s, args.exact));
+            }
+            text + &report.text(&case, &sections)
+        }
+        Format::Json => {
+            let mut json = report.json();
+            decorate(&mut json, &case, solved.as_ref(), args.exact);
+            json::render(&json)
+        }
     };
     if let Some(target) = &args.plot {
         stdout.push_str(&draw(
@@ -164,6 +191,87 @@ fn plot(args: PlotArgs) -> Result<Outcome> {
         (None, false) => plot::svg(&case, &args.frame, args.kind, args.frames),
     };
     Ok(Outcome { stdout, status: 0 })
+}
+
+pub fn solved_text(s: &crate::unknowns::Solved, exact: bool) -> String {
+    let show = |q: &num_rational::BigRational| {
+        use crate::quantity::Scalar;
+        if exact {
+            crate::quantity::Exact::Rational(q.clone()).show()
+        } else {
+            crate::report::text::num(crate::quantity::to_f64(q).unwrap_or(f64::NAN))
+        }
+    };
+    let mut out = String::new();
+    if !s.unknowns.is_empty() {
+        let parts: Vec<String> = s
+            .unknowns
+            .iter()
+            .map(|v| format!("{v} = {}", show(s.get(*v))))
+            .collect();
+        out.push_str(&format!("Solved: {}\n", parts.join(", ")));
+    }
+    for (law, residual) in &s.checks {
+        if residual.is_zero() {
+            out.push_str(&format!("Check: {law} holds exactly\n"));
+        } else {
+            out.push_str(&format!(
+                "Check: {law} does NOT hold: it misses by {}\n",
+                show(residual)
+            ));
+        }
+    }
+    out.push('\n');
+    out
+}
+
+/// Adds `units` (when given), `solved` and `check` (when unknowns were solved) to a report.
+fn decorate(
+    json: &mut serde_json::Value,
+    case: &Case,
+    solved: Option<&crate::unknowns::Solved>,
+    exact: bool,
+) {
+    let Some(o) = json.as_object_mut() else {
+        return;
+    };
+    if case.units != crate::units::Units::default() {
+        let u = &case.units;
+        o.insert(
+            "units".into(),
+            serde_json::json!({"mass": u.mass, "velocity": u.velocity, "energy": u.energy()}),
+        );
+    }
+    if let Some(s) = solved {
+        for (k, v) in solved_json(s, exact) {
+            o.insert(k, v);
+        }
+    }
+}
+
+pub fn solved_json(s: &crate::unknowns::Solved, exact: bool) -> Vec<(String, serde_json::Value)> {
+    let value = |q: &num_rational::BigRational| {
+        if exact {
+            serde_json::Value::String(crate::quantity::fraction(q))
+        } else {
+            serde_json::json!(crate::quantity::to_f64(q))
+        }
+    };
+    let solved: serde_json::Map<String, serde_json::Value> = s
+        .unknowns
+        .iter()
+        .map(|v| (v.name().to_string(), value(s.get(*v))))
+        .collect();
+    let checks: serde_json::Map<String, serde_json::Value> = s
+        .checks
+        .iter()
+        .map(|(law, r)| (law.to_string(), value(r)))
+        .collect();
+    let mut out = vec![("solved".to_string(), serde_json::Value::Object(solved))];
+    if !checks.is_empty() {
+        out.push(("check".to_string(), serde_json::Value::Object(checks)));
+    }
+    out
 }
 
 /// Solves `case` seen from `frame`, in exact or binary64 arithmetic, with the time-reversed
@@ -279,15 +387,20 @@ fn solve_scene(scene: Scene) -> Result<Solved> {
     let report = solve_case(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.path.display()))?;
     let mut text = report.text(&scene.case, &scene.show);
+    if let Some(s) = &scene.solved {
+        text = solved_text(s, scene.exact) + &text;
+    }
     if let Some(p) = &scene.plot {
         draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
         text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
     }
+    let mut json = report.json();
+    decorate(&mut json, &scene.case, scene.solved.as_ref(), scene.exact);
     Solved::check(
         &scene.path,
         (scene.title, scene.source),
         text,
-        report.json(),
+        json,
         &scene.expect,
     )
 }

@@ -13,6 +13,8 @@ use crate::restitution::Restitution;
 pub struct Case {
     pub velocities: [Number; 2],
     pub collision: Collision,
+    /// The units the numbers are in (none: as given).
+    pub units: crate::units::Units,
 }
 
 impl Case {
@@ -21,6 +23,7 @@ impl Case {
         Case {
             velocities,
             collision: Collision::new(inertia, v, restitution),
+            units: Default::default(),
         }
     }
 

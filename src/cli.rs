@@ -6,14 +6,15 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::batch::InputFormat;
-use crate::case::{parse_inertia, parse_masses, parse_velocities};
+use crate::case::parse_inertia;
 use crate::frame::Frame;
-use crate::inertia::{InertiaTensor, Mass};
+use crate::inertia::InertiaTensor;
 use crate::number::{Number, NumberList};
 use crate::report::Section;
 use crate::restitution::Restitution;
 use crate::rows::{Column, RowFormat};
 use crate::sweep::{Shard, Vary};
+use crate::units::{Dimension, Pair, parse_pair};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -282,25 +283,41 @@ pub struct AccuracyArgs {
 /// The case: tensor (masses or a general inertia), velocities, restitution.
 #[derive(Args, Debug, Clone)]
 pub struct CaseArgs {
-    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3
-    #[arg(short, long, value_name = "M1,M2", value_parser = parse_masses,
+    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'; '?' for an unknown (solve)
+    #[arg(short, long, value_name = "M1,M2", value_parser = |s: &str| parse_pair(s, Dimension::Mass, "masses M1,M2"),
           allow_hyphen_values = true, required_unless_present = "inertia")]
-    pub masses: Option<[Mass; 2]>,
+    pub masses: Option<Pair>,
 
     /// A general symmetric positive definite inertia tensor instead of masses, e.g. '4,0.5;0.5,1'
     #[arg(long, value_name = "M11,M12;M21,M22", value_parser = parse_inertia,
           allow_hyphen_values = true, conflicts_with = "masses")]
     pub inertia: Option<InertiaTensor>,
 
-    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4
-    #[arg(short, long, value_name = "V1,V2", value_parser = parse_velocities,
+    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'; '?' for an unknown (solve)
+    #[arg(short, long, value_name = "V1,V2", value_parser = |s: &str| parse_pair(s, Dimension::Velocity, "velocities V1,V2"),
           allow_hyphen_values = true)]
-    pub velocities: [Number; 2],
+    pub velocities: Pair,
 
-    /// Coefficient of restitution in [0, 1], or 'elastic' (1) or 'inelastic' (0)
-    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
-          value_parser = clap::value_parser!(Restitution), allow_hyphen_values = true)]
-    pub restitution: Restitution,
+    /// Coefficient of restitution in [0, 1], 'elastic' (1) or 'inelastic' (0), or '?' (solve)
+    /// [default: elastic; unknown when --fin is given]
+    #[arg(short = 'e', long, value_name = "E", value_parser = parse_restitution_slot, allow_hyphen_values = true)]
+    pub restitution: Option<RestitutionSlot>,
+
+    /// Convert every value with a unit to kg, m/s and J
+    #[arg(long)]
+    pub si: bool,
+}
+
+/// A restitution, or `None` for `?` (unknown).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RestitutionSlot(pub Option<Restitution>);
+
+fn parse_restitution_slot(s: &str) -> Result<RestitutionSlot, String> {
+    if s.trim() == "?" {
+        Ok(RestitutionSlot(None))
+    } else {
+        s.parse().map(|r| RestitutionSlot(Some(r)))
+    }
 }
 
 #[derive(Args, Debug)]
@@ -331,6 +348,12 @@ pub struct SolveArgs {
     /// Also print the time-reversed collision (IN' = -FIN, FIN' = -IN)
     #[arg(long)]
     pub reverse: bool,
+
+    /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
+    /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest
+    #[arg(long, value_name = "F1,F2", allow_hyphen_values = true,
+          value_parser = |s: &str| parse_pair(s, Dimension::Velocity, "final velocities F1,F2"))]
+    pub fin: Option<Pair>,
 
     /// Also draw the velocity diagram: to FILE.svg, or 'term' for the terminal
     #[arg(long, value_name = "FILE.svg|term")]

@@ -61,7 +61,7 @@ pub struct Check {
 }
 
 const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, momentum.*, forms.*, \
-                         energy.*, ellipses.*, products.*, diagnostics.*";
+                         energy.*, ellipses.*, products.*, diagnostics.*, solved.*, check.*, units.*";
 
 fn expected_of(v: toml::Value) -> Result<Expected, String> {
     match v {
@@ -131,7 +131,15 @@ impl Expectation {
     pub fn check_report_key(key: &str) -> Result<(), String> {
         let top = key.split('.').next().unwrap_or_default();
         if Section::of_json_key(top).is_none()
-            && !["restitution", "inertia", "frame"].contains(&top)
+            && ![
+                "restitution",
+                "inertia",
+                "frame",
+                "solved",
+                "check",
+                "units",
+            ]
+            .contains(&top)
         {
             return Err(format!(
                 "unknown quantity '{top}': expected one of {TOP_LEVEL}"

@@ -25,13 +25,16 @@ use toml::Spanned;
 use crate::case::Case;
 use crate::expect::Expectation;
 use crate::frame::Frame;
-use crate::inertia::{InertiaTensor, Mass};
+use crate::inertia::InertiaTensor;
 use crate::number::Number;
+use crate::problem::Problem;
 use crate::report::{Section, Sections};
 use crate::restitution::Restitution;
 use crate::rows::{Column, RowFormat};
 use crate::sweep::Grid;
 use crate::track::{Body, Limits, Track};
+use crate::units::{Dimension, Pair, parse_pair};
+use crate::unknowns::Solved;
 
 /// The file as written. Field names are the scene format.
 #[derive(Deserialize)]
@@ -39,10 +42,12 @@ use crate::track::{Body, Limits, Track};
 struct SceneFile {
     title: Option<String>,
     source: Option<String>,
-    masses: Option<Spanned<[Mass; 2]>>,
+    masses: Option<Spanned<[Typed; 2]>>,
     inertia: Option<Spanned<[[Number; 2]; 2]>>,
-    velocities: [Number; 2],
-    restitution: Option<Restitution>,
+    velocities: Spanned<[Typed; 2]>,
+    fin: Option<Spanned<[Typed; 2]>>,
+    restitution: Option<Spanned<Typed>>,
+    si: Option<bool>,
     show: Option<Vec<Section>>,
     exact: Option<bool>,
     frame: Option<Frame>,
@@ -89,6 +94,30 @@ pub struct SceneSweep {
     pub skip_bad: bool,
 }
 
+/// A value as typed in a scene: a number, a string with a unit (`"4 t"`), or `"?"`.
+#[derive(Clone, Debug)]
+struct Typed(String);
+
+impl std::str::FromStr for Typed {
+    type Err = std::convert::Infallible;
+    fn from_str(s: &str) -> Result<Typed, Self::Err> {
+        Ok(Typed(s.to_string()))
+    }
+}
+
+impl<'de> Deserialize<'de> for Typed {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Typed, D::Error> {
+        crate::number::deserialize_parsed(
+            d,
+            "a number, a string with a unit such as \"4 t\", or \"?\"",
+        )
+    }
+}
+
+fn pair(v: &[Typed; 2], dimension: Dimension, what: &str) -> Result<Pair, String> {
+    parse_pair(&format!("{},{}", v[0].0, v[1].0), dimension, what)
+}
+
 /// A loaded, validated scene.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -106,6 +135,8 @@ pub struct Scene {
     pub sweep: Option<SceneSweep>,
     /// A picture to draw (`[plot]`).
     pub plot: Option<PlotTable>,
+    /// What was solved for (`"?"` values, or `fin` given).
+    pub solved: Option<Solved>,
     pub expect: Vec<Expectation>,
 }
 
@@ -181,17 +212,7 @@ impl Scene {
         };
         let file: SceneFile =
             toml::from_str(text).map_err(|e| err(e.span(), e.message().trim().to_string()))?;
-        let inertia = match (file.masses, file.inertia) {
-            (Some(m), None) => {
-                let span = m.span();
-                let [m1, m2] = m.into_inner();
-                InertiaTensor::diagonal(&m1, &m2).map_err(|e| err(Some(span), e.to_string()))?
-            }
-            (None, Some(t)) => {
-                let span = t.span();
-                InertiaTensor::general(t.into_inner())
-                    .map_err(|e| err(Some(span), format!("inertia: {e}")))?
-            }
+        let masses = match (&file.masses, &file.inertia) {
             (Some(_), Some(t)) => {
                 return Err(err(
                     Some(t.span()),
@@ -204,7 +225,53 @@ impl Scene {
                     "missing `masses = [M1, M2]` (or `inertia = [[M11, M12], [M21, M22]]`)".into(),
                 ));
             }
+            (Some(m), None) => Some(
+                pair(m.get_ref(), Dimension::Mass, "masses").map_err(|e| err(Some(m.span()), e))?,
+            ),
+            (None, Some(_)) => None,
         };
+        let inertia = match &file.inertia {
+            Some(t) => Some(
+                InertiaTensor::general(t.get_ref().clone())
+                    .map_err(|e| err(Some(t.span()), format!("inertia: {e}")))?,
+            ),
+            None => None,
+        };
+        let v = &file.velocities;
+        let velocities = pair(v.get_ref(), Dimension::Velocity, "velocities")
+            .map_err(|e| err(Some(v.span()), e))?;
+        let fin = match &file.fin {
+            Some(f) => Some(
+                pair(f.get_ref(), Dimension::Velocity, "fin")
+                    .map_err(|e| err(Some(f.span()), e))?,
+            ),
+            None => None,
+        };
+        let restitution = match &file.restitution {
+            None => None,
+            Some(r) if r.get_ref().0.trim() == "?" => Some(None),
+            Some(r) => Some(Some(
+                r.get_ref()
+                    .0
+                    .parse::<Restitution>()
+                    .map_err(|e| err(Some(r.span()), e))?,
+            )),
+        };
+        let problem = Problem {
+            masses,
+            velocities,
+            fin,
+            restitution,
+            si: file.si.unwrap_or(false),
+        };
+        let span = file
+            .masses
+            .as_ref()
+            .map(|m| m.span())
+            .or(file.inertia.as_ref().map(|t| t.span()));
+        let (case, solved) = problem
+            .solve(inertia)
+            .map_err(|e| err(span, format!("{e:#}")))?;
         let sweep = match file.sweep {
             None => None,
             Some(t) => {
@@ -246,8 +313,6 @@ impl Scene {
                 })
             }
         };
-        let restitution = file.restitution.unwrap_or_else(Restitution::elastic);
-        let case = Case::new(inertia, file.velocities, restitution);
         let show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         let mut expect = Vec::new();
         for (key, value) in file.expect.unwrap_or_default() {
@@ -267,6 +332,7 @@ impl Scene {
             frame: file.frame.unwrap_or(Frame::Lab),
             sweep,
             plot: file.plot,
+            solved,
             expect,
         })
     }

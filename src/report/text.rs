@@ -75,14 +75,22 @@ impl Block {
 /// `M = diag(4, 1)   V_IN = (60, 10)   e = 1 (elastic: ka-bong)`, a line.
 fn header(case: &Case) -> String {
     let e = case.restitution();
-    format!(
+    let mut out = format!(
         "M = {}   V_IN = ({}, {})   e = {} ({})\n",
         case.inertia().describe(),
         case.velocities[0],
         case.velocities[1],
         e,
         e.kind()
-    )
+    );
+    let u = &case.units;
+    if let (Some(m), Some(v)) = (u.mass, u.velocity) {
+        out.push_str(&format!(
+            "Units: masses in {m}, velocities in {v}, energies in {}\n",
+            u.energy()
+        ));
+    }
+    out
 }
 
 /// Renders the report of `case` as text.
@@ -350,7 +358,10 @@ fn forms<N: Scalar>(case: &Case, f: &Forms<N>, energy: Option<&Energy<N>>) -> Bl
 }
 
 fn energy<N: Scalar>(case: &Case, en: &Energy<N>, notes: &Notes<N>) -> Block {
-    let mut b = Block::new("Energy (KE = 1/2 V.M.V)");
+    let mut b = Block::new(format!(
+        "Energy (KE = 1/2 V.M.V, in {})",
+        case.units.energy()
+    ));
     let e = case.restitution();
     if e.is_elastic() {
         b.row(

@@ -1,0 +1,480 @@
+//! Units (issue 8): a mass or velocity may be typed with a unit (`4 t`, `60mph`, `72 km/h`). A
+//! table of units with exact factors to SI, not scattered constants. Numbers keep their units when
+//! all masses share one and all velocities share one; otherwise (or with `--si`) everything is
+//! converted exactly to kg and m/s.
+
+use num_rational::BigRational;
+
+use crate::number::{Number, NumberError};
+
+/// What a unit measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dimension {
+    Mass,
+    Velocity,
+}
+
+/// A unit: the names it is typed as, and its size in SI as an exact decimal or fraction.
+#[derive(Debug, PartialEq)]
+pub struct Unit {
+    pub dimension: Dimension,
+    /// The first name is how it is printed.
+    pub names: &'static [&'static str],
+    /// Size in kg or m/s.
+    pub si: &'static str,
+}
+
+impl Unit {
+    pub fn name(&self) -> &'static str {
+        self.names[0]
+    }
+    pub fn si(&self) -> BigRational {
+        self.si
+            .parse::<Number>()
+            .map(|n| n.exact())
+            .unwrap_or_default()
+    }
+}
+
+/// The units collide knows.
+pub const UNITS: &[Unit] = &[
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["kg"],
+        si: "1",
+    },
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["g"],
+        si: "0.001",
+    },
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["t", "tonne", "tonnes"],
+        si: "1000",
+    },
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["ton", "tons", "short ton"],
+        si: "907.18474",
+    },
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["long ton", "long tons"],
+        si: "1016.0469088",
+    },
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["lb", "lbs"],
+        si: "0.45359237",
+    },
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["oz"],
+        si: "0.028349523125",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["m/s"],
+        si: "1",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["km/h", "kph"],
+        si: "1000/3600",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["mph", "mi/h"],
+        si: "0.44704",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["ft/s"],
+        si: "0.3048",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["knot", "knots", "kn"],
+        si: "1852/3600",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["cm/s"],
+        si: "0.01",
+    },
+];
+
+/// Names that could mean several things, with how to be explicit.
+const AMBIGUOUS: &[(&str, &str)] = &[
+    (
+        "T",
+        "'T' could be a tonne or a short ton: write 't' (1000 kg) or 'ton' (907.18474 kg)",
+    ),
+    (
+        "kt",
+        "'kt' could be a knot or a kiloton: write 'knot' (or 'kn') for speed",
+    ),
+    ("m", "'m' is a length: velocities take m/s"),
+    ("mi", "'mi' is a length: velocities take mph"),
+    ("km", "'km' is a length: velocities take km/h"),
+];
+
+/// Edits between two names, a swap of neighbouring letters counting as one (the likeliest typo:
+/// "mhp" for "mph").
+fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for (j, cell) in d[0].iter_mut().enumerate() {
+        *cell = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            d[i][j] = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d[i][j] = d[i][j].min(d[i - 2][j - 2] + 1);
+            }
+        }
+    }
+    d[a.len()][b.len()]
+}
+
+/// The unit called `name` for `dimension`, or a message naming the nearest ones.
+pub fn lookup(name: &str, dimension: Dimension) -> Result<&'static Unit, String> {
+    let what = match dimension {
+        Dimension::Mass => "mass",
+        Dimension::Velocity => "velocity",
+    };
+    if let Some((_, why)) = AMBIGUOUS.iter().find(|(n, _)| *n == name) {
+        return Err(format!("ambiguous unit: {why}"));
+    }
+    let fits: Vec<&Unit> = UNITS.iter().filter(|u| u.dimension == dimension).collect();
+    if let Some(u) = fits.iter().find(|u| u.names.contains(&name)) {
+        return Ok(u);
+    }
+    if let Some(u) = UNITS.iter().find(|u| u.names.contains(&name)) {
+        return Err(format!(
+            "'{name}' is a unit of {}, not of {what}",
+            if u.dimension == Dimension::Mass {
+                "mass"
+            } else {
+                "velocity"
+            }
+        ));
+    }
+    let mut near: Vec<(usize, &str)> = fits
+        .iter()
+        .flat_map(|u| u.names.iter())
+        .map(|n| (edit_distance(&name.to_lowercase(), n), *n))
+        .filter(|(d, _)| *d <= 2)
+        .collect();
+    near.sort();
+    let all: Vec<&str> = fits.iter().map(|u| u.name()).collect();
+    match near.first() {
+        Some((_, n)) => Err(format!(
+            "unknown {what} unit '{name}': did you mean '{n}'? (known: {})",
+            all.join(", ")
+        )),
+        None => Err(format!(
+            "unknown {what} unit '{name}': expected one of {}",
+            all.join(", ")
+        )),
+    }
+}
+
+/// A typed value: a number with an optional unit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Quantity {
+    pub number: Number,
+    pub unit: Option<&'static Unit>,
+}
+
+/// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
+pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, String> {
+    let t = text.trim();
+    // A whole number (or one that is out of range, or divides by zero) has no unit: its own
+    // error is the one to report.
+    match t.parse::<Number>() {
+        Ok(number) => return Ok(Quantity { number, unit: None }),
+        Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.to_string()),
+        Err(_) => {}
+    }
+    // The longest prefix that is a number, followed by a unit name.
+    let cut = (1..=t.len())
+        .rev()
+        .filter(|&i| t.is_char_boundary(i))
+        .find(|&i| {
+            t[..i].parse::<Number>().is_ok()
+                && t[i..]
+                    .chars()
+                    .next()
+                    .is_none_or(|c| c.is_whitespace() || c.is_alphabetic())
+        });
+    let Some(i) = cut else {
+        // No number at all: let the number parser say why.
+        return Err(t
+            .parse::<Number>()
+            .map_err(|e: NumberError| e.to_string())
+            .err()
+            .unwrap_or_default());
+    };
+    let number: Number = t[..i].parse().map_err(|e: NumberError| e.to_string())?;
+    let rest = t[i..].trim();
+    let unit = if rest.is_empty() {
+        None
+    } else {
+        Some(lookup(rest, dimension)?)
+    };
+    Ok(Quantity { number, unit })
+}
+
+/// How values are measured in a case: the units kept (when shared), or SI.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Units {
+    pub mass: Option<&'static str>,
+    pub velocity: Option<&'static str>,
+}
+
+impl Units {
+    /// "ton mph^2", or the generic description when no units were given.
+    pub fn energy(&self) -> String {
+        match (self.mass, self.velocity) {
+            (Some(m), Some(v)) => {
+                if m == "kg" && v == "m/s" {
+                    "J".into()
+                } else {
+                    format!("{m} {v}^2")
+                }
+            }
+            (Some(m), None) => format!("{m} x (velocity unit)^2"),
+            (None, Some(v)) => format!("(mass unit) {v}^2"),
+            (None, None) => "mass unit x velocity unit^2".into(),
+        }
+    }
+}
+
+/// Resolved masses and velocities (`None` for `?`), with their units.
+pub type Resolved = (Vec<Option<Number>>, Vec<Option<Number>>, Units);
+
+/// Resolves a case's quantities: keeps the numbers when all masses share a unit (or none has one)
+/// and all velocities share one, unless `si`; otherwise converts everything exactly to kg and m/s.
+/// `?` placeholders pass through as `None`.
+pub fn resolve(
+    masses: &[Option<Quantity>],
+    velocities: &[Option<Quantity>],
+    si: bool,
+) -> Result<Resolved, String> {
+    fn common(
+        qs: &[Option<Quantity>],
+        what: &str,
+    ) -> Result<(bool, Option<&'static Unit>), String> {
+        // A bare 0 is 0 in any unit (`72 km/h,0`).
+        let given: Vec<&Quantity> = qs
+            .iter()
+            .flatten()
+            .filter(|q| !(q.unit.is_none() && q.number.value() == 0.0))
+            .collect();
+        let with = given.iter().filter(|q| q.unit.is_some()).count();
+        if with != 0 && with != given.len() {
+            return Err(format!(
+                "give a unit for every {what} or for none (some have one, some not)"
+            ));
+        }
+        let first = given.iter().find_map(|q| q.unit);
+        let shared = given
+            .iter()
+            .all(|q| q.unit.map(Unit::name) == first.map(Unit::name));
+        Ok((shared, first))
+    }
+    let (mass_shared, mass_unit) = common(masses, "mass")?;
+    let (vel_shared, vel_unit) = common(velocities, "velocity")?;
+    let any_unit = mass_unit.is_some() || vel_unit.is_some();
+    let convert = si || !mass_shared || !vel_shared;
+    if convert && (mass_unit.is_none() || vel_unit.is_none()) {
+        return Err(if si {
+            "--si needs a unit on every mass and velocity".into()
+        } else {
+            "mixed units need a unit on every mass and velocity".into()
+        });
+    }
+    let to = |qs: &[Option<Quantity>]| -> Result<Vec<Option<Number>>, String> {
+        qs.iter()
+            .map(|q| match q {
+                None => Ok(None),
+                Some(q) if convert => {
+                    let si = q.number.exact()
+                        * q.unit
+                            .map(Unit::si)
+                            .unwrap_or_else(|| BigRational::from_integer(1.into()));
+                    let text = if si.is_integer() {
+                        si.numer().to_string()
+                    } else {
+                        format!("{}/{}", si.numer(), si.denom())
+                    };
+                    text.parse::<Number>().map(Some).map_err(|e| e.to_string())
+                }
+                Some(q) => Ok(Some(q.number.clone())),
+            })
+            .collect()
+    };
+    let units = if convert {
+        Units {
+            mass: Some("kg"),
+            velocity: Some("m/s"),
+        }
+    } else if any_unit {
+        Units {
+            mass: mass_unit.map(Unit::name),
+            velocity: vel_unit.map(Unit::name),
+        }
+    } else {
+        Units::default()
+    };
+    Ok((to(masses)?, to(velocities)?, units))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parsing_quantities() {
+        let q = parse("4 t", Dimension::Mass).unwrap();
+        assert_eq!((q.number.value(), q.unit.map(Unit::name)), (4.0, Some("t")));
+        let q = parse("60mph", Dimension::Velocity).unwrap();
+        assert_eq!(
+            (q.number.value(), q.unit.map(Unit::name)),
+            (60.0, Some("mph"))
+        );
+        let q = parse("72 km/h", Dimension::Velocity).unwrap();
+        assert_eq!(q.unit.map(Unit::name), Some("km/h"));
+        let q = parse("2/3 m/s", Dimension::Velocity).unwrap();
+        assert_eq!(q.number.value(), 2.0 / 3.0);
+        let q = parse("1e3kg", Dimension::Mass).unwrap();
+        assert_eq!(q.number.value(), 1000.0);
+        assert_eq!(parse("4", Dimension::Mass).unwrap().unit, None);
+        assert_eq!(
+            parse("1 long ton", Dimension::Mass)
+                .unwrap()
+                .unit
+                .map(Unit::name),
+            Some("long ton")
+        );
+    }
+
+    #[test]
+    fn unknown_and_ambiguous_units_say_what_to_write() {
+        let e = parse("60 mhp", Dimension::Velocity).unwrap_err();
+        assert!(e.contains("did you mean 'mph'"), "{e}");
+        let e = parse("4 T", Dimension::Mass).unwrap_err();
+        assert!(
+            e.contains("ambiguous") && e.contains("'t'") && e.contains("'ton'"),
+            "{e}"
+        );
+        let e = parse("4 mph", Dimension::Mass).unwrap_err();
+        assert!(e.contains("unit of velocity, not of mass"), "{e}");
+        let e = parse("abc", Dimension::Mass).unwrap_err();
+        assert!(e.contains("'abc' is not a number"), "{e}");
+    }
+
+    #[test]
+    fn resolution_keeps_shared_units_and_converts_mixed_ones() {
+        let q = |s: &str, d| Some(parse(s, d).unwrap());
+        use Dimension::*;
+        let (m, v, u) = resolve(
+            &[q("4 ton", Mass), q("1 ton", Mass)],
+            &[q("60 mph", Velocity), q("10 mph", Velocity)],
+            false,
+        )
+        .unwrap();
+        assert_eq!(m[0].as_ref().unwrap().value(), 4.0);
+        assert_eq!(v[1].as_ref().unwrap().value(), 10.0);
+        assert_eq!(u.energy(), "ton mph^2");
+        // Mixed: 1500 kg and 1 t -> 1500 and 1000 kg; 72 km/h -> 20 m/s exactly.
+        let (m, v, u) = resolve(
+            &[q("1500 kg", Mass), q("1 t", Mass)],
+            &[q("72 km/h", Velocity), q("0 km/h", Velocity)],
+            false,
+        )
+        .unwrap();
+        assert_eq!(
+            (
+                m[0].as_ref().unwrap().value(),
+                m[1].as_ref().unwrap().value()
+            ),
+            (1500.0, 1000.0)
+        );
+        assert_eq!(v[0].as_ref().unwrap().value(), 20.0);
+        assert_eq!(u.energy(), "J");
+        // --si: 60 mph = 26.8224 m/s exactly.
+        let (_, v, _) = resolve(
+            &[q("4 t", Mass), q("1 t", Mass)],
+            &[q("60 mph", Velocity), q("10 mph", Velocity)],
+            true,
+        )
+        .unwrap();
+        assert_eq!(
+            v[0].as_ref().unwrap().exact(),
+            "26.8224".parse::<Number>().unwrap().exact()
+        );
+        let e = resolve(
+            &[q("4 t", Mass), q("1", Mass)],
+            &[q("1", Velocity), q("2", Velocity)],
+            false,
+        )
+        .unwrap_err();
+        assert!(e.contains("every mass or for none"), "{e}");
+        // A bare 0 takes any unit.
+        let (_, v, u) = resolve(
+            &[q("1500 kg", Mass), q("900 kg", Mass)],
+            &[q("72 km/h", Velocity), q("0", Velocity)],
+            false,
+        )
+        .unwrap();
+        assert_eq!(
+            (v[1].as_ref().unwrap().value(), u.energy()),
+            (0.0, "kg km/h^2".to_string())
+        );
+        let (_, _, u) = resolve(
+            &[q("4", Mass), q("1", Mass)],
+            &[q("1", Velocity), q("2", Velocity)],
+            false,
+        )
+        .unwrap();
+        assert_eq!(u.energy(), "mass unit x velocity unit^2");
+    }
+}
+
+/// Two values as typed (`M1,M2`, `V1,V2`, `F1,F2`): numbers with optional units, `?` for unknown.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Pair(pub [Option<Quantity>; 2]);
+
+/// Parses `a,b` where each is `?` or a number with an optional unit; `what` names them.
+pub fn parse_pair(text: &str, dimension: Dimension, what: &str) -> Result<Pair, String> {
+    let [a, b] = crate::number::split_fields::<2>(text, what)?;
+    let one = |t: &str| -> Result<Option<Quantity>, String> {
+        if t == "?" {
+            Ok(None)
+        } else {
+            parse(t, dimension).map(Some).map_err(|e| {
+                let kind = if dimension == Dimension::Mass {
+                    "mass"
+                } else {
+                    "velocity"
+                };
+                if e.starts_with('\'') {
+                    format!("{kind} {e}")
+                } else {
+                    e
+                }
+            })
+        }
+    };
+    Ok(Pair([one(a)?, one(b)?]))
+}

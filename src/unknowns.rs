@@ -1,0 +1,365 @@
+//! Solving for what a homework problem hides (issue 8): any two of `m1, m2, v1, v2, f1, f2, e`
+//! given as `?`, from the two laws of lecture Sec. 1 (exact rational arithmetic):
+//!
+//! - momentum: `m1 v1 + m2 v2 = m1 f1 + m2 f2`;
+//! - restitution: `f2 - f1 = e (v1 - v2)`.
+//!
+//! Momentum is linear in each single unknown, and restitution holds no masses, so every pair of
+//! unknowns is a linear problem (at most one solution, none, or infinitely many). With one
+//! unknown, one law gives it and the other is checked; with none, both are checked.
+
+use std::fmt;
+
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+type Q = BigRational;
+
+/// One of the two laws, as a residual of all seven values.
+type Law = fn(&[Q; 7]) -> Q;
+
+/// A quantity of the problem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Var {
+    M1,
+    M2,
+    V1,
+    V2,
+    F1,
+    F2,
+    E,
+}
+
+impl Var {
+    pub const ALL: [Var; 7] = [Var::M1, Var::M2, Var::V1, Var::V2, Var::F1, Var::F2, Var::E];
+
+    pub fn name(self) -> &'static str {
+        ["m1", "m2", "v1", "v2", "f1", "f2", "e"][self as usize]
+    }
+
+    fn is_mass(self) -> bool {
+        matches!(self, Var::M1 | Var::M2)
+    }
+}
+
+impl fmt::Display for Var {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Why the unknowns cannot be given.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum UnknownError {
+    #[error("{0} unknowns ({1}): at most two can be solved for from momentum and restitution")]
+    TooMany(usize, String),
+    #[error("no solution: {0}")]
+    None(String),
+    #[error("infinitely many solutions: {0}")]
+    Many(String),
+    #[error("the solution is unphysical: {0}")]
+    Unphysical(String),
+}
+
+/// A solved problem: every value, which were unknown, and the residuals of the laws not used to
+/// solve (a consistency check).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solved {
+    pub values: [Q; 7],
+    pub unknowns: Vec<Var>,
+    /// `(law, residual)` for each law that was checked rather than used.
+    pub checks: Vec<(&'static str, Q)>,
+}
+
+impl Solved {
+    pub fn get(&self, v: Var) -> &Q {
+        &self.values[v as usize]
+    }
+}
+
+fn momentum(x: &[Q; 7]) -> Q {
+    &x[0] * &x[2] + &x[1] * &x[3] - &x[0] * &x[4] - &x[1] * &x[5]
+}
+
+fn restitution(x: &[Q; 7]) -> Q {
+    &x[5] - &x[4] - &x[6] * (&x[2] - &x[3])
+}
+
+/// `law` with `var` set to `t` (all else as in `x`).
+fn at(law: Law, x: &[Q; 7], var: Var, t: &Q) -> Q {
+    let mut y = x.clone();
+    y[var as usize] = t.clone();
+    law(&y)
+}
+
+/// Solves `law = 0` for `var` (the law is linear in it): `Ok(None)` when any value satisfies it.
+fn solve_one(
+    law: fn(&[Q; 7]) -> Q,
+    x: &[Q; 7],
+    var: Var,
+    what: &str,
+) -> Result<Option<Q>, UnknownError> {
+    let b = at(law, x, var, &Q::zero());
+    let a = at(law, x, var, &Q::one()) - &b;
+    if a.is_zero() {
+        return if b.is_zero() {
+            Ok(None)
+        } else {
+            Err(UnknownError::None(format!(
+                "{what} does not involve {var} here and does not hold"
+            )))
+        };
+    }
+    Ok(Some(-b / a))
+}
+
+/// Solves for the unknown (`None`) entries of `known`.
+pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
+    let unknowns: Vec<Var> = Var::ALL
+        .into_iter()
+        .filter(|v| known[*v as usize].is_none())
+        .collect();
+    if unknowns.len() > 2 {
+        let names: Vec<&str> = unknowns.iter().map(|v| v.name()).collect();
+        return Err(UnknownError::TooMany(unknowns.len(), names.join(", ")));
+    }
+    let mut x: [Q; 7] = known.map(|v| v.unwrap_or_default());
+    let set = |x: &mut [Q; 7], v: Var, q: Q| x[v as usize] = q;
+    let many = |why: String| Err(UnknownError::Many(why));
+    let mut checks = Vec::new();
+    match unknowns.as_slice() {
+        [] => {}
+        [u] => {
+            // One law gives it; the other is checked.
+            let (law, other, lname, oname): (Law, Law, _, _) = if *u == Var::E {
+                (restitution, momentum, "restitution", "momentum")
+            } else {
+                (momentum, restitution, "momentum", "restitution")
+            };
+            match solve_one(law, &x, *u, lname)? {
+                Some(q) => set(&mut x, *u, q),
+                None if *u == Var::E => {
+                    return many(
+                        "V1 = V2 and f1 = f2: the bodies never meet, so e is not determined".into(),
+                    );
+                }
+                None => return many(format!("{lname} holds for any {u}")),
+            }
+            checks.push((oname, other(&x)));
+        }
+        [a, b] if *a == Var::E || *b == Var::E => {
+            let other = if *a == Var::E { *b } else { *a };
+            match solve_one(momentum, &x, other, "momentum")? {
+                Some(q) => set(&mut x, other, q),
+                None => return many(format!("momentum holds for any {other}")),
+            }
+            match solve_one(restitution, &x, Var::E, "restitution")? {
+                Some(q) => set(&mut x, Var::E, q),
+                None => {
+                    return many(
+                        "V1 = V2 and f1 = f2: the bodies never meet, so e is not determined".into(),
+                    );
+                }
+            }
+        }
+        [a, b] if a.is_mass() && b.is_mass() => {
+            if !restitution(&x).is_zero() {
+                return Err(UnknownError::None(
+                    "restitution does not hold for the given velocities".into(),
+                ));
+            }
+            // m1 (v1 - f1) + m2 (v2 - f2) = 0 fixes only the ratio.
+            let ratio = if (&x[2] - &x[4]).is_zero() {
+                "any".to_string()
+            } else {
+                crate::quantity::fraction(&((&x[5] - &x[3]) / (&x[2] - &x[4])))
+            };
+            return many(format!(
+                "momentum fixes only the ratio m1/m2 = {ratio}; give one mass"
+            ));
+        }
+        [a, b] if a.is_mass() || b.is_mass() => {
+            let (mass, vel) = if a.is_mass() { (*a, *b) } else { (*b, *a) };
+            match solve_one(restitution, &x, vel, "restitution")? {
+                Some(q) => set(&mut x, vel, q),
+                None => {
+                    return many(format!(
+                        "with e = 0, restitution does not fix {vel}, and momentum fixes only {mass} {vel}"
+                    ));
+                }
+            }
+            match solve_one(momentum, &x, mass, "momentum")? {
+                Some(q) => set(&mut x, mass, q),
+                None => return many(format!("momentum holds for any {mass}")),
+            }
+        }
+        [a, b] => {
+            // Two velocities: momentum and restitution are linear in both.
+            let (a, b) = (*a, *b);
+            let z = |law: Law, p: &Q, q: &Q| {
+                let mut y = x.clone();
+                y[a as usize] = p.clone();
+                y[b as usize] = q.clone();
+                law(&y)
+            };
+            let (zero, one) = (Q::zero(), Q::one());
+            let coeffs = |law: Law| {
+                let c = z(law, &zero, &zero);
+                (z(law, &one, &zero) - &c, z(law, &zero, &one) - &c, c)
+            };
+            let (p1, q1, c1) = coeffs(momentum);
+            let (p2, q2, c2) = coeffs(restitution);
+            let det = &p1 * &q2 - &q1 * &p2;
+            if det.is_zero() {
+                return many(format!(
+                    "momentum and restitution do not fix {a} and {b} separately"
+                ));
+            }
+            set(&mut x, a, (&q1 * &c2 - &q2 * &c1) / &det);
+            set(&mut x, b, (&p2 * &c1 - &p1 * &c2) / &det);
+        }
+        _ => unreachable!("more than two unknowns were refused above"),
+    }
+    if unknowns.is_empty() {
+        checks.push(("momentum", momentum(&x)));
+        checks.push(("restitution", restitution(&x)));
+    }
+    // Physical: positive masses, e in [0, 1].
+    for m in [Var::M1, Var::M2] {
+        if !x[m as usize].is_positive() {
+            return Err(UnknownError::Unphysical(format!(
+                "{m} = {} is not a positive mass: no bodies collide that way",
+                crate::quantity::fraction(&x[m as usize])
+            )));
+        }
+    }
+    let e = &x[Var::E as usize];
+    if e.is_negative() {
+        return Err(UnknownError::Unphysical(format!(
+            "e = {} < 0: the bodies would pass through each other",
+            crate::quantity::fraction(e)
+        )));
+    }
+    if e > &Q::one() {
+        return Err(UnknownError::Unphysical(format!(
+            "e = {} > 1: the collision would create energy",
+            crate::quantity::fraction(e)
+        )));
+    }
+    Ok(Solved {
+        values: x,
+        unknowns,
+        checks,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(s: &str) -> Option<Q> {
+        (s != "?").then(|| s.parse::<crate::number::Number>().unwrap().exact())
+    }
+
+    /// m1 m2 v1 v2 f1 f2 e, "?" for unknown.
+    fn run(vals: [&str; 7]) -> Result<Solved, UnknownError> {
+        solve(vals.map(q))
+    }
+
+    fn show(s: &Solved, v: Var) -> String {
+        crate::quantity::fraction(s.get(v))
+    }
+
+    #[test]
+    fn every_pair_of_unknowns_in_case_a() {
+        // Fig. 1.3, elastic: m = (4, 1), V = (60, 10), FIN = (40, 90), e = 1.
+        let full = ["4", "1", "60", "10", "40", "90", "1"];
+        for i in 0..7 {
+            for j in (i + 1)..7 {
+                let mut p = full;
+                p[i] = "?";
+                p[j] = "?";
+                let (a, b) = (Var::ALL[i], Var::ALL[j]);
+                match run(p) {
+                    Ok(s) => {
+                        assert_eq!(
+                            (show(&s, a), show(&s, b)),
+                            (full[i].to_string(), full[j].to_string()),
+                            "{a}, {b}"
+                        );
+                    }
+                    Err(UnknownError::Many(_)) => {
+                        assert!(a.is_mass() && b.is_mass(), "{a}, {b} should be solvable")
+                    }
+                    Err(e) => panic!("{a}, {b}: {e}"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_pair_of_unknowns_in_case_b_ka_whump() {
+        // Fig. 2.3, e = 2/3: m = (6, 1), V = (3, -4), FIN = (4/3, 6).
+        let full = ["6", "1", "3", "-4", "4/3", "6", "2/3"];
+        for i in 0..7 {
+            for j in (i + 1)..7 {
+                let mut p = full;
+                p[i] = "?";
+                p[j] = "?";
+                let (a, b) = (Var::ALL[i], Var::ALL[j]);
+                match run(p) {
+                    Ok(s) => assert_eq!(
+                        (show(&s, a), show(&s, b)),
+                        (full[i].to_string(), full[j].to_string()),
+                        "{a}, {b}"
+                    ),
+                    Err(UnknownError::Many(m)) => {
+                        assert!(a.is_mass() && b.is_mass(), "{a}, {b}: {m}");
+                        assert!(m.contains("m1/m2 = 6"), "{m}");
+                    }
+                    Err(e) => panic!("{a}, {b}: {e}"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn one_unknown_is_a_consistency_check() {
+        // f2 from momentum; restitution checked: it holds exactly for e = 1.
+        let s = run(["4", "1", "60", "10", "40", "?", "1"]).unwrap();
+        assert_eq!(show(&s, Var::F2), "90");
+        assert_eq!(s.checks, vec![("restitution", Q::zero())]);
+        // With e = 1/2 given, momentum gives f2 = 90 but restitution misses by 25.
+        let s = run(["4", "1", "60", "10", "40", "?", "1/2"]).unwrap();
+        assert_eq!(crate::quantity::fraction(&s.checks[0].1), "25");
+    }
+
+    #[test]
+    fn none_many_and_unphysical_say_why() {
+        // Too many.
+        assert!(matches!(
+            run(["?", "?", "?", "10", "40", "90", "1"]),
+            Err(UnknownError::TooMany(3, _))
+        ));
+        // Equal IN velocities: e is not determined.
+        let e = run(["1", "1", "5", "5", "5", "5", "?"]).unwrap_err();
+        assert!(
+            matches!(e, UnknownError::Many(_)) || matches!(e, UnknownError::None(_)),
+            "{e}"
+        );
+        // Negative mass: FIN (40, 90) from m1 = 4, V = (60, 10) needs m2 = 1; asking for FIN (70, 90)...
+        let e = run(["4", "?", "60", "10", "70", "90", "?"]).unwrap_err();
+        assert!(
+            matches!(e, UnknownError::Unphysical(_)) && e.to_string().contains("m2"),
+            "{e}"
+        );
+        // Bodies passing through each other: f1 > f2 after an approach.
+        let e = run(["4", "1", "60", "10", "?", "?", "1.5"]).unwrap_err();
+        assert!(e.to_string().contains("create energy"), "{e}");
+        let e = run(["4", "1", "60", "10", "55", "30", "?"]).unwrap_err();
+        assert!(e.to_string().contains("pass through each other"), "{e}");
+        // e = 0 with a mass and an IN velocity unknown: restitution cannot fix the velocity.
+        let e = run(["?", "1", "?", "10", "50", "50", "0"]).unwrap_err();
+        assert!(matches!(e, UnknownError::Many(_)), "{e}");
+    }
+}
