@@ -237,10 +237,16 @@ fn decorate(
     };
     if case.units != crate::units::Units::default() {
         let u = &case.units;
-        o.insert(
-            "units".into(),
-            serde_json::json!({"mass": u.mass, "velocity": u.velocity, "energy": u.energy()}),
-        );
+        // Only the units given ("as given" values have none).
+        let mut units = serde_json::Map::new();
+        if let Some(m) = u.mass {
+            units.insert("mass".into(), m.into());
+        }
+        if let Some(v) = u.velocity {
+            units.insert("velocity".into(), v.into());
+        }
+        units.insert("energy".into(), u.energy().into());
+        o.insert("units".into(), serde_json::Value::Object(units));
     }
     if let Some(s) = solved {
         for (k, v) in solved_json(s, exact) {

@@ -192,6 +192,25 @@ fn units_are_kept_converted_or_refused() {
         &["ambiguous", "'t'", "'ton'"],
     );
     refused(&["-m", "4 kg,1", "-v", "1,2"], &["every mass or for none"]);
+    // Units on the masses only: no null in JSON, and the text says the velocities are as given.
+    let j = json(&["-m", "7 ton,6 ton", "-v", "90,10", "--show", "vectors"]);
+    assert_eq!(
+        j["units"],
+        serde_json::json!({"mass": "ton", "energy": "ton x (velocity unit)^2"})
+    );
+    let text = stdout(&[
+        "solve",
+        "-m",
+        "7 ton,6 ton",
+        "-v",
+        "90,10",
+        "--show",
+        "vectors",
+    ]);
+    assert!(
+        text.contains("Units: masses in ton, velocities as given"),
+        "{text}"
+    );
     refused(&["-m", "4,1", "-v", "1,2", "--si"], &["--si needs a unit"]);
     refused(&["-m", "1e999,1", "-v", "1,2"], &["'1e999'", "too large"]);
 }

@@ -167,7 +167,7 @@ proptest! {
 
     /// No string makes a parser panic; whatever parses is finite.
     #[test]
-    fn parsers_never_panic(s in any::<String>(), t in "[-+0-9eE./, ;a-z]{0,24}") {
+    fn parsers_never_panic(s in any::<String>(), t in "[-+0-9eE./, ;a-z?]{0,24}") {
         for text in [&s, &t] {
             if let Ok(n) = text.parse::<Number>() {
                 prop_assert!(n.value().is_finite());
@@ -176,6 +176,10 @@ proptest! {
             let _ = parse_masses(text);
             let _ = parse_velocities(text);
             let _ = parse_inertia(text);
+            for d in [collide::units::Dimension::Mass, collide::units::Dimension::Velocity] {
+                let _ = collide::units::parse(text, d);
+                let _ = collide::units::parse_pair(text, d, "values");
+            }
             if let Ok(e) = text.parse::<Restitution>() {
                 prop_assert!((0.0..=1.0).contains(&e.value()));
             }

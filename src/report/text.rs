@@ -84,9 +84,12 @@ fn header(case: &Case) -> String {
         e.kind()
     );
     let u = &case.units;
-    if let (Some(m), Some(v)) = (u.mass, u.velocity) {
+    if u.mass.is_some() || u.velocity.is_some() {
+        let given = |unit: Option<&str>| unit.map_or("as given".to_string(), |n| format!("in {n}"));
         out.push_str(&format!(
-            "Units: masses in {m}, velocities in {v}, energies in {}\n",
+            "Units: masses {}, velocities {}, energies in {}\n",
+            given(u.mass),
+            given(u.velocity),
             u.energy()
         ));
     }
