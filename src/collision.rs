@@ -34,11 +34,6 @@ impl Collision {
         }
     }
 
-    /// Whether the bodies have a relative velocity (`V1 != V2`), so crunch energy is not zero.
-    pub fn moving_apart(&self) -> bool {
-        self.v_in.x != self.v_in.y
-    }
-
     /// Relative velocity `V1 - V2` at IN.
     pub fn relative_velocity(&self) -> f64 {
         self.v_in.x - self.v_in.y

@@ -143,11 +143,6 @@ impl Number {
         }
     }
 
-    /// Whether this number was typed as text (rather than made from a binary64).
-    pub fn is_typed(&self) -> bool {
-        self.text.is_some()
-    }
-
     /// The typed value as an exact rational (a binary64-born number: its exact binary value).
     pub fn exact(&self) -> BigRational {
         let Some(text) = &self.text else {

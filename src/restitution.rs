@@ -51,12 +51,6 @@ impl Restitution {
             "ka-whump"
         }
     }
-
-    /// `1 - e^2` as `(1 - e)(1 + e)`, exact in its first factor for `e` near 1.
-    pub fn loss_factor(&self) -> f64 {
-        let e = self.value();
-        (1.0 - e) * (1.0 + e)
-    }
 }
 
 impl FromStr for Restitution {
@@ -111,12 +105,5 @@ mod tests {
         }
         let e = "bouncy".parse::<Restitution>().unwrap_err();
         assert!(e.contains("'bouncy'") && e.contains("elastic"), "{e}");
-    }
-
-    #[test]
-    fn loss_factor_near_elastic() {
-        let e: Restitution = "0.9999999".parse().unwrap();
-        let exact = (1.0 - 0.9999999f64) * (1.0 + 0.9999999);
-        assert_eq!(e.loss_factor(), exact);
     }
 }
