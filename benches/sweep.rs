@@ -10,11 +10,14 @@ use std::hint::black_box;
 use std::io;
 use std::time::Instant;
 
-use collide::app::write_sweep;
 use collide::case::{Case, parse_masses, parse_velocities};
 use collide::inertia::InertiaTensor;
-use collide::rows::{Column, Progress, RowCase, RowFormat, RowWriter, solve_row};
-use collide::sweep::{Grid, Shard};
+use collide::output::Progress;
+use collide::table::columns::Column;
+use collide::table::engine::{solve_row, write_sweep};
+use collide::table::row::RowCase;
+use collide::table::sweep::{Grid, Shard};
+use collide::table::writer::{RowFormat, RowWriter};
 
 fn median(mut xs: Vec<f64>) -> f64 {
     xs.sort_by(f64::total_cmp);

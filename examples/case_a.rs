@@ -4,9 +4,9 @@
 //!     cargo run --example case_a
 
 use collide::case::{Case, parse_masses, parse_velocities};
-use collide::frame::Observed;
 use collide::inertia::InertiaTensor;
 use collide::report::{Report, Section, Sections};
+use collide::solver::binary64::Binary64;
 
 fn main() -> anyhow::Result<()> {
     let [m1, m2] = parse_masses("4,1").map_err(anyhow::Error::msg)?;
@@ -19,7 +19,7 @@ fn main() -> anyhow::Result<()> {
             e.parse().map_err(anyhow::Error::msg)?,
         );
         let r = Report::build(
-            &Observed::lab(&case.collision),
+            &Binary64::lab(&case.collision),
             &Sections::new([Section::All]),
         )?;
         let (v, m, f) = (r.vectors.unwrap(), r.momentum.unwrap(), r.forms.unwrap());

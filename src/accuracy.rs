@@ -12,11 +12,13 @@ use serde::Serialize;
 
 use crate::collision::Collision;
 use crate::compensated::exponent;
-use crate::exact::ExactCollision;
 use crate::inertia::InertiaTensor;
 use crate::number::Number;
 use crate::quantity::{from_f64, to_f64};
 use crate::restitution::Restitution;
+use crate::solver::Solver;
+use crate::solver::binary64::Binary64;
+use crate::solver::exact::ExactCollision;
 
 /// A way to compute FIN, the crunch energy and the energy lost.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
@@ -66,11 +68,11 @@ pub struct Outcome {
 pub fn solve(method: Method, c: &Collision) -> Outcome {
     match method {
         Method::Impulse => {
-            let f = c.v_fin();
+            let s = Binary64::lab(c);
             Outcome {
-                fin: [f.x, f.y],
-                crunch: c.crunch(),
-                lost: c.energy_lost(),
+                fin: s.v_fin(),
+                crunch: s.crunch(),
+                lost: s.lost(),
             }
         }
         Method::Textbook => textbook(c),
@@ -291,6 +293,14 @@ fn diag(m1: f64, m2: f64, v: [f64; 2], e: f64) -> Option<Collision> {
     case([[m1, 0.0], [0.0, m2]], v, e)
 }
 
+/// A diagonal case with masses `10^[-decades, decades)` each, velocities `v`, and the `i`-th
+/// restitution of the cycle.
+fn random_masses(r: &mut Rng, decades: f64, v: [f64; 2], i: usize) -> Option<Collision> {
+    let m1 = r.log_uniform(-decades, decades);
+    let m2 = r.log_uniform(-decades, decades);
+    diag(m1, m2, v, r.restitution(i))
+}
+
 /// The families of `collide accuracy` and of the accuracy tests: `n` cases each (the lecture
 /// family has its five).
 pub fn families(seed: u64, n: usize) -> Vec<Family> {
@@ -318,12 +328,7 @@ pub fn families(seed: u64, n: usize) -> Vec<Family> {
         "masses 1e-3..1e3, velocities -100..100",
         &mut |r, i| {
             let v = [r.uniform(-100.0, 100.0), r.uniform(-100.0, 100.0)];
-            diag(
-                r.log_uniform(-3.0, 3.0),
-                r.log_uniform(-3.0, 3.0),
-                v,
-                r.restitution(i),
-            )
+            random_masses(r, 3.0, v, i)
         },
     );
     let ratio = make(
@@ -373,12 +378,7 @@ pub fn families(seed: u64, n: usize) -> Vec<Family> {
         &mut |r, i| {
             let w = r.log_uniform(6.0, 15.0) * r.sign();
             let v = [w + r.uniform(-1.0, 1.0), w + r.uniform(-1.0, 1.0)];
-            diag(
-                r.log_uniform(-2.0, 2.0),
-                r.log_uniform(-2.0, 2.0),
-                v,
-                r.restitution(i),
-            )
+            random_masses(r, 2.0, v, i)
         },
     );
     let grazing = make(
@@ -391,12 +391,7 @@ pub fn families(seed: u64, n: usize) -> Vec<Family> {
                 1 => [-x.abs(), x.abs()],
                 _ => [x, x * (1.0 + r.log_uniform(-15.0, -8.0) * r.sign())],
             };
-            diag(
-                r.log_uniform(-2.0, 2.0),
-                r.log_uniform(-2.0, 2.0),
-                v,
-                r.restitution(i),
-            )
+            random_masses(r, 2.0, v, i)
         },
     );
     let general = make(

@@ -4,8 +4,8 @@
 use nalgebra::Vector2;
 
 use crate::collision::Collision;
-use crate::inertia::{InertiaTensor, Mass};
-use crate::number::{Number, split_fields};
+use crate::inertia::{InertiaError, InertiaTensor, Mass, MassError};
+use crate::number::{FieldsError, Number, NumberError, split_fields};
 use crate::restitution::Restitution;
 
 /// A validated two-body case.
@@ -36,38 +36,49 @@ impl Case {
     }
 }
 
+/// Why a text is not a case's masses, velocities or tensor.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum CaseError {
+    #[error(transparent)]
+    Fields(#[from] FieldsError),
+    #[error(transparent)]
+    Mass(#[from] MassError),
+    #[error("velocity {0}")]
+    Velocity(NumberError),
+    #[error("expected 2 rows separated by ';' (M11,M12;M21,M22), got {rows} in '{text}'")]
+    Rows { rows: usize, text: String },
+    #[error("inertia entry {0}")]
+    Entry(NumberError),
+    #[error(transparent)]
+    Inertia(#[from] InertiaError),
+}
+
 /// `M1,M2` (as typed on the command line).
-pub fn parse_masses(text: &str) -> Result<[Mass; 2], String> {
+pub fn parse_masses(text: &str) -> Result<[Mass; 2], CaseError> {
     let [a, b] = split_fields::<2>(text, "masses M1,M2")?;
     Ok([a.parse()?, b.parse()?])
 }
 
 /// `V1,V2`.
-pub fn parse_velocities(text: &str) -> Result<[Number; 2], String> {
+pub fn parse_velocities(text: &str) -> Result<[Number; 2], CaseError> {
     let [a, b] = split_fields::<2>(text, "velocities V1,V2")?;
-    let v = |s: &str| s.parse::<Number>().map_err(|e| format!("velocity {e}"));
+    let v = |s: &str| s.parse::<Number>().map_err(CaseError::Velocity);
     Ok([v(a)?, v(b)?])
 }
 
 /// `M11,M12;M21,M22`: a symmetric positive definite tensor.
-pub fn parse_inertia(text: &str) -> Result<InertiaTensor, String> {
+pub fn parse_inertia(text: &str) -> Result<InertiaTensor, CaseError> {
     let rows: Vec<&str> = text.split(';').collect();
-    let [r1, r2]: [&str; 2] = rows.try_into().map_err(|rows: Vec<&str>| {
-        format!(
-            "expected 2 rows separated by ';' (M11,M12;M21,M22), got {} in '{}'",
-            rows.len(),
-            text.trim()
-        )
+    let [r1, r2]: [&str; 2] = rows.try_into().map_err(|rows: Vec<&str>| CaseError::Rows {
+        rows: rows.len(),
+        text: text.trim().to_string(),
     })?;
-    let row = |r: &str| -> Result<[Number; 2], String> {
+    let row = |r: &str| -> Result<[Number; 2], CaseError> {
         let [a, b] = split_fields::<2>(r, "entries in each row of M11,M12;M21,M22")?;
-        let n = |s: &str| {
-            s.parse::<Number>()
-                .map_err(|e| format!("inertia entry {e}"))
-        };
+        let n = |s: &str| s.parse::<Number>().map_err(CaseError::Entry);
         Ok([n(a)?, n(b)?])
     };
-    InertiaTensor::general([row(r1)?, row(r2)?]).map_err(|e| e.to_string())
+    Ok(InertiaTensor::general([row(r1)?, row(r2)?])?)
 }
 
 #[cfg(test)]
@@ -86,17 +97,17 @@ mod tests {
 
     #[test]
     fn names_the_bad_value() {
-        let e = parse_masses("4,abc").unwrap_err();
+        let e = parse_masses("4,abc").unwrap_err().to_string();
         assert!(e.contains("'abc'"), "{e}");
-        let e = parse_masses("4").unwrap_err();
+        let e = parse_masses("4").unwrap_err().to_string();
         assert!(e.contains("expected 2") && e.contains("got 1"), "{e}");
-        let e = parse_velocities("1,2,3").unwrap_err();
+        let e = parse_velocities("1,2,3").unwrap_err().to_string();
         assert!(e.contains("got 3"), "{e}");
-        let e = parse_inertia("4,0.5;0.4,1").unwrap_err();
+        let e = parse_inertia("4,0.5;0.4,1").unwrap_err().to_string();
         assert!(e.contains("not symmetric"), "{e}");
-        let e = parse_inertia("1,2;2,1").unwrap_err();
+        let e = parse_inertia("1,2;2,1").unwrap_err().to_string();
         assert!(e.contains("not positive definite"), "{e}");
-        let e = parse_inertia("1,0").unwrap_err();
+        let e = parse_inertia("1,0").unwrap_err().to_string();
         assert!(e.contains("2 rows"), "{e}");
     }
 }

@@ -1,20 +1,24 @@
-//! Command-line flags (clap derive). Values are parsed and validated here, at the edge: a bad
-//! value is a usage error (exit 2) that names it and says what is expected.
+//! Command-line flags (clap derive). Values are parsed and validated here, at the edge, by the
+//! library types' own parsers: a bad value is a usage error (exit 2) that names it and says what
+//! is expected.
 
+use std::ffi::OsStr;
 use std::path::PathBuf;
 
+use clap::builder::{PossibleValue, StringValueParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use crate::batch::InputFormat;
-use crate::case::parse_inertia;
-use crate::frame::Frame;
-use crate::inertia::InertiaTensor;
-use crate::number::{Number, NumberList};
-use crate::report::Section;
-use crate::restitution::Restitution;
-use crate::rows::{Column, RowFormat};
-use crate::sweep::{Shard, Vary};
-use crate::units::{Dimension, Pair, parse_pair};
+use collide::case::parse_inertia;
+use collide::frame::Frame;
+use collide::inertia::InertiaTensor;
+use collide::number::{Given, Number, NumberList};
+use collide::report::Section;
+use collide::restitution::Restitution;
+use collide::table::batch::InputFormat;
+use collide::table::columns::{COLUMNS, Column};
+use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
+use collide::table::writer::RowFormat;
+use collide::units::{Dimension, Pair, parse_pair};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -56,12 +60,11 @@ pub struct PlotArgs {
     pub case: CaseArgs,
 
     /// Which picture
-    #[arg(long, value_enum, default_value_t = crate::plot::Kind::Velocity)]
-    pub kind: crate::plot::Kind,
+    #[arg(long, value_enum, default_value_t = collide::plot::Kind::Velocity)]
+    pub kind: collide::plot::Kind,
 
     /// The frame to draw in: lab, com, rest-in:1, ..., or an observer velocity
-    #[arg(long, default_value = "lab", allow_hyphen_values = true,
-          value_parser = clap::value_parser!(Frame))]
+    #[arg(long, default_value = "lab", allow_hyphen_values = true)]
     pub frame: Frame,
 
     /// Overlay the standard frames as 45-degree-shifted copies (lecture Fig. 2.5)
@@ -80,21 +83,24 @@ pub struct PlotArgs {
 #[derive(Args, Debug)]
 pub struct TrackArgs {
     /// Masses, left to right, e.g. 1,100
-    #[arg(short, long, value_name = "M1,M2,...", value_parser = clap::value_parser!(NumberList))]
+    #[arg(short, long, value_name = "M1,M2,...")]
     pub masses: NumberList,
 
     /// Positions of the bodies' centres, increasing left to right, e.g. 1,2
-    #[arg(short = 'x', long, value_name = "X1,X2,...", allow_hyphen_values = true,
-          value_parser = clap::value_parser!(NumberList))]
+    #[arg(
+        short = 'x',
+        long,
+        value_name = "X1,X2,...",
+        allow_hyphen_values = true
+    )]
     pub positions: NumberList,
 
     /// Velocities, e.g. 0,-1
-    #[arg(short, long, value_name = "V1,V2,...", allow_hyphen_values = true,
-          value_parser = clap::value_parser!(NumberList))]
+    #[arg(short, long, value_name = "V1,V2,...", allow_hyphen_values = true)]
     pub velocities: NumberList,
 
     /// Sizes (lengths along the track) [default: 0, points]
-    #[arg(long, value_name = "S1,S2,...", value_parser = clap::value_parser!(NumberList))]
+    #[arg(long, value_name = "S1,S2,...")]
     pub sizes: Option<NumberList>,
 
     /// A wall (an immovable body) at this position, left of every body; the floor under gravity
@@ -106,12 +112,11 @@ pub struct TrackArgs {
     pub right_wall: Option<Number>,
 
     /// Restitution between bodies: a number in [0, 1], 'elastic' or 'inelastic'
-    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
-          value_parser = clap::value_parser!(Restitution))]
+    #[arg(short = 'e', long, value_name = "E", default_value = "elastic")]
     pub restitution: Restitution,
 
     /// Restitution at the walls [default: the same as between bodies]
-    #[arg(long, value_name = "E", value_parser = clap::value_parser!(Restitution))]
+    #[arg(long, value_name = "E")]
     pub wall_restitution: Option<Restitution>,
 
     /// Uniform acceleration toward the left (the left wall is a floor, positions are heights)
@@ -123,7 +128,7 @@ pub struct TrackArgs {
     pub until: Option<Number>,
 
     /// Stop after this many collisions
-    #[arg(long, value_name = "N", default_value_t = crate::scene::DEFAULT_MAX_COLLISIONS)]
+    #[arg(long, value_name = "N", default_value_t = collide::track::DEFAULT_MAX_COLLISIONS)]
     pub max_collisions: u64,
 
     /// Write every collision (time, who, velocities before and after) to FILE ('-': stderr)
@@ -132,7 +137,7 @@ pub struct TrackArgs {
 
     /// Format of the log [default: jsonl for a .jsonl file, else csv]
     #[arg(long, value_enum)]
-    pub log_format: Option<crate::batch::InputFormat>,
+    pub log_format: Option<InputFormat>,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
@@ -143,11 +148,9 @@ pub struct TrackArgs {
 #[derive(Args, Debug, Clone)]
 pub struct TableArgs {
     /// Columns, comma-separated [default: the inputs, fin1, fin2, v_com, ke_in, ke_fin, crunch,
-    /// lost] [possible values: m1, m2, m11, m12, m22, v1, v2, e, fin1, fin2, v_com, p_total,
-    /// ke_in, ke_fin, ke_com, crunch, lost, mu, in_m_in, fin_m_in, fin_m_fin, com_m_in]
-    #[arg(long, value_delimiter = ',', value_name = "COLUMNS",
-          value_parser = clap::value_parser!(Column))]
-    pub columns: Vec<Column>,
+    /// lost]
+    #[arg(long, value_delimiter = ',', value_name = "COLUMNS", value_parser = ColumnParser)]
+    pub columns: Vec<&'static Column>,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = RowFormat::Csv)]
@@ -169,17 +172,21 @@ pub struct SweepArgs {
 
     /// A parameter to vary: NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or NAME=a,b,c, with NAME
     /// one of m1, m2, v1, v2, e; repeat for a cartesian product (the last varies fastest)
-    #[arg(long, required = true, value_name = "NAME=RANGE", allow_hyphen_values = true,
-          value_parser = clap::value_parser!(Vary))]
+    #[arg(
+        long,
+        required = true,
+        value_name = "NAME=RANGE",
+        allow_hyphen_values = true
+    )]
     pub vary: Vec<Vary>,
 
     /// Only the K-th of N contiguous slices of the rows (K from 1); the shards concatenated in
     /// order are the whole table (shard 1 carries the header)
-    #[arg(long, value_name = "K/N", default_value = "1/1", value_parser = clap::value_parser!(Shard))]
+    #[arg(long, value_name = "K/N", default_value = "1/1")]
     pub shard: Shard,
 
     /// Refuse sweeps of more rows than this
-    #[arg(long, value_name = "N", default_value_t = 10_000_000_000)]
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_ROWS)]
     pub max_rows: u64,
 
     #[command(flatten)]
@@ -197,26 +204,46 @@ pub struct BatchArgs {
     pub input_format: Option<InputFormat>,
 
     /// Restitution for rows without an e column
-    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
-          value_parser = clap::value_parser!(Restitution), allow_hyphen_values = true)]
+    #[arg(
+        short = 'e',
+        long,
+        value_name = "E",
+        default_value = "elastic",
+        allow_hyphen_values = true
+    )]
     pub restitution: Restitution,
 
     #[command(flatten)]
     pub table: TableArgs,
 }
 
-macro_rules! parse_with_from_str {
-    ($($t:ty),*) => {$(
-        impl clap::builder::ValueParserFactory for $t {
-            type Parser = fn(&str) -> Result<$t, String>;
-            fn value_parser() -> Self::Parser {
-                |s| s.parse::<$t>().map_err(|e| e.to_string())
-            }
-        }
-    )*};
-}
+/// `--columns` words: parsed by the library's column table, which also gives clap the possible
+/// values and their help.
+#[derive(Clone, Copy, Debug)]
+pub struct ColumnParser;
 
-parse_with_from_str!(Column, Vary, Shard, NumberList, Number);
+impl TypedValueParser for ColumnParser {
+    type Value = &'static Column;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<&'static Column, clap::Error> {
+        StringValueParser::new()
+            .try_map(|s| s.parse::<&'static Column>())
+            .parse_ref(cmd, arg, value)
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        Some(Box::new(
+            COLUMNS
+                .iter()
+                .map(|c| PossibleValue::new(c.name).help(c.help)),
+        ))
+    }
+}
 
 #[derive(Args, Debug)]
 pub struct FramesArgs {
@@ -224,8 +251,7 @@ pub struct FramesArgs {
     pub case: CaseArgs,
 
     /// More frames to add as rows: com, rest-in:1, rest-fin:2, ..., or an observer velocity
-    #[arg(long, value_name = "FRAME", allow_hyphen_values = true,
-          value_parser = clap::value_parser!(Frame))]
+    #[arg(long, value_name = "FRAME", allow_hyphen_values = true)]
     pub frame: Vec<Frame>,
 
     /// Add a column saying whether the time-reversed collision equals the original
@@ -239,13 +265,6 @@ pub struct FramesArgs {
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
-}
-
-impl clap::builder::ValueParserFactory for Frame {
-    type Parser = fn(&str) -> Result<Frame, String>;
-    fn value_parser() -> Self::Parser {
-        |s| s.parse()
-    }
 }
 
 #[derive(Args, Debug)]
@@ -265,7 +284,7 @@ pub struct AccuracyArgs {
         value_delimiter = ',',
         default_value = "impulse,textbook,quadratic,tensor,exact"
     )]
-    pub methods: Vec<crate::accuracy::Method>,
+    pub methods: Vec<collide::accuracy::Method>,
 
     /// Also draw the error-vs-time scatter to FILE.svg
     #[arg(long, value_name = "FILE.svg")]
@@ -300,24 +319,13 @@ pub struct CaseArgs {
 
     /// Coefficient of restitution in [0, 1], 'elastic' (1) or 'inelastic' (0), or '?' (solve)
     /// [default: elastic; unknown when --fin is given]
-    #[arg(short = 'e', long, value_name = "E", value_parser = parse_restitution_slot, allow_hyphen_values = true)]
-    pub restitution: Option<RestitutionSlot>,
+    #[arg(short = 'e', long, value_name = "E", allow_hyphen_values = true,
+          value_parser = |s: &str| Given::parse(s, str::parse::<Restitution>))]
+    pub restitution: Option<Given<Restitution>>,
 
     /// Convert every value with a unit to kg, m/s and J
     #[arg(long)]
     pub si: bool,
-}
-
-/// A restitution, or `None` for `?` (unknown).
-#[derive(Clone, Debug, PartialEq)]
-pub struct RestitutionSlot(pub Option<Restitution>);
-
-fn parse_restitution_slot(s: &str) -> Result<RestitutionSlot, String> {
-    if s.trim() == "?" {
-        Ok(RestitutionSlot(None))
-    } else {
-        s.parse().map(|r| RestitutionSlot(Some(r)))
-    }
 }
 
 #[derive(Args, Debug)]
@@ -341,8 +349,7 @@ pub struct SolveArgs {
 
     /// The frame to see the collision from: lab, com, rest-in:1, rest-in:2, rest-fin:1,
     /// rest-fin:2, or an observer velocity
-    #[arg(long, default_value = "lab", allow_hyphen_values = true,
-          value_parser = clap::value_parser!(Frame))]
+    #[arg(long, default_value = "lab", allow_hyphen_values = true)]
     pub frame: Frame,
 
     /// Also print the time-reversed collision (IN' = -FIN, FIN' = -IN)
@@ -381,11 +388,4 @@ pub enum Format {
     Text,
     /// One JSON object (stable schema, see README)
     Json,
-}
-
-impl clap::builder::ValueParserFactory for Restitution {
-    type Parser = fn(&str) -> Result<Restitution, String>;
-    fn value_parser() -> Self::Parser {
-        |s| s.parse()
-    }
 }

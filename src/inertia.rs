@@ -6,18 +6,35 @@
 use nalgebra::{Cholesky, Matrix2, SymmetricEigen, Vector2};
 
 use crate::compensated::{Dd, diff_of_products, dot2, exponent, pow2, sum2, two_prod, two_sum};
-use crate::number::Number;
+use crate::number::{Number, NumberError};
 
 /// A body's mass: a finite number > 0.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Mass(Number);
 
+/// Why a value is not a mass.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum MassError {
+    #[error("mass '{0}' must be greater than 0")]
+    NotPositive(String),
+    #[error("mass {0}")]
+    Number(NumberError),
+}
+
+// Not `#[from]`: that would make the number error the source too, and the error chain would
+// print it twice.
+impl From<NumberError> for MassError {
+    fn from(e: NumberError) -> MassError {
+        MassError::Number(e)
+    }
+}
+
 impl Mass {
-    pub fn new(n: Number) -> Result<Mass, String> {
+    pub fn new(n: Number) -> Result<Mass, MassError> {
         if n.value() > 0.0 {
             Ok(Mass(n))
         } else {
-            Err(format!("mass '{n}' must be greater than 0"))
+            Err(MassError::NotPositive(n.to_string()))
         }
     }
     pub fn value(&self) -> f64 {
@@ -29,10 +46,9 @@ impl Mass {
 }
 
 impl std::str::FromStr for Mass {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Mass, String> {
-        let n: Number = s.parse().map_err(|e| format!("mass {e}"))?;
-        Mass::new(n)
+    type Err = MassError;
+    fn from_str(s: &str) -> Result<Mass, MassError> {
+        Mass::new(s.parse()?)
     }
 }
 
@@ -115,6 +131,15 @@ impl InertiaTensor {
             reduced_mass: t.compute_reduced_mass(),
         };
         Ok(t)
+    }
+
+    /// The same tensor with its entries as binary64 values only, so a clone allocates nothing
+    /// (tables solve millions of rows with one tensor).
+    pub fn untyped(&self) -> InertiaTensor {
+        InertiaTensor {
+            entries: self.entries.clone().map(|row| row.map(|n| n.untyped())),
+            ..self.clone()
+        }
     }
 
     /// The tensor as typed.
@@ -309,13 +334,14 @@ mod tests {
     #[test]
     fn masses_must_be_positive() {
         for bad in ["0", "-1", "-0"] {
-            let e = bad.parse::<Mass>().unwrap_err();
+            let e = bad.parse::<Mass>().unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains("greater than 0"), "{e}");
         }
         assert!(
             "abc"
                 .parse::<Mass>()
                 .unwrap_err()
+                .to_string()
                 .contains("'abc' is not a number")
         );
     }

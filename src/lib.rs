@@ -2,6 +2,18 @@
 //! ellipse, with an explicit inertia tensor, in the notation of W. G. Harter, *Classical Mechanics
 //! with a BANG!*, Unit 1, Lecture 1.
 //!
+//! The modules are layers; each imports only from the layers above it in this list:
+//!
+//! 1. values: `number`, `units`, `quantity`, `compensated`, `output`;
+//! 2. two-body physics: `inertia`, `restitution`, `collision`, `ellipse`;
+//! 3. what the user asked: `case`, `problem`, `unknowns`, `frame`;
+//! 4. how it is computed: `solver` (the `Solver` trait, `binary64`, `exact`);
+//! 5. computations beyond one solve: `accuracy`, `expect`, `table`, `track`;
+//! 6. what is printed: `report`, `plot`;
+//! 7. files: `scene`.
+//!
+//! The binary (`src/main.rs`, `src/cli.rs`, `src/commands/`) sits on top.
+//!
 //! ```
 //! use collide::{case::{Case, parse_masses, parse_velocities}, inertia::InertiaTensor};
 //! let [m1, m2] = parse_masses("4,1").unwrap();
@@ -11,28 +23,37 @@
 //! assert_eq!((fin.x, fin.y), (40.0, 90.0)); // lecture Fig. 1.3
 //! ```
 
-pub mod accuracy;
-pub mod app;
-pub mod batch;
-pub mod case;
-pub mod cli;
-pub mod collision;
+// 1. values
 pub mod compensated;
-pub mod ellipse;
-pub mod exact;
-pub mod expect;
-pub mod frame;
-pub mod inertia;
 pub mod number;
-pub mod plot;
-pub mod problem;
+pub mod output;
 pub mod quantity;
-pub mod report;
-pub mod restitution;
-pub mod rows;
-pub mod scene;
-pub mod solver;
-pub mod sweep;
-pub mod track;
 pub mod units;
+
+// 2. two-body physics
+pub mod collision;
+pub mod ellipse;
+pub mod inertia;
+pub mod restitution;
+
+// 3. what the user asked
+pub mod case;
+pub mod frame;
+pub mod problem;
 pub mod unknowns;
+
+// 4. how it is computed
+pub mod solver;
+
+// 5. computations beyond one solve
+pub mod accuracy;
+pub mod expect;
+pub mod table;
+pub mod track;
+
+// 6. what is printed
+pub mod plot;
+pub mod report;
+
+// 7. files
+pub mod scene;

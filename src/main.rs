@@ -1,13 +1,16 @@
 //! `collide`: parse, dispatch, print, exit. Exit 0 ok, 1 a scene's check failed, 2 bad input.
 
+mod cli;
+mod commands;
+
 use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
 
 fn main() -> ExitCode {
-    let cli = collide::cli::Cli::parse();
-    match collide::app::run(cli.command) {
+    let cli = cli::Cli::parse();
+    match commands::run(cli.command) {
         Ok(outcome) => {
             let mut out = std::io::stdout().lock();
             match out
@@ -32,11 +35,10 @@ fn main() -> ExitCode {
     }
 }
 
+/// Whether the error is a closed stdout, wherever it is in the chain.
 fn broken_pipe(e: &anyhow::Error) -> bool {
     e.chain().any(|c| {
-        c.downcast_ref::<std::io::Error>().is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
-            || c.downcast_ref::<collide::rows::RowsError>().is_some_and(|r| {
-                matches!(r, collide::rows::RowsError::Io(io) if io.kind() == std::io::ErrorKind::BrokenPipe)
-            })
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
     })
 }

@@ -169,6 +169,14 @@ impl Number {
         }
     }
 
+    /// The same binary64 value without its typed text (so a clone allocates nothing).
+    pub fn untyped(&self) -> Number {
+        Number {
+            value: self.value,
+            text: None,
+        }
+    }
+
     /// Whether two numbers have the same exact value.
     pub fn same_value(&self, other: &Number) -> bool {
         // Different nearest binary64 values mean different exact values; equal ones need the
@@ -237,37 +245,95 @@ impl fmt::Display for Number {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.text {
             Some(t) => f.write_str(t),
-            None => write!(f, "{}", crate::report::text::num(self.value)),
+            None => f.write_str(&num(self.value)),
         }
     }
 }
 
+/// A binary64 as people read it: shortest round-trip digits, plain for `1e-5 <= |x| < 1e16` and
+/// in scientific notation outside.
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 {
+        "0".to_string()
+    } else if (1e-5..1e16).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// A value a problem gives, or `?` for one it asks for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Given<T> {
+    Known(T),
+    Unknown,
+}
+
+impl<T> Given<T> {
+    /// Parses `?` as unknown, anything else with `parse`.
+    pub fn parse<E>(text: &str, parse: impl FnOnce(&str) -> Result<T, E>) -> Result<Given<T>, E> {
+        if text.trim() == "?" {
+            Ok(Given::Unknown)
+        } else {
+            parse(text).map(Given::Known)
+        }
+    }
+
+    pub fn known(&self) -> Option<&T> {
+        match self {
+            Given::Known(t) => Some(t),
+            Given::Unknown => None,
+        }
+    }
+
+    pub fn is_unknown(&self) -> bool {
+        matches!(self, Given::Unknown)
+    }
+
+    pub fn map<U>(self, f: impl FnOnce(T) -> U) -> Given<U> {
+        match self {
+            Given::Known(t) => Given::Known(f(t)),
+            Given::Unknown => Given::Unknown,
+        }
+    }
+}
+
+/// A list with the wrong number of comma-separated fields.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("expected {expected} comma-separated {what}, got {got} in '{text}'")]
+pub struct FieldsError {
+    pub expected: usize,
+    pub got: usize,
+    pub what: String,
+    pub text: String,
+}
+
 /// Splits `a,b,...` into exactly `N` trimmed fields; `what` names them in the error.
-pub fn split_fields<'a, const N: usize>(text: &'a str, what: &str) -> Result<[&'a str; N], String> {
+pub fn split_fields<'a, const N: usize>(
+    text: &'a str,
+    what: &str,
+) -> Result<[&'a str; N], FieldsError> {
     let fields: Vec<&str> = text.split(',').map(str::trim).collect();
-    fields.clone().try_into().map_err(|_| {
-        format!(
-            "expected {N} comma-separated {what}, got {} in '{}'",
-            fields.len(),
-            text.trim()
-        )
+    let got = fields.len();
+    fields.try_into().map_err(|_| FieldsError {
+        expected: N,
+        got,
+        what: what.to_string(),
+        text: text.trim().to_string(),
     })
 }
 
-/// A comma-separated list of numbers (`-x 1,2.5,4` for a track), as binary64 values.
+/// A comma-separated list of numbers (`-x 1,2.5,4` for a track), as typed.
 #[derive(Clone, Debug, PartialEq)]
-pub struct NumberList(pub Vec<f64>);
+pub struct NumberList(pub Vec<Number>);
 
 impl FromStr for NumberList {
-    type Err = String;
-    fn from_str(s: &str) -> Result<NumberList, String> {
+    type Err = NumberError;
+    fn from_str(s: &str) -> Result<NumberList, NumberError> {
         s.split(',')
-            .map(|t| {
-                t.parse::<Number>()
-                    .map(|n| n.value())
-                    .map_err(|e| e.to_string())
-            })
-            .collect::<Result<Vec<f64>, String>>()
+            .map(str::parse)
+            .collect::<Result<_, _>>()
             .map(NumberList)
     }
 }
@@ -391,9 +457,9 @@ mod tests {
     fn fields() {
         assert_eq!(split_fields::<2>(" 4 , 1", "masses").unwrap(), ["4", "1"]);
         let err = split_fields::<2>("4,1,2", "masses").unwrap_err();
-        assert!(
-            err.contains("expected 2 comma-separated masses, got 3"),
-            "{err}"
+        assert_eq!(
+            err.to_string(),
+            "expected 2 comma-separated masses, got 3 in '4,1,2'"
         );
     }
 }

@@ -3,71 +3,110 @@
 //! Units are resolved first; the unknowns are then solved exactly (`unknowns`), and the result
 //! is an ordinary `Case`.
 
-use anyhow::Result;
 use num_rational::BigRational;
 
 use crate::case::Case;
-use crate::inertia::{InertiaTensor, Mass};
-use crate::number::Number;
-use crate::restitution::Restitution;
-use crate::units::{Pair, Units, resolve};
-use crate::unknowns::{Solved, Var, solve as solve_unknowns};
+use crate::inertia::{InertiaError, InertiaTensor, Mass, MassError};
+use crate::number::{Given, Number, NumberError};
+use crate::restitution::{Restitution, RestitutionError};
+use crate::units::{Pair, ResolveError, Units, resolve};
+use crate::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
 
 /// The typed values of a problem.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Problem {
     /// `None` with a general tensor instead.
     pub masses: Option<Pair>,
     pub velocities: Pair,
     /// Final velocities, when the problem gives them.
     pub fin: Option<Pair>,
-    /// `Some(None)` for `?`; not given: elastic, or unknown when FIN is given.
-    pub restitution: Option<Option<Restitution>>,
+    /// Not given: elastic, or unknown when FIN is given.
+    pub restitution: Option<Given<Restitution>>,
     /// Convert to kg and m/s.
     pub si: bool,
+}
+
+/// Why a problem cannot be solved.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ProblemError {
+    #[error("give --masses M1,M2 or --inertia 'M11,M12;M21,M22'")]
+    NoMasses,
+    #[error("unknowns and --fin need --masses M1,M2 (not --inertia)")]
+    UnknownsNeedMasses,
+    #[error(
+        "'?' marks an unknown: `collide solve` solves for unknowns (with --fin for final velocities)"
+    )]
+    UnknownsOnlyInSolve,
+    #[error("{var} = {text}: {error}")]
+    Solved {
+        var: Var,
+        text: String,
+        error: NumberError,
+    },
+    #[error(transparent)]
+    Resolve(#[from] ResolveError),
+    #[error(transparent)]
+    Unknown(#[from] UnknownError),
+    #[error(transparent)]
+    Mass(#[from] MassError),
+    #[error(transparent)]
+    Inertia(#[from] InertiaError),
+    #[error(transparent)]
+    Restitution(#[from] RestitutionError),
 }
 
 impl Problem {
     /// Whether a typed value is `?`.
     pub fn has_unknowns(&self) -> bool {
-        let pair = |p: &Option<Pair>| p.as_ref().is_some_and(|p| p.0.iter().any(Option::is_none));
-        pair(&self.masses)
-            || self.velocities.0.iter().any(Option::is_none)
-            || pair(&self.fin)
-            || matches!(self.restitution, Some(None))
+        let pair = |p: &Pair| p.0.iter().any(Given::is_unknown);
+        self.masses.as_ref().is_some_and(pair)
+            || pair(&self.velocities)
+            || self.fin.as_ref().is_some_and(pair)
+            || self.restitution.as_ref().is_some_and(Given::is_unknown)
+    }
+
+    /// The case, with units resolved; a problem with unknowns is refused (only `collide solve`
+    /// solves for them).
+    pub fn into_case(self, inertia: Option<InertiaTensor>) -> Result<Case, ProblemError> {
+        if self.has_unknowns() {
+            return Err(ProblemError::UnknownsOnlyInSolve);
+        }
+        Ok(self.solve(inertia)?.0)
     }
 
     /// Resolves units and solves any unknowns; returns the case, and what was solved when the
     /// problem had unknowns or gave FIN.
-    pub fn solve(&self, inertia: Option<InertiaTensor>) -> Result<(Case, Option<Solved>)> {
+    pub fn solve(
+        &self,
+        inertia: Option<InertiaTensor>,
+    ) -> Result<(Case, Option<Solved>), ProblemError> {
         let masses: Vec<_> = self.masses.as_ref().map_or(Vec::new(), |p| p.0.to_vec());
         if masses.is_empty() && inertia.is_none() {
-            anyhow::bail!("give --masses M1,M2 or --inertia 'M11,M12;M21,M22'");
+            return Err(ProblemError::NoMasses);
         }
         let mut velocities = self.velocities.0.to_vec();
         if let Some(f) = &self.fin {
             velocities.extend(f.0.iter().cloned());
         }
-        let (m, v, units) = resolve(&masses, &velocities, self.si).map_err(anyhow::Error::msg)?;
+        let (m, v, units) = resolve(&masses, &velocities, self.si)?;
         let e = match &self.restitution {
-            Some(Some(r)) => Some(r.number().clone()),
-            Some(None) => None,
-            None if self.fin.is_some() => None,
-            None => Some(Restitution::elastic().number().clone()),
+            Some(r) => r.clone().map(|r| r.number().clone()),
+            None if self.fin.is_some() => Given::Unknown,
+            None => Given::Known(Restitution::elastic().number().clone()),
         };
         if !(self.fin.is_some() || self.has_unknowns()) {
             let case = build(&m, &v, e, inertia, units)?;
             return Ok((case, None));
         }
         if inertia.is_some() || m.is_empty() {
-            anyhow::bail!("unknowns and --fin need --masses M1,M2 (not --inertia)");
+            return Err(ProblemError::UnknownsNeedMasses);
         }
         let fin = if self.fin.is_some() {
             v[2..4].to_vec()
         } else {
-            vec![None, None]
+            vec![Given::Unknown, Given::Unknown]
         };
-        let known: Vec<Option<Number>> = m
+        let known: Vec<Given<Number>> = m
             .iter()
             .chain(&v[..2])
             .chain(&fin)
@@ -75,13 +114,13 @@ impl Problem {
             .chain([e])
             .collect();
         let exact: [Option<BigRational>; 7] =
-            std::array::from_fn(|i| known[i].as_ref().map(Number::exact));
+            std::array::from_fn(|i| known[i].known().map(Number::exact));
         let solved = solve_unknowns(exact)?;
-        let number = |var: Var| -> Result<Option<Number>> {
+        let number = |var: Var| -> Result<Given<Number>, ProblemError> {
             let text = crate::quantity::fraction(solved.get(var));
             text.parse::<Number>()
-                .map(Some)
-                .map_err(|e| anyhow::anyhow!("{var} = {text}: {e}"))
+                .map(Given::Known)
+                .map_err(|error| ProblemError::Solved { var, text, error })
         };
         let m = vec![number(Var::M1)?, number(Var::M2)?];
         let v = vec![number(Var::V1)?, number(Var::V2)?];
@@ -90,26 +129,24 @@ impl Problem {
     }
 }
 
+/// The case of resolved values, none of them unknown.
 fn build(
-    m: &[Option<Number>],
-    v: &[Option<Number>],
-    e: Option<Number>,
+    m: &[Given<Number>],
+    v: &[Given<Number>],
+    e: Given<Number>,
     inertia: Option<InertiaTensor>,
     units: Units,
-) -> Result<Case> {
-    let need = |x: &Option<Number>| {
-        x.clone()
-            .ok_or_else(|| anyhow::anyhow!("'?' is only for collide solve"))
-    };
+) -> Result<Case, ProblemError> {
+    let need = |x: &Given<Number>| x.known().cloned().ok_or(ProblemError::UnknownsOnlyInSolve);
     let inertia = match inertia {
         Some(t) if m.is_empty() => t,
         _ => {
             let mass =
-                |x: &Option<Number>| need(x).and_then(|n| Mass::new(n).map_err(anyhow::Error::msg));
+                |x: &Given<Number>| -> Result<Mass, ProblemError> { Ok(Mass::new(need(x)?)?) };
             InertiaTensor::diagonal(&mass(&m[0])?, &mass(&m[1])?)?
         }
     };
-    let e = Restitution::new(need(&e)?).map_err(anyhow::Error::msg)?;
+    let e = Restitution::new(need(&e)?)?;
     let mut case = Case::new(inertia, [need(&v[0])?, need(&v[1])?], e);
     case.units = units;
     Ok(case)

@@ -10,7 +10,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
 
-use crate::report::text::num;
+use crate::number::num;
 
 /// Digits shown for an approximate (irrational) exact-mode value.
 pub const APPROX_DIGITS: usize = 20;
@@ -66,9 +66,6 @@ impl Exact {
         match self {
             Exact::Rational(q) | Exact::Approx(q) => q,
         }
-    }
-    pub fn is_approx(&self) -> bool {
-        matches!(self, Exact::Approx(_))
     }
 }
 

@@ -4,24 +4,40 @@
 use std::fmt;
 use std::str::FromStr;
 
-use crate::number::Number;
+use crate::number::{Number, NumberError};
 
 /// A coefficient of restitution, validated to lie in [0, 1].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Restitution(Number);
+
+/// Why a value is not a restitution.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RestitutionError {
+    #[error(
+        "restitution '{0}' is outside [0, 1]: expected a number from 0 (totally inelastic) to 1 (elastic)"
+    )]
+    OutOfRange(String),
+    #[error("restitution {0}, or the words 'elastic' (1) or 'inelastic' (0)")]
+    Number(NumberError),
+}
+
+// Not `#[from]`: the chain would print the number error twice.
+impl From<NumberError> for RestitutionError {
+    fn from(e: NumberError) -> RestitutionError {
+        RestitutionError::Number(e)
+    }
+}
 
 impl Restitution {
     pub fn elastic() -> Restitution {
         Restitution(Number::from_f64(1.0).expect("1 is a number"))
     }
 
-    pub fn new(n: Number) -> Result<Restitution, String> {
+    pub fn new(n: Number) -> Result<Restitution, RestitutionError> {
         if (0.0..=1.0).contains(&n.value()) {
             Ok(Restitution(n))
         } else {
-            Err(format!(
-                "restitution '{n}' is outside [0, 1]: expected a number from 0 (totally inelastic) to 1 (elastic)"
-            ))
+            Err(RestitutionError::OutOfRange(n.to_string()))
         }
     }
 
@@ -54,22 +70,14 @@ impl Restitution {
 }
 
 impl FromStr for Restitution {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Restitution, String> {
-        match s.trim() {
-            "elastic" => Number::from_str("1")
-                .map(Restitution)
-                .map_err(|e| e.to_string()),
-            "inelastic" => Number::from_str("0")
-                .map(Restitution)
-                .map_err(|e| e.to_string()),
-            t => {
-                let n: Number = t.parse().map_err(|e| {
-                    format!("restitution {e}, or the words 'elastic' (1) or 'inelastic' (0)")
-                })?;
-                Restitution::new(n)
-            }
-        }
+    type Err = RestitutionError;
+    fn from_str(s: &str) -> Result<Restitution, RestitutionError> {
+        let t = match s.trim() {
+            "elastic" => "1",
+            "inelastic" => "0",
+            t => t,
+        };
+        Restitution::new(t.parse()?)
     }
 }
 
@@ -100,10 +108,10 @@ mod tests {
     #[test]
     fn outside_zero_one_is_refused() {
         for bad in ["1.5", "-0.1", "4/3"] {
-            let e = bad.parse::<Restitution>().unwrap_err();
+            let e = bad.parse::<Restitution>().unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains("[0, 1]"), "{e}");
         }
-        let e = "bouncy".parse::<Restitution>().unwrap_err();
+        let e = "bouncy".parse::<Restitution>().unwrap_err().to_string();
         assert!(e.contains("'bouncy'") && e.contains("elastic"), "{e}");
     }
 }

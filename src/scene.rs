@@ -23,17 +23,18 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::case::Case;
-use crate::expect::Expectation;
+use crate::expect::{ExpectError, Expectation};
 use crate::frame::Frame;
 use crate::inertia::InertiaTensor;
-use crate::number::Number;
+use crate::number::{Given, Number};
 use crate::problem::Problem;
 use crate::report::{Section, Sections};
 use crate::restitution::Restitution;
-use crate::rows::{Column, RowFormat};
-use crate::sweep::Grid;
-use crate::track::{Body, Limits, Track};
-use crate::units::{Dimension, Pair, parse_pair};
+use crate::table::columns::Column;
+use crate::table::sweep::{DEFAULT_MAX_ROWS, Grid};
+use crate::table::writer::RowFormat;
+use crate::track::{Limits, Track};
+use crate::units::{Dimension, Pair, PairError, parse_pair};
 use crate::unknowns::Solved;
 
 /// The file as written. Field names are the scene format.
@@ -53,7 +54,7 @@ struct SceneFile {
     frame: Option<Frame>,
     sweep: Option<Spanned<SweepTable>>,
     plot: Option<PlotTable>,
-    expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
+    expect: Option<ExpectTable>,
 }
 
 /// `[plot]`: draw the scene's case to an SVG file.
@@ -80,7 +81,7 @@ fn velocity() -> crate::plot::Kind {
 struct SweepTable {
     vary: Vec<String>,
     columns: Option<Vec<String>>,
-    format: Option<String>,
+    format: Option<RowFormat>,
     max_rows: Option<u64>,
     skip_bad: Option<bool>,
 }
@@ -89,7 +90,7 @@ struct SweepTable {
 #[derive(Clone, Debug)]
 pub struct SceneSweep {
     pub grid: Grid,
-    pub columns: Vec<Column>,
+    pub columns: Vec<&'static Column>,
     pub format: RowFormat,
     pub skip_bad: bool,
 }
@@ -114,16 +115,74 @@ impl<'de> Deserialize<'de> for Typed {
     }
 }
 
-fn pair(v: &[Typed; 2], dimension: Dimension, what: &str) -> Result<Pair, String> {
+fn pair(v: &[Typed; 2], dimension: Dimension, what: &str) -> Result<Pair, PairError> {
     parse_pair(&format!("{},{}", v[0].0, v[1].0), dimension, what)
+}
+
+/// What every scene has besides its physics: where it is, what it is called, and the numbers it
+/// expects.
+#[derive(Clone, Debug)]
+pub struct About {
+    pub path: PathBuf,
+    pub title: Option<String>,
+    pub source: Option<String>,
+    pub expect: Vec<Expectation>,
+}
+
+/// `[expect]` as written: JSON paths of the report, each with its value and place.
+type ExpectTable = BTreeMap<String, Spanned<toml::Value>>;
+
+impl About {
+    /// `known` says whether a key's first part names a quantity of the scene's report.
+    fn new(
+        (path, text): (&Path, &str),
+        title: Option<String>,
+        source: Option<String>,
+        table: Option<ExpectTable>,
+        known: impl Fn(&str) -> Result<(), ExpectError>,
+    ) -> Result<About, SceneError> {
+        let mut expect = Vec::new();
+        for (key, value) in table.unwrap_or_default() {
+            let span = value.span();
+            let e = known(key.split('.').next().unwrap_or_default())
+                .and_then(|()| Expectation::from_toml(&key, value.into_inner()))
+                .map_err(|m| {
+                    located(
+                        path,
+                        text,
+                        Some(span.clone()),
+                        format!("[expect] \"{key}\": {m}"),
+                    )
+                })?;
+            expect.push(e.at_line(line_col(text, span.start).0));
+        }
+        Ok(About {
+            path: path.to_path_buf(),
+            title,
+            source,
+            expect,
+        })
+    }
+}
+
+/// A problem at `span` of a scene file's `text`.
+fn located(path: &Path, text: &str, span: Option<Range<usize>>, message: String) -> SceneError {
+    SceneError {
+        path: path.to_path_buf(),
+        at: span.map(|s| line_col(text, s.start)),
+        message,
+    }
+}
+
+/// The file's text as `T`, or the first problem, located.
+fn from_toml<T: serde::de::DeserializeOwned>(path: &Path, text: &str) -> Result<T, SceneError> {
+    toml::from_str(text).map_err(|e| located(path, text, e.span(), e.message().trim().to_string()))
 }
 
 /// A loaded, validated scene.
 #[derive(Clone, Debug)]
 pub struct Scene {
-    pub path: PathBuf,
-    pub title: Option<String>,
-    pub source: Option<String>,
+    pub about: About,
     pub case: Case,
     /// Sections to print.
     pub show: Sections,
@@ -137,7 +196,6 @@ pub struct Scene {
     pub plot: Option<PlotTable>,
     /// What was solved for (`"?"` values, or `fin` given).
     pub solved: Option<Solved>,
-    pub expect: Vec<Expectation>,
 }
 
 /// A scene file of either kind.
@@ -179,16 +237,6 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 }
 
 impl Scene {
-    /// Reads and validates a scene file.
-    pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
-            path: path.to_path_buf(),
-            at: None,
-            message: format!("cannot read scene file: {e}"),
-        })?;
-        Scene::parse(path, &text)
-    }
-
     /// Reads a scene of either kind: a two-body case (or `[sweep]`), or a `[track]`.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|e| SceneError {
@@ -205,13 +253,8 @@ impl Scene {
 
     /// Parses scene text; `path` names it in errors.
     pub fn parse(path: &Path, text: &str) -> Result<Scene, SceneError> {
-        let err = |span: Option<Range<usize>>, message: String| SceneError {
-            path: path.to_path_buf(),
-            at: span.map(|s| line_col(text, s.start)),
-            message,
-        };
-        let file: SceneFile =
-            toml::from_str(text).map_err(|e| err(e.span(), e.message().trim().to_string()))?;
+        let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
+        let file: SceneFile = from_toml(path, text)?;
         let masses = match (&file.masses, &file.inertia) {
             (Some(_), Some(t)) => {
                 return Err(err(
@@ -226,7 +269,8 @@ impl Scene {
                 ));
             }
             (Some(m), None) => Some(
-                pair(m.get_ref(), Dimension::Mass, "masses").map_err(|e| err(Some(m.span()), e))?,
+                pair(m.get_ref(), Dimension::Mass, "masses")
+                    .map_err(|e| err(Some(m.span()), e.to_string()))?,
             ),
             (None, Some(_)) => None,
         };
@@ -239,23 +283,20 @@ impl Scene {
         };
         let v = &file.velocities;
         let velocities = pair(v.get_ref(), Dimension::Velocity, "velocities")
-            .map_err(|e| err(Some(v.span()), e))?;
+            .map_err(|e| err(Some(v.span()), e.to_string()))?;
         let fin = match &file.fin {
             Some(f) => Some(
                 pair(f.get_ref(), Dimension::Velocity, "fin")
-                    .map_err(|e| err(Some(f.span()), e))?,
+                    .map_err(|e| err(Some(f.span()), e.to_string()))?,
             ),
             None => None,
         };
         let restitution = match &file.restitution {
             None => None,
-            Some(r) if r.get_ref().0.trim() == "?" => Some(None),
-            Some(r) => Some(Some(
-                r.get_ref()
-                    .0
-                    .parse::<Restitution>()
-                    .map_err(|e| err(Some(r.span()), e))?,
-            )),
+            Some(r) => Some(
+                Given::parse(&r.get_ref().0, str::parse::<Restitution>)
+                    .map_err(|e| err(Some(r.span()), e.to_string()))?,
+            ),
         };
         let problem = Problem {
             masses,
@@ -277,55 +318,45 @@ impl Scene {
             Some(t) => {
                 let span = t.span();
                 let t = t.into_inner();
-                let at = |m: String| err(Some(span.clone()), format!("[sweep] {m}"));
+                let at = |m: &dyn fmt::Display| err(Some(span.clone()), format!("[sweep] {m}"));
                 if file.expect.is_some() {
                     return Err(at(
-                        "a scene with [sweep] writes a table; it cannot have [expect]".into(),
+                        &"a scene with [sweep] writes a table; it cannot have [expect]",
                     ));
                 }
                 let vary = t
                     .vary
                     .iter()
                     .map(|v| v.parse())
-                    .collect::<Result<Vec<_>, String>>()
-                    .map_err(at)?;
-                let grid = Grid::new(vary, t.max_rows.unwrap_or(10_000_000_000)).map_err(at)?;
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|e| at(&e))?;
+                let grid =
+                    Grid::new(vary, t.max_rows.unwrap_or(DEFAULT_MAX_ROWS)).map_err(|e| at(&e))?;
                 let columns = t
                     .columns
                     .unwrap_or_default()
                     .iter()
                     .map(|c| c.parse())
-                    .collect::<Result<Vec<Column>, String>>()
-                    .map_err(at)?;
-                let format = match t.format.as_deref() {
-                    None | Some("csv") => RowFormat::Csv,
-                    Some("jsonl") => RowFormat::Jsonl,
-                    Some("text") => RowFormat::Text,
-                    Some(f) => {
-                        return Err(at(format!("format '{f}': expected csv, jsonl or text")));
-                    }
-                };
+                    .collect::<Result<Vec<&Column>, _>>()
+                    .map_err(|e| at(&e))?;
                 Some(SceneSweep {
                     grid,
                     columns,
-                    format,
+                    format: t.format.unwrap_or(RowFormat::Csv),
                     skip_bad: t.skip_bad.unwrap_or(false),
                 })
             }
         };
         let show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
-        let mut expect = Vec::new();
-        for (key, value) in file.expect.unwrap_or_default() {
-            let span = value.span();
-            let e = Expectation::check_report_key(&key)
-                .and_then(|()| Expectation::from_toml(&key, value.into_inner()))
-                .map_err(|m| err(Some(span.clone()), format!("[expect] \"{key}\": {m}")))?;
-            expect.push(e.at_line(line_col(text, span.start).0));
-        }
+        let about = About::new(
+            (path, text),
+            file.title,
+            file.source,
+            file.expect,
+            report_key,
+        )?;
         Ok(Scene {
-            path: path.to_path_buf(),
-            title: file.title,
-            source: file.source,
+            about,
             case,
             show,
             exact: file.exact.unwrap_or(false),
@@ -333,20 +364,43 @@ impl Scene {
             sweep,
             plot: file.plot,
             solved,
-            expect,
         })
     }
 
     /// Sections to compute: the shown ones and those the expectations read.
     pub fn sections_needed(&self) -> Sections {
         let mut s = self.show.clone();
-        for e in &self.expect {
-            if let Some(section) = e.section() {
+        for e in &self.about.expect {
+            if let Some(section) = Section::of_json_key(e.key.split('.').next().unwrap_or_default())
+            {
                 s.insert(section);
             }
         }
         s
     }
+}
+
+/// The quantities an `[expect]` key of a two-body scene may name.
+const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, momentum.*, forms.*, \
+                         energy.*, ellipses.*, products.*, diagnostics.*, solved.*, check.*, units.*";
+
+/// Checks that `top`, the first part of an `[expect]` key, names a quantity of a two-body report.
+fn report_key(top: &str) -> Result<(), ExpectError> {
+    let always = [
+        "restitution",
+        "inertia",
+        "frame",
+        "solved",
+        "check",
+        "units",
+    ];
+    if Section::of_json_key(top).is_none() && !always.contains(&top) {
+        return Err(ExpectError::UnknownQuantity {
+            top: top.to_string(),
+            expected: TOP_LEVEL.to_string(),
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -364,9 +418,9 @@ mod tests {
              [expect]\nfin = [40, 90]\n\"energy.crunch\" = { value = 1000, abs = 0.5 }\n",
         )
         .unwrap();
-        assert_eq!(s.title.as_deref(), Some("A"));
+        assert_eq!(s.about.title.as_deref(), Some("A"));
         assert_eq!(s.case.restitution().value(), 2.0 / 3.0);
-        assert_eq!(s.expect.len(), 2);
+        assert_eq!(s.about.expect.len(), 2);
         assert!(s.sections_needed().contains(Section::Energy));
         assert!(s.sections_needed().contains(Section::Vectors));
         assert!(!s.sections_needed().contains(Section::Ellipses));
@@ -423,7 +477,10 @@ mod tests {
             .unwrap();
         let sw = s.sweep.unwrap();
         assert_eq!(sw.grid.total, 11);
-        assert_eq!(sw.columns, [Column::E, Column::Lost]);
+        assert_eq!(
+            sw.columns,
+            crate::table::columns::by_names(&["e", "lost"]).unwrap()
+        );
         let e = parse("masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"e=0:2:3\"]\n")
             .unwrap_err();
         assert!(
@@ -440,6 +497,15 @@ mod tests {
     }
 
     #[test]
+    fn expect_keys_must_name_a_quantity() {
+        let e = parse("masses = [4, 1]\nvelocities = [60, 10]\n[expect]\n\"energyy.crunch\" = 1\n")
+            .unwrap_err();
+        assert!(e.message.contains("unknown quantity 'energyy'"), "{e}");
+        assert_eq!(e.at.map(|a| a.0), Some(4));
+        assert!(report_key("frame").is_ok());
+    }
+
+    #[test]
     fn line_and_column() {
         assert_eq!(line_col("ab\ncd", 0), (1, 1));
         assert_eq!(line_col("ab\ncd", 4), (2, 2));
@@ -453,7 +519,7 @@ struct TrackFile {
     title: Option<String>,
     source: Option<String>,
     track: TrackTable,
-    expect: Option<BTreeMap<String, Spanned<toml::Value>>>,
+    expect: Option<ExpectTable>,
 }
 
 #[derive(Deserialize)]
@@ -475,12 +541,9 @@ struct TrackTable {
 /// A track scene, validated.
 #[derive(Clone, Debug)]
 pub struct TrackScene {
-    pub path: PathBuf,
-    pub title: Option<String>,
-    pub source: Option<String>,
+    pub about: About,
     pub track: Track,
     pub limits: Limits,
-    pub expect: Vec<Expectation>,
 }
 
 /// Top-level keys of `collide track --format json`.
@@ -498,9 +561,6 @@ pub const TRACK_KEYS: [&str; 11] = [
     "pi",
 ];
 
-/// Default cap on collisions (`--max-collisions`): enough for pi billiards with N = 8.
-pub const DEFAULT_MAX_COLLISIONS: u64 = 1_000_000_000;
-
 /// Whether scene text holds a `[track]` table.
 pub fn is_track(text: &str) -> bool {
     toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("track"))
@@ -508,46 +568,32 @@ pub fn is_track(text: &str) -> bool {
 
 impl TrackScene {
     pub fn parse(path: &Path, text: &str) -> Result<TrackScene, SceneError> {
-        let err = |span: Option<Range<usize>>, message: String| SceneError {
-            path: path.to_path_buf(),
-            at: span.map(|s| line_col(text, s.start)),
-            message,
-        };
-        let file: TrackFile =
-            toml::from_str(text).map_err(|e| err(e.span(), e.message().trim().to_string()))?;
+        let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
+        let file: TrackFile = from_toml(path, text)?;
         let t = file.track;
-        let n = t.masses.get_ref().len();
-        let list = |l: &Spanned<Vec<Number>>, what: &str| -> Result<Vec<f64>, SceneError> {
-            if l.get_ref().len() != n {
-                return Err(err(
-                    Some(l.span()),
-                    format!(
-                        "[track] {what}: {} values for {n} bodies",
-                        l.get_ref().len()
-                    ),
-                ));
-            }
-            Ok(l.get_ref().iter().map(Number::value).collect())
-        };
-        let (m, x, v) = (
-            list(&t.masses, "masses")?,
-            list(&t.positions, "positions")?,
-            list(&t.velocities, "velocities")?,
-        );
-        let sizes = match &t.sizes {
-            Some(s) => list(s, "sizes")?,
-            None => vec![0.0; n],
-        };
+        let bodies = crate::track::bodies(
+            t.masses.get_ref(),
+            t.positions.get_ref(),
+            t.velocities.get_ref(),
+            t.sizes.as_ref().map(|s| s.get_ref().as_slice()),
+        )
+        .map_err(|m| {
+            let list = match m.list {
+                "positions" => &t.positions,
+                "velocities" => &t.velocities,
+                _ => t.sizes.as_ref().unwrap_or(&t.masses),
+            };
+            err(
+                Some(list.span()),
+                format!(
+                    "[track] {}: {} values for {} bodies",
+                    m.list, m.got, m.bodies
+                ),
+            )
+        })?;
         let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
         let track = Track {
-            bodies: (0..n)
-                .map(|i| Body {
-                    m: m[i],
-                    x: x[i],
-                    v: v[i],
-                    size: sizes[i],
-                })
-                .collect(),
+            bodies,
             left_wall: t.left_wall.map(|n| n.value()),
             right_wall: t.right_wall.map(|n| n.value()),
             e,
@@ -559,32 +605,25 @@ impl TrackScene {
             .map_err(|e| err(Some(t.masses.span()), format!("[track] {e}")))?;
         let limits = Limits {
             until: t.until.map(|u| u.value()),
-            max_collisions: t.max_collisions.unwrap_or(DEFAULT_MAX_COLLISIONS),
+            max_collisions: t
+                .max_collisions
+                .unwrap_or(crate::track::DEFAULT_MAX_COLLISIONS),
         };
-        let mut expect = Vec::new();
-        for (key, value) in file.expect.unwrap_or_default() {
-            let span = value.span();
-            let top = key.split('.').next().unwrap_or_default();
-            let known = if TRACK_KEYS.contains(&top) {
+        let known = |top: &str| {
+            if TRACK_KEYS.contains(&top) {
                 Ok(())
             } else {
-                Err(format!(
-                    "unknown quantity '{top}': expected one of {}",
-                    TRACK_KEYS.join(", ")
-                ))
-            };
-            let e = known
-                .and_then(|()| Expectation::from_toml(&key, value.into_inner()))
-                .map_err(|m| err(Some(span.clone()), format!("[expect] \"{key}\": {m}")))?;
-            expect.push(e.at_line(line_col(text, span.start).0));
-        }
+                Err(ExpectError::UnknownQuantity {
+                    top: top.to_string(),
+                    expected: TRACK_KEYS.join(", "),
+                })
+            }
+        };
+        let about = About::new((path, text), file.title, file.source, file.expect, known)?;
         Ok(TrackScene {
-            path: path.to_path_buf(),
-            title: file.title,
-            source: file.source,
+            about,
             track,
             limits,
-            expect,
         })
     }
 }

@@ -5,13 +5,23 @@
 
 use num_rational::BigRational;
 
-use crate::number::{Number, NumberError};
+use crate::number::{FieldsError, Given, Number, NumberError, split_fields};
 
 /// What a unit measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Dimension {
     Mass,
     Velocity,
+}
+
+impl Dimension {
+    /// "mass" or "velocity".
+    pub fn name(self) -> &'static str {
+        match self {
+            Dimension::Mass => "mass",
+            Dimension::Velocity => "velocity",
+        }
+    }
 }
 
 /// A unit: the names it is typed as, and its size in SI as an exact decimal or fraction.
@@ -120,6 +130,32 @@ const AMBIGUOUS: &[(&str, &str)] = &[
     ("km", "'km' is a length: velocities take km/h"),
 ];
 
+/// Why a name is not a unit of the dimension asked for.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum UnitError {
+    #[error("ambiguous unit: {0}")]
+    Ambiguous(&'static str),
+    #[error("'{name}' is a unit of {is}, not of {wanted}", is = .is.name(), wanted = .wanted.name())]
+    WrongDimension {
+        name: String,
+        is: Dimension,
+        wanted: Dimension,
+    },
+    #[error("unknown {} unit '{name}': did you mean '{near}'? (known: {known})", .wanted.name())]
+    DidYouMean {
+        name: String,
+        wanted: Dimension,
+        near: &'static str,
+        known: String,
+    },
+    #[error("unknown {} unit '{name}': expected one of {known}", .wanted.name())]
+    Unknown {
+        name: String,
+        wanted: Dimension,
+        known: String,
+    },
+}
+
 /// Edits between two names, a swap of neighbouring letters counting as one (the likeliest typo:
 /// "mhp" for "mph").
 fn edit_distance(a: &str, b: &str) -> usize {
@@ -145,47 +181,44 @@ fn edit_distance(a: &str, b: &str) -> usize {
     d[a.len()][b.len()]
 }
 
-/// The unit called `name` for `dimension`, or a message naming the nearest ones.
-pub fn lookup(name: &str, dimension: Dimension) -> Result<&'static Unit, String> {
-    let what = match dimension {
-        Dimension::Mass => "mass",
-        Dimension::Velocity => "velocity",
-    };
+/// The unit called `name` for `dimension`, or an error naming the nearest ones.
+pub fn lookup(name: &str, dimension: Dimension) -> Result<&'static Unit, UnitError> {
     if let Some((_, why)) = AMBIGUOUS.iter().find(|(n, _)| *n == name) {
-        return Err(format!("ambiguous unit: {why}"));
+        return Err(UnitError::Ambiguous(why));
     }
     let fits: Vec<&Unit> = UNITS.iter().filter(|u| u.dimension == dimension).collect();
     if let Some(u) = fits.iter().find(|u| u.names.contains(&name)) {
         return Ok(u);
     }
     if let Some(u) = UNITS.iter().find(|u| u.names.contains(&name)) {
-        return Err(format!(
-            "'{name}' is a unit of {}, not of {what}",
-            if u.dimension == Dimension::Mass {
-                "mass"
-            } else {
-                "velocity"
-            }
-        ));
+        return Err(UnitError::WrongDimension {
+            name: name.to_string(),
+            is: u.dimension,
+            wanted: dimension,
+        });
     }
-    let mut near: Vec<(usize, &str)> = fits
+    let mut near: Vec<(usize, &'static str)> = fits
         .iter()
         .flat_map(|u| u.names.iter())
         .map(|n| (edit_distance(&name.to_lowercase(), n), *n))
         .filter(|(d, _)| *d <= 2)
         .collect();
     near.sort();
-    let all: Vec<&str> = fits.iter().map(|u| u.name()).collect();
-    match near.first() {
-        Some((_, n)) => Err(format!(
-            "unknown {what} unit '{name}': did you mean '{n}'? (known: {})",
-            all.join(", ")
-        )),
-        None => Err(format!(
-            "unknown {what} unit '{name}': expected one of {}",
-            all.join(", ")
-        )),
-    }
+    let known = fits.iter().map(|u| u.name()).collect::<Vec<_>>().join(", ");
+    let name = name.to_string();
+    Err(match near.first() {
+        Some((_, n)) => UnitError::DidYouMean {
+            name,
+            wanted: dimension,
+            near: n,
+            known,
+        },
+        None => UnitError::Unknown {
+            name,
+            wanted: dimension,
+            known,
+        },
+    })
 }
 
 /// A typed value: a number with an optional unit.
@@ -195,14 +228,23 @@ pub struct Quantity {
     pub unit: Option<&'static Unit>,
 }
 
+/// Why a text is not a quantity.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum QuantityError {
+    #[error(transparent)]
+    Number(#[from] NumberError),
+    #[error(transparent)]
+    Unit(#[from] UnitError),
+}
+
 /// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
-pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, String> {
+pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
     let t = text.trim();
     // A whole number (or one that is out of range, or divides by zero) has no unit: its own
     // error is the one to report.
     match t.parse::<Number>() {
         Ok(number) => return Ok(Quantity { number, unit: None }),
-        Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.to_string()),
+        Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.into()),
         Err(_) => {}
     }
     // The longest prefix that is a number, followed by a unit name.
@@ -217,14 +259,14 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, String> {
                     .is_none_or(|c| c.is_whitespace() || c.is_alphabetic())
         });
     let Some(i) = cut else {
-        // No number at all: let the number parser say why.
+        // No number at all: the number parser says why.
         return Err(t
             .parse::<Number>()
-            .map_err(|e: NumberError| e.to_string())
             .err()
-            .unwrap_or_default());
+            .unwrap_or(NumberError::Empty)
+            .into());
     };
-    let number: Number = t[..i].parse().map_err(|e: NumberError| e.to_string())?;
+    let number: Number = t[..i].parse()?;
     let rest = t[i..].trim();
     let unit = if rest.is_empty() {
         None
@@ -259,32 +301,43 @@ impl Units {
     }
 }
 
-/// Resolved masses and velocities (`None` for `?`), with their units.
-pub type Resolved = (Vec<Option<Number>>, Vec<Option<Number>>, Units);
+/// Why a case's units cannot be resolved.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ResolveError {
+    #[error("give a unit for every {} or for none (some have one, some not)", .0.name())]
+    Mixed(Dimension),
+    #[error("--si needs a unit on every mass and velocity")]
+    SiNeedsUnits,
+    #[error("mixed units need a unit on every mass and velocity")]
+    MixedNeedsUnits,
+    #[error(transparent)]
+    Number(#[from] NumberError),
+}
+
+/// Resolved masses and velocities, with their units.
+pub type Resolved = (Vec<Given<Number>>, Vec<Given<Number>>, Units);
 
 /// Resolves a case's quantities: keeps the numbers when all masses share a unit (or none has one)
 /// and all velocities share one, unless `si`; otherwise converts everything exactly to kg and m/s.
-/// `?` placeholders pass through as `None`.
+/// `?` placeholders stay unknown.
 pub fn resolve(
-    masses: &[Option<Quantity>],
-    velocities: &[Option<Quantity>],
+    masses: &[Given<Quantity>],
+    velocities: &[Given<Quantity>],
     si: bool,
-) -> Result<Resolved, String> {
+) -> Result<Resolved, ResolveError> {
     fn common(
-        qs: &[Option<Quantity>],
-        what: &str,
-    ) -> Result<(bool, Option<&'static Unit>), String> {
+        qs: &[Given<Quantity>],
+        dimension: Dimension,
+    ) -> Result<(bool, Option<&'static Unit>), ResolveError> {
         // A bare 0 is 0 in any unit (`72 km/h,0`).
         let given: Vec<&Quantity> = qs
             .iter()
-            .flatten()
+            .filter_map(Given::known)
             .filter(|q| !(q.unit.is_none() && q.number.value() == 0.0))
             .collect();
         let with = given.iter().filter(|q| q.unit.is_some()).count();
         if with != 0 && with != given.len() {
-            return Err(format!(
-                "give a unit for every {what} or for none (some have one, some not)"
-            ));
+            return Err(ResolveError::Mixed(dimension));
         }
         let first = given.iter().find_map(|q| q.unit);
         let shared = given
@@ -292,34 +345,29 @@ pub fn resolve(
             .all(|q| q.unit.map(Unit::name) == first.map(Unit::name));
         Ok((shared, first))
     }
-    let (mass_shared, mass_unit) = common(masses, "mass")?;
-    let (vel_shared, vel_unit) = common(velocities, "velocity")?;
+    let (mass_shared, mass_unit) = common(masses, Dimension::Mass)?;
+    let (vel_shared, vel_unit) = common(velocities, Dimension::Velocity)?;
     let any_unit = mass_unit.is_some() || vel_unit.is_some();
     let convert = si || !mass_shared || !vel_shared;
     if convert && (mass_unit.is_none() || vel_unit.is_none()) {
         return Err(if si {
-            "--si needs a unit on every mass and velocity".into()
+            ResolveError::SiNeedsUnits
         } else {
-            "mixed units need a unit on every mass and velocity".into()
+            ResolveError::MixedNeedsUnits
         });
     }
-    let to = |qs: &[Option<Quantity>]| -> Result<Vec<Option<Number>>, String> {
+    let to = |qs: &[Given<Quantity>]| -> Result<Vec<Given<Number>>, ResolveError> {
         qs.iter()
             .map(|q| match q {
-                None => Ok(None),
-                Some(q) if convert => {
+                Given::Unknown => Ok(Given::Unknown),
+                Given::Known(q) if convert => {
                     let si = q.number.exact()
                         * q.unit
                             .map(Unit::si)
                             .unwrap_or_else(|| BigRational::from_integer(1.into()));
-                    let text = if si.is_integer() {
-                        si.numer().to_string()
-                    } else {
-                        format!("{}/{}", si.numer(), si.denom())
-                    };
-                    text.parse::<Number>().map(Some).map_err(|e| e.to_string())
+                    Ok(Given::Known(crate::quantity::fraction(&si).parse()?))
                 }
-                Some(q) => Ok(Some(q.number.clone())),
+                Given::Known(q) => Ok(Given::Known(q.number.clone())),
             })
             .collect()
     };
@@ -337,6 +385,42 @@ pub fn resolve(
         Units::default()
     };
     Ok((to(masses)?, to(velocities)?, units))
+}
+
+/// Two values as typed (`M1,M2`, `V1,V2`, `F1,F2`): numbers with optional units, or `?`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pair(pub [Given<Quantity>; 2]);
+
+/// Why a text is not a pair of quantities.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum PairError {
+    #[error(transparent)]
+    Fields(#[from] FieldsError),
+    /// A bad value, named by its dimension when the message starts with it (`mass 'abc' ...`).
+    #[error("{}", value_message(*.dimension, .error))]
+    Value {
+        dimension: Dimension,
+        error: QuantityError,
+    },
+}
+
+fn value_message(dimension: Dimension, e: &QuantityError) -> String {
+    let e = e.to_string();
+    if e.starts_with('\'') {
+        format!("{} {e}", dimension.name())
+    } else {
+        e
+    }
+}
+
+/// Parses `a,b` where each is `?` or a number with an optional unit; `what` names them.
+pub fn parse_pair(text: &str, dimension: Dimension, what: &str) -> Result<Pair, PairError> {
+    let [a, b] = split_fields::<2>(text, what)?;
+    let one = |t: &str| {
+        Given::parse(t, |t| parse(t, dimension))
+            .map_err(|error| PairError::Value { dimension, error })
+    };
+    Ok(Pair([one(a)?, one(b)?]))
 }
 
 #[cfg(test)]
@@ -370,22 +454,24 @@ mod tests {
 
     #[test]
     fn unknown_and_ambiguous_units_say_what_to_write() {
-        let e = parse("60 mhp", Dimension::Velocity).unwrap_err();
+        let e = parse("60 mhp", Dimension::Velocity)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("did you mean 'mph'"), "{e}");
-        let e = parse("4 T", Dimension::Mass).unwrap_err();
+        let e = parse("4 T", Dimension::Mass).unwrap_err().to_string();
         assert!(
             e.contains("ambiguous") && e.contains("'t'") && e.contains("'ton'"),
             "{e}"
         );
-        let e = parse("4 mph", Dimension::Mass).unwrap_err();
+        let e = parse("4 mph", Dimension::Mass).unwrap_err().to_string();
         assert!(e.contains("unit of velocity, not of mass"), "{e}");
-        let e = parse("abc", Dimension::Mass).unwrap_err();
+        let e = parse("abc", Dimension::Mass).unwrap_err().to_string();
         assert!(e.contains("'abc' is not a number"), "{e}");
     }
 
     #[test]
     fn resolution_keeps_shared_units_and_converts_mixed_ones() {
-        let q = |s: &str, d| Some(parse(s, d).unwrap());
+        let q = |s: &str, d| Given::Known(parse(s, d).unwrap());
         use Dimension::*;
         let (m, v, u) = resolve(
             &[q("4 ton", Mass), q("1 ton", Mass)],
@@ -393,8 +479,8 @@ mod tests {
             false,
         )
         .unwrap();
-        assert_eq!(m[0].as_ref().unwrap().value(), 4.0);
-        assert_eq!(v[1].as_ref().unwrap().value(), 10.0);
+        assert_eq!(m[0].known().unwrap().value(), 4.0);
+        assert_eq!(v[1].known().unwrap().value(), 10.0);
         assert_eq!(u.energy(), "ton mph^2");
         // Mixed: 1500 kg and 1 t -> 1500 and 1000 kg; 72 km/h -> 20 m/s exactly.
         let (m, v, u) = resolve(
@@ -404,13 +490,10 @@ mod tests {
         )
         .unwrap();
         assert_eq!(
-            (
-                m[0].as_ref().unwrap().value(),
-                m[1].as_ref().unwrap().value()
-            ),
+            (m[0].known().unwrap().value(), m[1].known().unwrap().value()),
             (1500.0, 1000.0)
         );
-        assert_eq!(v[0].as_ref().unwrap().value(), 20.0);
+        assert_eq!(v[0].known().unwrap().value(), 20.0);
         assert_eq!(u.energy(), "J");
         // --si: 60 mph = 26.8224 m/s exactly.
         let (_, v, _) = resolve(
@@ -420,7 +503,7 @@ mod tests {
         )
         .unwrap();
         assert_eq!(
-            v[0].as_ref().unwrap().exact(),
+            v[0].known().unwrap().exact(),
             "26.8224".parse::<Number>().unwrap().exact()
         );
         let e = resolve(
@@ -428,7 +511,8 @@ mod tests {
             &[q("1", Velocity), q("2", Velocity)],
             false,
         )
-        .unwrap_err();
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("every mass or for none"), "{e}");
         // A bare 0 takes any unit.
         let (_, v, u) = resolve(
@@ -438,7 +522,7 @@ mod tests {
         )
         .unwrap();
         assert_eq!(
-            (v[1].as_ref().unwrap().value(), u.energy()),
+            (v[1].known().unwrap().value(), u.energy()),
             (0.0, "kg km/h^2".to_string())
         );
         let (_, _, u) = resolve(
@@ -449,32 +533,4 @@ mod tests {
         .unwrap();
         assert_eq!(u.energy(), "mass unit x velocity unit^2");
     }
-}
-
-/// Two values as typed (`M1,M2`, `V1,V2`, `F1,F2`): numbers with optional units, `?` for unknown.
-#[derive(Clone, Debug, PartialEq, Default)]
-pub struct Pair(pub [Option<Quantity>; 2]);
-
-/// Parses `a,b` where each is `?` or a number with an optional unit; `what` names them.
-pub fn parse_pair(text: &str, dimension: Dimension, what: &str) -> Result<Pair, String> {
-    let [a, b] = crate::number::split_fields::<2>(text, what)?;
-    let one = |t: &str| -> Result<Option<Quantity>, String> {
-        if t == "?" {
-            Ok(None)
-        } else {
-            parse(t, dimension).map(Some).map_err(|e| {
-                let kind = if dimension == Dimension::Mass {
-                    "mass"
-                } else {
-                    "velocity"
-                };
-                if e.starts_with('\'') {
-                    format!("{kind} {e}")
-                } else {
-                    e
-                }
-            })
-        }
-    };
-    Ok(Pair([one(a)?, one(b)?]))
 }

@@ -10,10 +10,10 @@
 use std::collections::BTreeMap;
 
 use collide::accuracy::{Family, families, ulps};
-use collide::exact::ExactCollision;
-use collide::frame::Observed;
 use collide::quantity::{Exact, from_f64, to_f64};
 use collide::report::{Report, Section, Sections};
+use collide::solver::binary64::Binary64;
+use collide::solver::exact::ExactCollision;
 use num_rational::BigRational;
 use num_traits::Signed;
 
@@ -77,7 +77,7 @@ fn measure(f: &Family, worst: &mut Worst) {
             c.restitution.value()
         );
         let x: Report<Exact> = Report::build(&ExactCollision::from_binary64(c), &all).unwrap();
-        let r: Report<f64> = match Report::build(&Observed::lab(c), &all) {
+        let r: Report<f64> = match Report::build(&Binary64::lab(c), &all) {
             Ok(r) => r,
             Err(e) => {
                 // A refusal is right only when the exact value is beyond binary64.
@@ -93,7 +93,7 @@ fn measure(f: &Family, worst: &mut Worst) {
                 );
                 worst.1 += 1;
                 Report::build(
-                    &Observed::lab(c),
+                    &Binary64::lab(c),
                     &Sections::new(
                         Section::EVERY
                             .into_iter()
@@ -241,7 +241,7 @@ fn every_printed_quantity_is_within_the_stated_bound() {
 fn unrepresentable_results_are_refused_not_rounded_to_inf() {
     // -m 1,1 -v 1e200,-1e200: KE ~ 1e400.
     let c = collide::accuracy::case([[1.0, 0.0], [0.0, 1.0]], [1e200, -1e200], 1.0).unwrap();
-    let err = Report::build(&Observed::lab(&c), &Sections::new([Section::Energy])).unwrap_err();
+    let err = Report::build(&Binary64::lab(&c), &Sections::new([Section::Energy])).unwrap_err();
     assert_eq!(err.quantity, "energy.in");
     // The exact report has the value.
     let x = Report::build(

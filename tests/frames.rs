@@ -3,9 +3,10 @@
 mod common;
 
 use collide::accuracy::case;
-use collide::frame::{Frame, Observed};
+use collide::frame::Frame;
 use collide::quantity::from_f64;
 use collide::solver::Solver;
+use collide::solver::binary64::Binary64;
 use common::{REL, assert_close, assert_pair, collide, stdout};
 use proptest::prelude::*;
 use serde::Deserialize;
@@ -258,13 +259,13 @@ proptest! {
     ) {
         let c = case([[m1, 0.0], [0.0, m2]], [v1, v2], e).unwrap();
         let w = s * 10f64.powi(k);
-        let lab = Observed::lab(&c);
-        let moving = Observed::new(&c, &Frame::Velocity(collide::number::Number::from_f64(w).unwrap()));
+        let lab = Binary64::lab(&c);
+        let moving = Binary64::new(&c, &Frame::Velocity(collide::number::Number::from_f64(w).unwrap()));
         prop_assert_eq!(moving.crunch(), lab.crunch());
         prop_assert_eq!(moving.lost(), lab.lost());
         prop_assert_eq!(moving.relative_velocity(), lab.relative_velocity());
         // Against the exact FIN of the binary64 inputs, shifted by the exact w.
-        let exact_fin = collide::exact::ExactCollision::from_binary64(&c).v_fin_q();
+        let exact_fin = collide::solver::exact::ExactCollision::from_binary64(&c).v_fin_q();
         let fin_w = moving.v_fin();
         for i in 0..2 {
             let expected = &exact_fin[i] - from_f64(w);

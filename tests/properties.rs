@@ -12,6 +12,8 @@ use collide::number::Number;
 use collide::quantity::from_f64;
 use collide::restitution::Restitution;
 use collide::scene::Scene;
+use collide::solver::Solver;
+use collide::solver::binary64::Binary64;
 use proptest::prelude::*;
 
 /// A mass `m * 10^k` with `k` in [-290, 290].
@@ -102,12 +104,15 @@ proptest! {
     /// sqrt(KE_IN KE_FIN), as for the forms).
     #[test]
     fn final_energy_is_com_energy_plus_e_squared_crunch(c in any_case()) {
+        let s = Binary64::lab(&c);
         let fin = c.v_fin();
         let direct = 0.5 * c.inertia.form(&fin, &fin);
-        let scale = c.ke_in().sqrt() * c.ke_fin().sqrt();
-        prop_assert!(within(direct, c.ke_fin(), scale, 3.0), "{direct} vs {}", c.ke_fin());
-        // And KE_IN = KE_COM + crunch (Koenig), both sides computed independently.
-        prop_assert!(within(c.ke_com() + c.crunch(), c.ke_in(), c.ke_in(), 2.0));
+        let scale = s.ke_in().sqrt() * s.ke_fin().sqrt();
+        prop_assert!(within(direct, s.ke_fin(), scale, 3.0), "{direct} vs {}", s.ke_fin());
+        // And KE_IN = KE_COM + crunch (Koenig) is the quadratic form 1/2 V_IN.M.V_IN computed
+        // directly.
+        let ke_in = 0.5 * c.inertia.form(&c.v_in, &c.v_in);
+        prop_assert!(within(s.ke_in(), ke_in, ke_in, 2.0), "{} vs {ke_in}", s.ke_in());
     }
 
     /// Swapping the bodies swaps the answer.
@@ -118,8 +123,13 @@ proptest! {
         let (f, g) = (c.v_fin(), s.v_fin());
         let scale = velocity_scale(&c);
         prop_assert!(within(g.x, f.y, scale, 1.0) && within(g.y, f.x, scale, 1.0), "{f:?} vs {g:?}");
+        let (s, c) = (Binary64::lab(&s), Binary64::lab(&c));
         prop_assert_eq!(s.crunch(), c.crunch());
-        prop_assert!(within(s.ke_fin(), c.ke_fin(), c.ke_fin(), 1.0));
+        // Either both are a real result, or both are refused (NaN: below binary64's normal
+        // range, as KE_COM = 1/2 (m1 v1)^2 / (m1 + m2) is for m1 = 1e-137, m2 = 1e8, v1 = 1e-13).
+        let both_refused = s.ke_fin().is_nan() && c.ke_fin().is_nan();
+        prop_assert!(both_refused || within(s.ke_fin(), c.ke_fin(), c.ke_fin(), 1.0),
+                     "{} vs {}", s.ke_fin(), c.ke_fin());
     }
 
     /// Sec. 4: a Galilean boost changes no crunch energy. Velocities on a 2^-20 grid and boosts
@@ -133,8 +143,9 @@ proptest! {
         let e = c.restitution.value();
         let lab = case(mm, [v1 as f64 * g, v2 as f64 * g], e).unwrap();
         let moving = case(mm, [(v1 + w) as f64 * g, (v2 + w) as f64 * g], e).unwrap();
+        let (lab, moving) = (Binary64::lab(&lab), Binary64::lab(&moving));
         prop_assert_eq!(lab.crunch(), moving.crunch());
-        prop_assert_eq!(lab.energy_lost(), moving.energy_lost());
+        prop_assert_eq!(lab.lost(), moving.lost());
     }
 
     /// Time-reversal symmetry: the elastic FIN of FIN is IN, to the rounding of the first FIN
@@ -210,7 +221,7 @@ proptest! {
         let _ = Scene::parse(Path::new("fuzz.toml"), &noise);
         if let Ok(scene) = Scene::parse(Path::new("fuzz.toml"), &text) {
             let _ = collide::report::Report::build(
-                &collide::frame::Observed::new(&scene.case.collision, &scene.frame),
+                &Binary64::new(&scene.case.collision, &scene.frame),
                 &scene.sections_needed(),
             );
         }

@@ -372,7 +372,10 @@ fn caps_and_bad_layouts() {
             vec!["-m", "1,1", "-x", "1,2", "-v", "0"],
             "--velocities has 1 values for 2 masses",
         ),
-        (vec!["-m", "1,0", "-x", "1,2", "-v", "0,0"], "mass 0"),
+        (
+            vec!["-m", "1,0", "-x", "1,2", "-v", "0,0"],
+            "body 2: mass '0' must be greater than 0",
+        ),
         (
             vec!["-m", "1", "-x", "1", "-v", "0", "--gravity", "1"],
             "left-wall",

@@ -8,11 +8,10 @@ pub mod svg;
 pub mod term;
 pub mod velocity;
 
-use std::str::FromStr;
-
 use crate::case::Case;
-use crate::frame::{Frame, Observed};
+use crate::frame::Frame;
 use crate::solver::Solver;
+use crate::solver::binary64::Binary64;
 
 /// Which picture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
@@ -24,20 +23,6 @@ pub enum Kind {
     Newton,
     /// Time up, position across
     Minkowski,
-}
-
-impl FromStr for Kind {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Kind, String> {
-        match s.trim() {
-            "velocity" => Ok(Kind::Velocity),
-            "newton" => Ok(Kind::Newton),
-            "minkowski" => Ok(Kind::Minkowski),
-            t => Err(format!(
-                "plot kind '{t}': expected velocity, newton or minkowski"
-            )),
-        }
-    }
 }
 
 /// One energy ellipse `1/2 V.M.V = KE`: radii along unit axes.
@@ -97,7 +82,7 @@ pub struct Picture {
 impl Picture {
     pub fn new(case: &Case, frame: &Frame, overlay_frames: bool) -> Picture {
         let c = &case.collision;
-        let seen = Observed::new(c, frame);
+        let seen = Binary64::new(c, frame);
         let pair = |p: [f64; 2]| (p[0], p[1]);
         let m = c.inertia.matrix();
         let axes = if c.inertia.is_diagonal() {
@@ -123,7 +108,7 @@ impl Picture {
                 .into_iter()
                 .filter(|f| f != frame)
                 .map(|f| {
-                    let o = Observed::new(c, &f);
+                    let o = Binary64::new(c, &f);
                     (
                         f.describe(),
                         pair(o.v_in()),
@@ -161,6 +146,19 @@ impl Picture {
             ellipse_fin: (e > 0.0 && e < 1.0).then(|| shape(seen.ke_fin())),
             others,
         }
+    }
+}
+
+impl Picture {
+    /// The energy ellipses drawn: IN, COM, and FIN when it is a third one.
+    pub fn ellipses(&self) -> impl Iterator<Item = &EllipseShape> {
+        [
+            Some(&self.ellipse_in),
+            Some(&self.ellipse_com),
+            self.ellipse_fin.as_ref(),
+        ]
+        .into_iter()
+        .flatten()
     }
 }
 

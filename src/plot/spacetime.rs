@@ -47,24 +47,15 @@ pub fn svg(p: &Picture, minkowski: bool) -> String {
     } else {
         (t_label, x_label)
     };
-    for t in ticks(across.0, across.1, 6) {
-        let x = LEFT + (t - across.0) * sx;
-        svg.line(None, (x, TOP), (x, TOP + H), "stroke=\"#f3f4f6\"");
-        svg.text(
-            (x, TOP + H + 16.0),
-            &num(t),
-            "text-anchor=\"middle\" fill=\"#6b7280\" font-size=\"11\"",
-        );
-    }
-    for t in ticks(up.0, up.1, 6) {
-        let y = TOP + (up.1 - t) * sy;
-        svg.line(None, (LEFT, y), (LEFT + W, y), "stroke=\"#f3f4f6\"");
-        svg.text(
-            (LEFT - 6.0, y + 4.0),
-            &num(t),
-            "text-anchor=\"end\" fill=\"#6b7280\" font-size=\"11\"",
-        );
-    }
+    svg.grid(
+        (LEFT, TOP, W, H),
+        ticks(across.0, across.1, 6)
+            .into_iter()
+            .map(|t| (LEFT + (t - across.0) * sx, t)),
+        ticks(up.0, up.1, 6)
+            .into_iter()
+            .map(|t| (TOP + (up.1 - t) * sy, t)),
+    );
     svg.text(
         (LEFT + W / 2.0, TOP + H + 36.0),
         a_label,

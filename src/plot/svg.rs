@@ -126,6 +126,34 @@ impl Svg {
         );
     }
 
+    /// The grid and tick labels of the plot area `(left, top, width, height)`: a vertical line at
+    /// each screen x of `across` and a horizontal one at each screen y of `up`, each labelled
+    /// with its value.
+    pub fn grid(
+        &mut self,
+        (left, top, width, height): (f64, f64, f64, f64),
+        across: impl IntoIterator<Item = (f64, f64)>,
+        up: impl IntoIterator<Item = (f64, f64)>,
+    ) {
+        let style = "stroke=\"#f3f4f6\"";
+        for (x, value) in across {
+            self.line(None, (x, top), (x, top + height), style);
+            self.text(
+                (x, top + height + 16.0),
+                &short(value),
+                "text-anchor=\"middle\" fill=\"#6b7280\" font-size=\"11\"",
+            );
+        }
+        for (y, value) in up {
+            self.line(None, (left, y), (left + width, y), style);
+            self.text(
+                (left - 6.0, y + 4.0),
+                &short(value),
+                "text-anchor=\"end\" fill=\"#6b7280\" font-size=\"11\"",
+            );
+        }
+    }
+
     /// The document.
     pub fn finish(self, title: &str) -> String {
         let mut out = String::new();
@@ -153,7 +181,7 @@ impl Svg {
 /// them all).
 pub fn short(x: f64) -> String {
     let r: f64 = format!("{x:.3e}").parse().unwrap_or(x);
-    crate::report::text::num(r)
+    crate::number::num(r)
 }
 
 /// "Nice" tick positions covering `[lo, hi]`: steps of 1, 2 or 5 times a power of ten.

@@ -3,7 +3,7 @@
 
 use super::Picture;
 use super::velocity::Map;
-use crate::report::text::num;
+use crate::number::num;
 
 /// A braille canvas of `cols` x `rows` characters.
 struct Canvas {
@@ -121,14 +121,7 @@ pub fn render(p: &Picture, width: usize) -> String {
     if let Some((a, b)) = map.clip(p.line) {
         cv.line(to(a), to(b));
     }
-    for e in [
-        Some(&p.ellipse_in),
-        Some(&p.ellipse_com),
-        p.ellipse_fin.as_ref(),
-    ]
-    .into_iter()
-    .flatten()
-    {
+    for e in p.ellipses() {
         let pts = e.points(400);
         for w in pts.windows(2) {
             cv.line(to(w[0]), to(w[1]));

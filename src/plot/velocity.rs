@@ -31,14 +31,7 @@ impl Map {
     /// drawn as the square of `side` at screen `(left, top)`.
     pub fn fit(p: &Picture, (left, top): (f64, f64), side: f64) -> Map {
         let mut pts = vec![(0.0, 0.0), p.v_in, p.v_com, p.v_fin];
-        for e in [
-            Some(&p.ellipse_in),
-            Some(&p.ellipse_com),
-            p.ellipse_fin.as_ref(),
-        ]
-        .into_iter()
-        .flatten()
-        {
+        for e in p.ellipses() {
             let (hx, hy) = e.extent();
             pts.extend([(hx, hy), (-hx, -hy)]);
         }
@@ -143,26 +136,15 @@ pub fn svg(p: &Picture) -> String {
     svg.raw(&format!(
         "<rect x=\"{LEFT}\" y=\"{TOP}\" width=\"{SIDE}\" height=\"{SIDE}\" fill=\"none\" stroke=\"#d1d5db\"/>"
     ));
-    // Grid and ticks.
-    let style = "stroke=\"#f3f4f6\"";
-    for t in ticks(map.x.0, map.x.1, 6) {
-        let (x, _) = map.at((t, 0.0));
-        svg.line(None, (x, TOP), (x, TOP + SIDE), style);
-        svg.text(
-            (x, TOP + SIDE + 16.0),
-            &num(t),
-            "text-anchor=\"middle\" fill=\"#6b7280\" font-size=\"11\"",
-        );
-    }
-    for t in ticks(map.y.0, map.y.1, 6) {
-        let (_, y) = map.at((0.0, t));
-        svg.line(None, (LEFT, y), (LEFT + SIDE, y), style);
-        svg.text(
-            (LEFT - 6.0, y + 4.0),
-            &num(t),
-            "text-anchor=\"end\" fill=\"#6b7280\" font-size=\"11\"",
-        );
-    }
+    svg.grid(
+        (LEFT, TOP, SIDE, SIDE),
+        ticks(map.x.0, map.x.1, 6)
+            .into_iter()
+            .map(|t| (map.at((t, 0.0)).0, t)),
+        ticks(map.y.0, map.y.1, 6)
+            .into_iter()
+            .map(|t| (map.at((0.0, t)).1, t)),
+    );
     svg.text(
         (LEFT + SIDE / 2.0, TOP + SIDE + 36.0),
         "V1",

@@ -1,17 +1,25 @@
-//! What `solve` reports: the sections a user asked for, each computed only when asked for, as one
-//! serializable structure that the text and JSON formats render.
+//! What is printed, and how. The two-body report: the sections a user asked for, each computed
+//! only when asked for, as one serializable structure that the text and JSON formats render;
+//! and the renderers of the other commands' results (frames, tables of methods, tracks, scenes).
 
+pub mod accuracy;
+pub mod frames;
 pub mod json;
+pub mod scene;
+pub mod solved;
 pub mod text;
+pub mod track;
 
 use std::collections::BTreeSet;
 
 use serde::{Deserialize, Serialize};
 
+use crate::case::Case;
 use crate::ellipse::Ellipse;
-use crate::frame::FrameInfo;
-use crate::quantity::Scalar;
-use crate::solver::Solver;
+use crate::frame::Frame;
+use crate::quantity::{Exact, Scalar};
+use crate::solver::exact::ExactCollision;
+use crate::solver::{Lab, Solver};
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
 #[derive(
@@ -94,6 +102,13 @@ impl Sections {
     pub fn insert(&mut self, s: Section) {
         self.0.extend(Sections::new([s]).0);
     }
+}
+
+/// `"frame": {"name": "com", "w": 2.0}` in JSON.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct FrameInfo<N> {
+    pub name: String,
+    pub w: N,
 }
 
 /// The solved collision, with the requested sections filled in. Field names are the JSON schema.
@@ -284,7 +299,35 @@ pub struct Unrepresentable {
     pub quantity: String,
 }
 
+/// Why a report cannot be given.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ReportError {
+    #[error(transparent)]
+    Unrepresentable(#[from] Unrepresentable),
+    #[error(transparent)]
+    Irreversible(#[from] Irreversible),
+}
+
 impl<N: Scalar> Report<N> {
+    /// The report of `lab` seen from `frame`, with the time-reversed collision when `reverse`.
+    pub fn of<L: Lab<N = N>>(
+        lab: &L,
+        frame: &Frame,
+        sections: &Sections,
+        reverse: bool,
+    ) -> Result<Report<N>, ReportError> {
+        let (w, seen) = lab.seen_from(frame);
+        let mut r = Report::build(&seen, sections)?;
+        r.frame = (*frame != Frame::Lab).then(|| FrameInfo {
+            name: frame.to_string(),
+            w,
+        });
+        if reverse {
+            r = r.with_reverse(&seen, lab.is_own_time_reverse(frame))?;
+        }
+        Ok(r)
+    }
+
     /// Computes the requested sections of a solved collision, and nothing else.
     pub fn build<S: Solver<N = N>>(
         c: &S,
@@ -411,6 +454,51 @@ impl<N: Scalar> Report<N> {
             });
         }
         Ok(())
+    }
+}
+
+/// A report in the arithmetic that was asked for.
+pub enum AnyReport {
+    Binary64(Box<Report<f64>>),
+    Exact(Box<Report<Exact>>),
+}
+
+impl AnyReport {
+    /// `case` seen from `frame`, in exact arithmetic from the typed values or in binary64.
+    pub fn of(
+        case: &Case,
+        frame: &Frame,
+        exact: bool,
+        sections: &Sections,
+        reverse: bool,
+    ) -> Result<AnyReport, ReportError> {
+        Ok(if exact {
+            let lab = ExactCollision::from_case(case);
+            AnyReport::Exact(Box::new(Report::of(&lab, frame, sections, reverse)?))
+        } else {
+            AnyReport::Binary64(Box::new(Report::of(
+                &case.collision,
+                frame,
+                sections,
+                reverse,
+            )?))
+        })
+    }
+
+    pub fn json(&self) -> serde_json::Value {
+        match self {
+            AnyReport::Binary64(r) => serde_json::to_value(r),
+            AnyReport::Exact(r) => serde_json::to_value(r),
+        }
+        .expect("reports serialize")
+    }
+
+    /// Text of the sections in `show` (others were computed only for a scene's checks).
+    pub fn text(&self, case: &Case, show: &Sections) -> String {
+        match self {
+            AnyReport::Binary64(r) => text::render(case, &r.only(show)),
+            AnyReport::Exact(r) => text::render(case, &r.only(show)),
+        }
     }
 }
 

@@ -9,71 +9,108 @@ use super::{
 };
 use crate::case::Case;
 use crate::ellipse::Ellipse;
-use crate::frame::FramesTable;
 use crate::quantity::Scalar;
 
-/// A number as people read it: shortest round-trip digits, plain for 1e-5 <= |x| < 1e16 and in
-/// scientific notation outside.
-pub fn num(x: f64) -> String {
-    let a = x.abs();
-    if x == 0.0 {
-        "0".to_string()
-    } else if (1e-5..1e16).contains(&a) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
-}
-
-fn pair<N: Scalar>(v: &[N; 2]) -> String {
+/// `(V1, V2)`.
+pub fn pair<N: Scalar>(v: &[N; 2]) -> String {
     format!("({}, {})", v[0].show(), v[1].show())
 }
 
-/// Rows of cells (`label  value  note ...`), aligned into columns under a heading.
-struct Block {
-    heading: String,
-    rows: Vec<Vec<String>>,
+/// Rows of cells aligned into columns (two spaces apart, trailing blanks trimmed), under an
+/// optional heading: every aligned table collide prints for people.
+pub struct Block {
+    heading: Option<String>,
+    indent: &'static str,
+    rows: Vec<Option<Vec<String>>>,
+    right: Vec<usize>,
 }
 
 impl Block {
-    fn new(heading: impl Into<String>) -> Block {
+    /// `heading`, then rows indented by two spaces (a report section).
+    pub fn new(heading: impl Into<String>) -> Block {
         Block {
-            heading: heading.into(),
+            heading: Some(heading.into()),
+            indent: "  ",
             rows: Vec::new(),
+            right: Vec::new(),
         }
     }
-    fn row(&mut self, label: impl Into<String>, value: impl Into<String>, note: impl Into<String>) {
+
+    /// Rows only, not indented, with the columns in `right` aligned right (a table of numbers).
+    pub fn table(right: &[usize]) -> Block {
+        Block {
+            heading: None,
+            indent: "",
+            rows: Vec::new(),
+            right: right.to_vec(),
+        }
+    }
+
+    /// `label  value  note`.
+    pub fn row(
+        &mut self,
+        label: impl Into<String>,
+        value: impl Into<String>,
+        note: impl Into<String>,
+    ) {
         self.rows
-            .push(vec![label.into(), value.into(), note.into()]);
+            .push(Some(vec![label.into(), value.into(), note.into()]));
     }
-    fn cells<const N: usize>(&mut self, cells: [String; N]) {
-        self.rows.push(cells.into());
+
+    pub fn cells<const N: usize>(&mut self, cells: [String; N]) {
+        self.rows.push(Some(cells.into()));
     }
-    fn render(&self, out: &mut String) {
-        let columns = self.rows.iter().map(Vec::len).max().unwrap_or(0);
+
+    pub fn cell_vec(&mut self, cells: Vec<String>) {
+        self.rows.push(Some(cells));
+    }
+
+    /// A blank line between groups of rows.
+    pub fn gap(&mut self) {
+        self.rows.push(None);
+    }
+
+    pub fn render(&self, out: &mut String) {
+        let rows = || self.rows.iter().flatten();
+        let columns = rows().map(Vec::len).max().unwrap_or(0);
         let widths: Vec<usize> = (0..columns)
             .map(|i| {
-                self.rows
-                    .iter()
+                rows()
                     .filter_map(|r| r.get(i))
                     .map(|c| c.chars().count())
                     .max()
                     .unwrap_or(0)
             })
             .collect();
-        let _ = writeln!(out, "\n{}", self.heading);
+        if let Some(h) = &self.heading {
+            let _ = writeln!(out, "\n{h}");
+        }
         for row in &self.rows {
-            let mut line = String::from(" ");
-            for (cell, w) in row.iter().zip(&widths) {
-                let _ = write!(line, " {cell:<w$} ");
-            }
+            let Some(row) = row else {
+                out.push('\n');
+                continue;
+            };
+            let cells: Vec<String> = row
+                .iter()
+                .zip(&widths)
+                .enumerate()
+                .map(|(i, (cell, w))| {
+                    let pad = w.saturating_sub(cell.chars().count());
+                    if self.right.contains(&i) {
+                        format!("{}{cell}", " ".repeat(pad))
+                    } else {
+                        format!("{cell}{}", " ".repeat(pad))
+                    }
+                })
+                .collect();
+            let line = format!("{}{}", self.indent, cells.join("  "));
             let _ = writeln!(out, "{}", line.trim_end());
         }
     }
 }
 
 /// `M = diag(4, 1)   V_IN = (60, 10)   e = 1 (elastic: ka-bong)`, a line.
-fn header(case: &Case) -> String {
+pub fn header(case: &Case) -> String {
     let e = case.restitution();
     let mut out = format!(
         "M = {}   V_IN = ({}, {})   e = {} ({})\n",
@@ -164,84 +201,6 @@ fn reverse<N: Scalar>(case: &Case, r: &Reverse<N>) -> Block {
         );
     }
     b
-}
-
-/// The frames table (lecture Figs. 2.5 and 3.4) with its checked invariants.
-pub fn frames<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
-    let e = case.restitution();
-    let mut out = String::new();
-    out.push_str(&header(case));
-    let heading = "Frames (an observer moving at w sees every velocity shifted by -w)";
-    let mut b = Block::new(heading);
-    let mut header = vec!["frame", "w", "IN", "COM"];
-    if !e.is_totally_inelastic() {
-        header.push("FIN");
-    }
-    if e.is_elastic() {
-        header.extend(["KE_IN = KE_FIN", "KE_COM", "crunch"]);
-    } else if e.is_totally_inelastic() {
-        header.extend(["KE_IN", "KE_FIN = KE_COM", "crunch = lost"]);
-    } else {
-        header.extend(["KE_IN", "KE_FIN", "KE_COM", "crunch", "lost"]);
-    }
-    let reversing = t.frames.iter().any(|r| r.reverse_equals_original.is_some());
-    if reversing {
-        header.push("reversed = original");
-    }
-    b.rows.push(header.into_iter().map(String::from).collect());
-    for r in &t.frames {
-        let en = &r.energy;
-        let mut row = vec![r.label.clone(), r.w.show(), pair(&r.v_in), pair(&r.com)];
-        if !e.is_totally_inelastic() {
-            row.push(pair(&r.fin));
-        }
-        if e.is_elastic() || e.is_totally_inelastic() {
-            // Elastic: KE_IN = KE_FIN; stuck: KE_FIN = KE_COM and lost = crunch.
-            row.extend([en.ke_in.show(), en.com.show(), en.crunch.show()]);
-        } else {
-            row.extend([
-                en.ke_in.show(),
-                en.fin.show(),
-                en.com.show(),
-                en.crunch.show(),
-                en.lost.show(),
-            ]);
-        }
-        if let Some(same) = r.reverse_equals_original {
-            row.push(if same { "yes" } else { "no" }.into());
-        }
-        b.rows.push(row);
-    }
-    b.render(&mut out);
-    let inv = &t.invariants;
-    let mut lines = vec![
-        format!("crunch = 1/2 mu (V1 - V2)^2 = {}", inv.crunch.show()),
-        format!(
-            "relative velocity V1 - V2 = {}",
-            inv.relative_velocity.show()
-        ),
-        format!(
-            "e = -(FIN1 - FIN2)/(IN1 - IN2) = {}",
-            inv.restitution.show()
-        ),
-    ];
-    if !e.is_elastic() {
-        lines.insert(1, format!("energy lost = {}", inv.lost.show()));
-    }
-    let _ = writeln!(
-        out,
-        "\nInvariants, computed in each frame from its own velocities and equal in all:"
-    );
-    for l in lines {
-        let _ = writeln!(out, "  {l}");
-    }
-    if e.is_totally_inelastic() {
-        let _ = writeln!(
-            out,
-            "  (e = 0: FIN = COM, so the bodies' \"finally at rest\" frames are the COM frame)"
-        );
-    }
-    out
 }
 
 fn diagnostics(d: &Diagnostics) -> Block {
@@ -457,125 +416,4 @@ fn products<N: Scalar>(p: &Products<N>) -> Block {
         "outer product",
     );
     b
-}
-
-/// `collide track` for people.
-pub fn track(
-    t: &crate::track::Track,
-    r: &crate::track::TrackReport,
-    limits: crate::track::Limits,
-) -> String {
-    use crate::track::Stop;
-    let run = &r.run;
-    let mut out = String::new();
-    let walls = match (t.left_wall, t.right_wall) {
-        (Some(l), Some(rw)) => format!("walls at {} and {}", num(l), num(rw)),
-        (Some(l), None) => format!("a left wall at {}", num(l)),
-        (None, Some(rw)) => format!("a right wall at {}", num(rw)),
-        (None, None) => "no walls".into(),
-    };
-    let gravity = if t.gravity > 0.0 {
-        format!(", gravity {} toward the left wall", num(t.gravity))
-    } else {
-        String::new()
-    };
-    let _ = writeln!(
-        out,
-        "{} bodies, {walls}{gravity}; e = {} between bodies, {} at walls",
-        t.bodies.len(),
-        num(t.e),
-        num(t.e_wall)
-    );
-    let why = match &run.stop {
-        Stop::Done => "no collision can happen any more".to_string(),
-        Stop::Until => "reached --until".to_string(),
-        Stop::MaxCollisions => format!(
-            "stopped at the --max-collisions cap of {}; raise it to go on",
-            limits.max_collisions
-        ),
-        Stop::Zeno {
-            at,
-            accumulation,
-            who,
-            x,
-        } => format!(
-            "infinitely many collisions in finite time (inelastic collapse): collisions {who} near x = {} \
-             accumulate at t = {}; stopped at t = {}",
-            num(*x),
-            num(*accumulation),
-            num(*at)
-        ),
-    };
-    let _ = writeln!(out, "Stopped: {why}");
-    let mut b = Block::new(format!(
-        "After {} collisions at t = {}",
-        run.collisions,
-        num(run.time)
-    ));
-    b.row(
-        "collisions",
-        run.collisions.to_string(),
-        format!(
-            "{} between bodies, {} with walls",
-            run.pair_collisions, run.wall_collisions
-        ),
-    );
-    if run.simultaneous > 0 {
-        b.row(
-            "simultaneous",
-            run.simultaneous.to_string(),
-            "instants with more than one collision, resolved left to right",
-        );
-    }
-    if let Some(pi) = &r.pi {
-        let verdict = if pi.agrees { "agrees" } else { "DISAGREES" };
-        b.row(
-            "pi billiards",
-            pi.theory.to_string(),
-            format!(
-                "ceil(pi/theta) - 1 with theta = atan(sqrt(m1/m2)) = {}: {verdict}",
-                num(pi.theta)
-            ),
-        );
-    }
-    b.render(&mut out);
-    let mut bodies = Block::new("Bodies");
-    bodies.cells(["body".to_string(), "m".into(), "x".into(), "v".into()]);
-    for (i, body) in t.bodies.iter().enumerate() {
-        bodies.cells([
-            (i + 1).to_string(),
-            num(body.m),
-            num(run.x[i]),
-            num(run.v[i]),
-        ]);
-    }
-    bodies.render(&mut out);
-    let mut book = Block::new("Bookkeeping");
-    let walled = t.left_wall.is_some() || t.right_wall.is_some();
-    let walls_note = match (walled, t.gravity > 0.0) {
-        (true, true) => "walls and gravity change it",
-        (true, false) => "the walls change it",
-        (false, true) => "gravity changes it",
-        (false, false) => "conserved",
-    };
-    book.cells([
-        "momentum".to_string(),
-        num(run.momentum.start),
-        num(run.momentum.end),
-        walls_note.into(),
-    ]);
-    let rel = (run.energy.end - run.energy.start) / run.energy.start.abs().max(f64::MIN_POSITIVE);
-    let energy_note = if t.e == 1.0 && t.e_wall == 1.0 {
-        format!("elastic: relative change {rel:.1e}")
-    } else {
-        format!("relative change {rel:.1e} (lost to heat)")
-    };
-    book.cells([
-        "energy".to_string(),
-        num(run.energy.start),
-        num(run.energy.end),
-        energy_note,
-    ]);
-    book.render(&mut out);
-    out
 }

@@ -10,8 +10,9 @@ use num_traits::{One, Signed, Zero};
 use crate::case::Case;
 use crate::collision::Collision;
 use crate::ellipse::Ellipse;
+use crate::frame::Frame;
 use crate::quantity::{APPROX_DIGITS, Exact, from_f64, sqrt};
-use crate::solver::{Pair, Solver};
+use crate::solver::{Lab, Pair, Solver};
 
 type Q = BigRational;
 
@@ -67,6 +68,26 @@ impl ExactCollision {
             v: [&self.v[0] - w, &self.v[1] - w],
             ..self.clone()
         }
+    }
+
+    /// The observer's velocity of `frame` (a typed velocity from its text).
+    pub fn observer_velocity(&self, frame: &Frame) -> Q {
+        match frame {
+            Frame::Lab => Q::zero(),
+            Frame::Com => self.v_com_q(),
+            Frame::RestIn(i) => self.v[i - 1].clone(),
+            Frame::RestFin(i) => self.v_fin_q()[i - 1].clone(),
+            Frame::Velocity(n) => n.exact(),
+        }
+    }
+
+    /// Whether the time-reversed collision (IN' = -FIN, FIN' = -IN) equals the original seen from
+    /// an observer at `w`: exactly when `IN + FIN = 2 w` and the collision is elastic, that is
+    /// when `w` is the COM velocity (lecture Sec. 4).
+    pub fn is_own_time_reverse_at(&self, w: &Q) -> bool {
+        let [f1, f2] = self.v_fin_q();
+        let two_w = w + w;
+        self.e.is_one() && &self.v[0] + f1 == two_w && &self.v[1] + f2 == two_w
     }
 
     pub fn m_total(&self) -> Q {
@@ -219,6 +240,11 @@ impl Solver for ExactCollision {
     fn relative_velocity(&self) -> Exact {
         r(&self.v[0] - &self.v[1])
     }
+    fn restitution_seen(&self) -> Option<Exact> {
+        let [f1, f2] = self.v_fin_q();
+        let d = &self.v[0] - &self.v[1];
+        (!d.is_zero()).then(|| r((f2 - f1) / d))
+    }
     fn residuals(&self) -> (f64, f64) {
         // Exact arithmetic: both are identically zero, computed rather than assumed.
         let [f1, f2] = self.v_fin_q();
@@ -235,5 +261,40 @@ impl Solver for ExactCollision {
         let (k1, k2) = (&self.a + &self.c, &self.c + &self.b);
         let slope = (!k2.is_zero()).then(|| r(-&k1 / &k2));
         (r(k1), r(k2), slope)
+    }
+}
+
+impl Lab for ExactCollision {
+    type N = Exact;
+    type Seen<'a> = ExactCollision;
+    fn seen_from(&self, frame: &Frame) -> (Exact, ExactCollision) {
+        let w = self.observer_velocity(frame);
+        let seen = self.observed(&w);
+        (r(w), seen)
+    }
+    fn is_own_time_reverse(&self, frame: &Frame) -> bool {
+        self.is_own_time_reverse_at(&self.observer_velocity(frame))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::accuracy::case;
+
+    #[test]
+    fn reversal_equals_the_original_only_in_the_com_frame() {
+        let c = case([[4.0, 0.0], [0.0, 1.0]], [60.0, 10.0], 1.0).unwrap();
+        let x = ExactCollision::from_binary64(&c);
+        for f in Frame::standard() {
+            assert_eq!(
+                x.is_own_time_reverse_at(&x.observer_velocity(&f)),
+                f == Frame::Com,
+                "{f}"
+            );
+        }
+        let whump = case([[6.0, 0.0], [0.0, 1.0]], [3.0, -4.0], 0.5).unwrap();
+        let x = ExactCollision::from_binary64(&whump);
+        assert!(!x.is_own_time_reverse(&Frame::Com));
     }
 }

@@ -7,8 +7,10 @@ use std::fs::File;
 use std::io::{self, BufRead, BufReader, Read};
 use std::path::Path;
 
+use super::row::{LayoutError, RowCase, RowError, RowProblem, ValueProblem};
+use crate::inertia::Mass;
 use crate::number::Number;
-use crate::rows::{RowCase, RowError};
+use crate::restitution::Restitution;
 
 /// Input format (`--input-format`; by default from the file's extension, or for stdin from its
 /// first character: `{` means JSON Lines).
@@ -20,7 +22,22 @@ pub enum InputFormat {
 
 const DIAGONAL: [&str; 4] = ["m1", "m2", "v1", "v2"];
 const GENERAL: [&str; 5] = ["m11", "m12", "m22", "v1", "v2"];
-const KNOWN: &str = "m1, m2, v1, v2 and optionally e (or m11, m12, m22 for a general tensor)";
+
+/// Why an input cannot be read.
+#[derive(Debug, thiserror::Error)]
+pub enum BatchError {
+    #[error("cannot read {name}: {error}")]
+    Read { name: String, error: std::io::Error },
+    #[error("{name}: cannot read the CSV header: {error}")]
+    Header { name: String, error: csv::Error },
+    /// A bad header or first object, at `place` (`line 1 (header)`, `line 3`).
+    #[error("{name}: {place}: {problem}")]
+    Layout {
+        name: String,
+        place: String,
+        problem: RowProblem,
+    },
+}
 
 /// Which columns hold what.
 #[derive(Clone, Debug)]
@@ -31,20 +48,20 @@ struct Layout {
 }
 
 impl Layout {
-    fn of(names: &[String]) -> Result<Layout, String> {
+    fn of(names: &[String]) -> Result<Layout, LayoutError> {
         let find = |n: &str| names.iter().position(|h| h == n);
         for n in names {
             if !DIAGONAL.contains(&n.as_str()) && !GENERAL.contains(&n.as_str()) && n != "e" {
-                return Err(format!("unknown column '{n}': expected {KNOWN}"));
+                return Err(LayoutError::Unknown(n.clone()));
             }
         }
         let general = find("m11").is_some() || find("m12").is_some() || find("m22").is_some();
         let needed: &[&str] = if general { &GENERAL } else { &DIAGONAL };
         if let Some(missing) = needed.iter().find(|n| find(n).is_none()) {
-            return Err(format!("missing column '{missing}': expected {KNOWN}"));
+            return Err(LayoutError::Missing(missing));
         }
         if general && (find("m1").is_some() || find("m2").is_some()) {
-            return Err("give m1, m2 or m11, m12, m22, not both".into());
+            return Err(LayoutError::Both);
         }
         let at = if general {
             [
@@ -83,27 +100,19 @@ impl Layout {
         let mut x = [0.0, 0.0, 0.0, 0.0, 0.0, default_e];
         for (k, slot) in x.iter_mut().enumerate() {
             let Some(i) = self.at[k] else { continue };
-            let name = names[k];
-            let bad = |message: String| RowError {
+            let field = names[k];
+            let bad = |problem: ValueProblem| RowError {
                 place: format!("line {line}"),
-                message: format!("field '{name}': {message}"),
+                problem: RowProblem::Field { field, problem },
             };
-            let text = get(i).ok_or_else(|| bad("missing".into()))?;
-            let n: Number = text
-                .parse()
-                .map_err(|e: crate::number::NumberError| bad(e.to_string()))?;
+            let text = get(i).ok_or_else(|| bad(ValueProblem::Missing))?;
+            let n: Number = text.parse().map_err(|e| bad(ValueProblem::Number(e)))?;
             *slot = n.value();
-            if (name == "m1" || name == "m2") && *slot <= 0.0 {
-                return Err(bad(format!(
-                    "mass '{}' must be greater than 0",
-                    text.trim()
-                )));
-            }
-            if name == "e" && !(0.0..=1.0).contains(slot) {
-                return Err(bad(format!(
-                    "restitution '{}' is outside [0, 1]",
-                    text.trim()
-                )));
+            // Each value is validated by the type that holds it.
+            match field {
+                "m1" | "m2" => drop(Mass::new(n).map_err(|e| bad(e.into()))?),
+                "e" => drop(Restitution::new(n).map_err(|e| bad(e.into()))?),
+                _ => {}
             }
         }
         Ok((
@@ -138,12 +147,15 @@ pub fn open(
     path: Option<&Path>,
     format: Option<InputFormat>,
     default_e: f64,
-) -> Result<Batch, String> {
+) -> Result<Batch, BatchError> {
     let (reader, name): (Box<dyn Read>, String) = match path {
         None => (Box::new(io::stdin()), "stdin".into()),
         Some(p) if p == Path::new("-") => (Box::new(io::stdin()), "stdin".into()),
         Some(p) => (
-            Box::new(File::open(p).map_err(|e| format!("cannot read {}: {e}", p.display()))?),
+            Box::new(File::open(p).map_err(|error| BatchError::Read {
+                name: p.display().to_string(),
+                error,
+            })?),
             p.display().to_string(),
         ),
     };
@@ -154,9 +166,10 @@ pub fn open(
             Some("jsonl" | "ndjson") => InputFormat::Jsonl,
             Some("csv") => InputFormat::Csv,
             _ => {
-                let head = reader
-                    .fill_buf()
-                    .map_err(|e| format!("cannot read {name}: {e}"))?;
+                let head = reader.fill_buf().map_err(|error| BatchError::Read {
+                    name: name.clone(),
+                    error,
+                })?;
                 let first = head.iter().find(|b| !b.is_ascii_whitespace());
                 if first == Some(&b'{') {
                     InputFormat::Jsonl
@@ -172,33 +185,39 @@ pub fn open(
     }
 }
 
-fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<Batch, String> {
+fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<Batch, BatchError> {
     let mut r = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .flexible(true)
         .from_reader(reader);
     let header: Vec<String> = r
         .headers()
-        .map_err(|e| format!("{name}: cannot read the CSV header: {e}"))?
+        .map_err(|error| BatchError::Header {
+            name: name.to_string(),
+            error,
+        })?
         .iter()
         .map(String::from)
         .collect();
-    let layout = Layout::of(&header).map_err(|e| format!("{name}: line 1 (header): {e}"))?;
+    let layout = Layout::of(&header).map_err(|e| BatchError::Layout {
+        name: name.to_string(),
+        place: "line 1 (header)".into(),
+        problem: e.into(),
+    })?;
     let general = layout.general;
     let rows = r.into_records().map(move |rec| {
         let rec = rec.map_err(|e| RowError {
             place: format!("line {}", e.position().map_or(0, |p| p.line())),
-            message: format!("not a CSV record: {e}"),
+            problem: RowProblem::NotCsv(e.to_string()),
         })?;
         let line = rec.position().map_or(0, |p| p.line());
         if rec.len() != header.len() {
             return Err(RowError {
                 place: format!("line {line}"),
-                message: format!(
-                    "{} fields, but the header names {}",
-                    rec.len(),
-                    header.len()
-                ),
+                problem: RowProblem::FieldCount {
+                    got: rec.len(),
+                    named: header.len(),
+                },
             });
         }
         layout.case(|i| rec.get(i), line, default_e)
@@ -209,7 +228,11 @@ fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<B
     })
 }
 
-fn jsonl_rows(reader: impl BufRead + 'static, name: &str, default_e: f64) -> Result<Batch, String> {
+fn jsonl_rows(
+    reader: impl BufRead + 'static,
+    name: &str,
+    default_e: f64,
+) -> Result<Batch, BatchError> {
     let mut lines = reader.lines().enumerate().peekable();
     // The first object decides the layout; every object must have the same keys.
     let mut layout: Option<Layout> = None;
@@ -219,23 +242,28 @@ fn jsonl_rows(reader: impl BufRead + 'static, name: &str, default_e: f64) -> Res
             lines.next();
             continue;
         }
+        let at = |problem: RowProblem| BatchError::Layout {
+            name: name.to_string(),
+            place: format!("line {}", i + 1),
+            problem,
+        };
         let keys = object(l)
             .map(|o| o.into_keys().collect::<Vec<_>>())
-            .map_err(|e| format!("{name}: line {}: {e}", i + 1))?;
-        let l = Layout::of(&keys).map_err(|e| format!("{name}: line {}: {e}", i + 1))?;
+            .map_err(at)?;
+        let l = Layout::of(&keys).map_err(|e| at(e.into()))?;
         general = l.general;
         layout = Some(l);
         break;
     }
     let rows = lines.filter_map(move |(i, l)| {
         let line = i as u64 + 1;
-        let err = |message: String| RowError {
+        let err = |problem: RowProblem| RowError {
             place: format!("line {line}"),
-            message,
+            problem,
         };
         let l = match l {
             Ok(l) => l,
-            Err(e) => return Some(Err(err(format!("cannot read: {e}")))),
+            Err(e) => return Some(Err(err(RowProblem::Read(e.to_string())))),
         };
         if l.trim().is_empty() {
             return None;
@@ -244,11 +272,9 @@ fn jsonl_rows(reader: impl BufRead + 'static, name: &str, default_e: f64) -> Res
         Some((|| {
             let o = object(&l).map_err(err)?;
             let keys: Vec<String> = o.keys().cloned().collect();
-            let this = Layout::of(&keys).map_err(err)?;
+            let this = Layout::of(&keys).map_err(|e| err(e.into()))?;
             if this.general != layout.general {
-                return Err(err(
-                    "this object gives the tensor differently from the first line".into(),
-                ));
+                return Err(err(RowProblem::OtherLayout));
             }
             let values: HashMap<usize, String> = keys
                 .iter()
@@ -265,16 +291,15 @@ fn jsonl_rows(reader: impl BufRead + 'static, name: &str, default_e: f64) -> Res
 }
 
 /// A JSON object of numbers (or strings holding numbers), as text.
-fn object(line: &str) -> Result<HashMap<String, String>, String> {
-    let v: serde_json::Value = serde_json::from_str(line).map_err(|e| format!("not JSON: {e}"))?;
-    let o = v
-        .as_object()
-        .ok_or("expected a JSON object such as {\"m1\": 4, \"m2\": 1, \"v1\": 60, \"v2\": 10}")?;
+fn object(line: &str) -> Result<HashMap<String, String>, RowProblem> {
+    let v: serde_json::Value =
+        serde_json::from_str(line).map_err(|e| RowProblem::NotJson(e.to_string()))?;
+    let o = v.as_object().ok_or(RowProblem::NotObject)?;
     o.iter()
         .map(|(k, v)| match v {
             serde_json::Value::Number(n) => Ok((k.clone(), n.to_string())),
             serde_json::Value::String(s) => Ok((k.clone(), s.clone())),
-            other => Err(format!("field '{k}': expected a number, got {other}")),
+            other => Err(RowProblem::NotNumber(k.clone(), other.to_string())),
         })
         .collect()
 }
@@ -357,7 +382,8 @@ mod tests {
         std::fs::write(&path, "m1,m2,v1,speed\n").unwrap();
         let e = open(Some(&path), Some(InputFormat::Csv), 1.0)
             .err()
-            .unwrap();
+            .unwrap()
+            .to_string();
         assert!(e.contains("unknown column 'speed'"), "{e}");
         std::fs::remove_file(&path).ok();
     }

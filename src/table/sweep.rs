@@ -12,7 +12,13 @@ use std::str::FromStr;
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 
-use crate::number::Number;
+use super::row::ValueProblem;
+use crate::inertia::Mass;
+use crate::number::{Number, NumberError};
+use crate::restitution::Restitution;
+
+/// The default cap on a sweep's rows (`--max-rows`, `max_rows` in a scene).
+pub const DEFAULT_MAX_ROWS: u64 = 10_000_000_000;
 
 /// A parameter a sweep can vary.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,19 +43,36 @@ impl Param {
         }
     }
 
-    /// Checks a value this parameter may take.
-    fn check(self, x: f64, text: &str) -> Result<(), String> {
+    /// Checks a value this parameter may take, by the type that holds it.
+    fn check(self, n: &Number) -> Result<(), ValueProblem> {
         match self {
-            Param::M1 | Param::M2 if x <= 0.0 => Err(format!(
-                "{}: mass '{text}' must be greater than 0",
-                self.name()
-            )),
-            Param::E if !(0.0..=1.0).contains(&x) => {
-                Err(format!("e: restitution '{text}' is outside [0, 1]"))
-            }
-            _ => Ok(()),
+            Param::M1 | Param::M2 => drop(Mass::new(n.clone())?),
+            Param::E => drop(Restitution::new(n.clone())?),
+            Param::V1 | Param::V2 => {}
         }
+        Ok(())
     }
+}
+
+/// Why a `--vary` is refused.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum VaryError {
+    #[error("'{0}': {VARY_FORM}")]
+    Form(String),
+    #[error("'{0}' is not a parameter: {VARY_FORM}")]
+    Param(String),
+    #[error("{}: {error}", .param.name())]
+    Value { param: Param, error: ValueProblem },
+    #[error("'{text}': COUNT '{count}' must be a whole number >= 1")]
+    Count { text: String, count: String },
+    #[error("'{0}': COUNT is 0, so the range is empty; use 1 or more")]
+    Empty(String),
+    #[error("'{0}': FROM equals TO, so {1} values would all be the same; use COUNT 1 or a list")]
+    Same(String, u64),
+    #[error("'{0}': a log range needs FROM and TO > 0")]
+    LogSign(String),
+    #[error("'{0}': the list is empty; {VARY_FORM}")]
+    EmptyList(String),
 }
 
 /// Values more numerous than this are computed when needed instead of stored.
@@ -113,6 +136,16 @@ impl Values {
                 ..
             } => log(from, to, *decades, *count, i),
         }
+    }
+}
+
+/// The `count` values `value(i)`, when few enough to store; none otherwise (they are computed
+/// when needed).
+fn store(count: u64, value: impl Fn(u64) -> f64) -> Vec<f64> {
+    if count <= STORED {
+        (0..count).map(value).collect()
+    } else {
+        Vec::new()
     }
 }
 
@@ -215,55 +248,44 @@ impl fmt::Display for Vary {
 const VARY_FORM: &str = "expected NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or NAME=a,b,c with NAME one of m1, m2, v1, v2, e";
 
 impl FromStr for Vary {
-    type Err = String;
+    type Err = VaryError;
 
-    fn from_str(s: &str) -> Result<Vary, String> {
+    fn from_str(s: &str) -> Result<Vary, VaryError> {
         let text = s.trim().to_string();
         let (name, spec) = text
             .split_once('=')
-            .ok_or_else(|| format!("'{text}': {VARY_FORM}"))?;
+            .ok_or_else(|| VaryError::Form(text.clone()))?;
         let param = Param::ALL
             .into_iter()
             .find(|p| p.name() == name.trim())
-            .ok_or_else(|| format!("'{}' is not a parameter: {VARY_FORM}", name.trim()))?;
-        let num = |t: &str| -> Result<Number, String> {
-            let n: Number = t.parse().map_err(|e| format!("{}: {e}", param.name()))?;
-            param.check(n.value(), t.trim())?;
+            .ok_or_else(|| VaryError::Param(name.trim().to_string()))?;
+        let num = |t: &str| -> Result<Number, VaryError> {
+            let value = |error| VaryError::Value { param, error };
+            let n: Number = t.parse().map_err(|e: NumberError| value(e.into()))?;
+            param.check(&n).map_err(value)?;
             Ok(n)
         };
         let parts: Vec<&str> = spec.split(':').collect();
         let values = match parts.as_slice() {
             [from, to, count] | [from, to, count, "log"] => {
-                let count: u64 = count.trim().parse().map_err(|_| {
-                    format!(
-                        "'{text}': COUNT '{}' must be a whole number >= 1",
-                        count.trim()
-                    )
+                let count: u64 = count.trim().parse().map_err(|_| VaryError::Count {
+                    text: text.clone(),
+                    count: count.trim().to_string(),
                 })?;
                 if count == 0 {
-                    return Err(format!(
-                        "'{text}': COUNT is 0, so the range is empty; use 1 or more"
-                    ));
+                    return Err(VaryError::Empty(text));
                 }
                 let (from, to) = (num(from)?, num(to)?);
                 if count > 1 && from.same_value(&to) {
-                    return Err(format!(
-                        "'{text}': FROM equals TO, so {count} values would all be the same; use COUNT 1 or a list"
-                    ));
+                    return Err(VaryError::Same(text, count));
                 }
                 if parts.len() == 4 {
                     if from.value() <= 0.0 || to.value() <= 0.0 {
-                        return Err(format!("'{text}': a log range needs FROM and TO > 0"));
+                        return Err(VaryError::LogSign(text));
                     }
                     let (from, to) = (from.exact(), to.exact());
                     let decades = power_of_ten(&(&to / &from));
-                    let stored = if count <= STORED {
-                        (0..count)
-                            .map(|i| log(&from, &to, decades, count, i))
-                            .collect()
-                    } else {
-                        Vec::new()
-                    };
+                    let stored = store(count, |i| log(&from, &to, decades, count, i));
                     Values::Log {
                         from,
                         to,
@@ -274,13 +296,7 @@ impl FromStr for Vary {
                 } else {
                     let (from, to) = (from.exact(), to.exact());
                     let fast = linear_fast(&from, &to, count);
-                    let stored = if count <= STORED {
-                        (0..count)
-                            .map(|i| linear(&from, &to, count, fast, i))
-                            .collect()
-                    } else {
-                        Vec::new()
-                    };
+                    let stored = store(count, |i| linear(&from, &to, count, fast, i));
                     Values::Linear {
                         from,
                         to,
@@ -295,13 +311,13 @@ impl FromStr for Vary {
                     .split(',')
                     .filter(|t| !t.trim().is_empty())
                     .map(|t| num(t).map(|n| n.value()))
-                    .collect::<Result<Vec<f64>, String>>()?;
+                    .collect::<Result<Vec<f64>, VaryError>>()?;
                 if values.is_empty() {
-                    return Err(format!("'{text}': the list is empty; {VARY_FORM}"));
+                    return Err(VaryError::EmptyList(text));
                 }
                 Values::List(values)
             }
-            _ => return Err(format!("'{text}': {VARY_FORM}")),
+            _ => return Err(VaryError::Form(text)),
         };
         Ok(Vary {
             param,
@@ -328,15 +344,15 @@ impl Shard {
     }
 }
 
+/// A text that is not a shard.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("shard '{0}': expected K/N with 1 <= K <= N, e.g. 2/8")]
+pub struct ShardError(pub String);
+
 impl FromStr for Shard {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Shard, String> {
-        let bad = || {
-            format!(
-                "shard '{}': expected K/N with 1 <= K <= N, e.g. 2/8",
-                s.trim()
-            )
-        };
+    type Err = ShardError;
+    fn from_str(s: &str) -> Result<Shard, ShardError> {
+        let bad = || ShardError(s.trim().to_string());
         let (k, n) = s.trim().split_once('/').ok_or_else(bad)?;
         let (k, n): (u64, u64) = (
             k.trim().parse().map_err(|_| bad())?,
@@ -356,18 +372,28 @@ pub struct Grid {
     pub total: u64,
 }
 
+/// Why a grid is refused.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum GridError {
+    #[error("a sweep needs at least one --vary NAME=FROM:TO:COUNT")]
+    Empty,
+    #[error("{param} is varied twice ('{text}'); give each parameter one --vary", param = .0.name(), text = .1)]
+    Twice(Param, String),
+    #[error(
+        "the sweep has {rows:.3e} rows, more than --max-rows {max_rows}; raise --max-rows to run it"
+    )]
+    TooMany { rows: f64, max_rows: u64 },
+}
+
 impl Grid {
     /// Refuses a product of more than `max_rows` rows, and a parameter varied twice.
-    pub fn new(vary: Vec<Vary>, max_rows: u64) -> Result<Grid, String> {
+    pub fn new(vary: Vec<Vary>, max_rows: u64) -> Result<Grid, GridError> {
         if vary.is_empty() {
-            return Err("a sweep needs at least one --vary NAME=FROM:TO:COUNT".into());
+            return Err(GridError::Empty);
         }
         for (i, v) in vary.iter().enumerate() {
             if vary[..i].iter().any(|u| u.param == v.param) {
-                return Err(format!(
-                    "{} is varied twice ('{v}'); give each parameter one --vary",
-                    v.param.name()
-                ));
+                return Err(GridError::Twice(v.param, v.text.clone()));
             }
         }
         let total = vary
@@ -375,12 +401,10 @@ impl Grid {
             .try_fold(1u64, |acc, v| acc.checked_mul(v.values.len()));
         match total {
             Some(t) if t <= max_rows => Ok(Grid { vary, total: t }),
-            _ => {
-                let approx: f64 = vary.iter().map(|v| v.values.len() as f64).product();
-                Err(format!(
-                    "the sweep has {approx:.3e} rows, more than --max-rows {max_rows}; raise --max-rows to run it"
-                ))
-            }
+            _ => Err(GridError::TooMany {
+                rows: vary.iter().map(|v| v.values.len() as f64).product(),
+                max_rows,
+            }),
         }
     }
 
@@ -462,7 +486,7 @@ mod tests {
 
     #[test]
     fn refusals_name_the_problem() {
-        let err = |s: &str| s.parse::<Vary>().unwrap_err();
+        let err = |s: &str| s.parse::<Vary>().unwrap_err().to_string();
         assert!(err("e=0:1:0").contains("empty"));
         assert!(err("e=0:1:x").contains("COUNT 'x'"));
         assert!(err("e=0:2:3").contains("'2' is outside [0, 1]"));
@@ -479,12 +503,12 @@ mod tests {
             ],
             1_000_000,
         );
-        assert!(big.unwrap_err().contains("--max-rows 1000000"));
+        assert!(big.unwrap_err().to_string().contains("--max-rows 1000000"));
         let twice = Grid::new(
             vec!["v1=0:1:2".parse().unwrap(), "v1=1,2".parse().unwrap()],
             100,
         );
-        assert!(twice.unwrap_err().contains("varied twice"));
+        assert!(twice.unwrap_err().to_string().contains("varied twice"));
     }
 
     #[test]

@@ -1,8 +1,13 @@
-//! What a report needs from a solved collision, in whatever arithmetic: binary64 with the stable
-//! formulas of `collision`, seen from a frame (`frame::Observed`, the default), or exact
-//! rationals (`exact`, for `--exact` and as the reference the accuracy tests measure against).
+//! How a collision is computed: the quantities a report needs, in whatever arithmetic. Binary64
+//! with the stable formulas (`binary64`, seen from any frame; the default), or exact rationals
+//! (`exact`, for `--exact` and as the reference the accuracy tests measure against). A new
+//! arithmetic is a new implementation of `Solver`; reports, frames tables and pictures take any.
+
+pub mod binary64;
+pub mod exact;
 
 use crate::ellipse::Ellipse;
+use crate::frame::Frame;
 use crate::quantity::Scalar;
 
 pub type Pair<N> = [N; 2];
@@ -42,9 +47,26 @@ pub trait Solver {
     fn reduced_mass(&self) -> Self::N;
     /// `V1 - V2`.
     fn relative_velocity(&self) -> Self::N;
+    /// `e` from this frame's own velocities, `-(FIN1 - FIN2) / (IN1 - IN2)`; `None` when
+    /// `V1 = V2`.
+    fn restitution_seen(&self) -> Option<Self::N>;
     /// Relative residuals of momentum conservation and of `KE_FIN = KE_COM + e^2 crunch`.
     fn residuals(&self) -> (f64, f64);
     /// The momentum line `k1 V1 + k2 V2 = P_total`: `(k1, k2, slope = -k1/k2)`, with no slope
     /// when the line is vertical (`k2 = 0`, possible for a general tensor).
     fn momentum_line(&self) -> (Self::N, Self::N, Option<Self::N>);
+}
+
+/// A lab collision in one arithmetic, from which the collision seen from any frame is made: the
+/// seam that lets one report, frames table or picture serve binary64 and exact arithmetic.
+pub trait Lab {
+    type N: Scalar;
+    type Seen<'a>: Solver<N = Self::N>
+    where
+        Self: 'a;
+    /// The observer velocity `w` of `frame`, and the collision as that observer sees it.
+    fn seen_from(&self, frame: &Frame) -> (Self::N, Self::Seen<'_>);
+    /// Whether the time-reversed collision equals the original seen from `frame` (decided in
+    /// exact arithmetic).
+    fn is_own_time_reverse(&self, frame: &Frame) -> bool;
 }

@@ -18,9 +18,16 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
+pub mod pi;
+
 use serde::Serialize;
 
 use crate::compensated::Dd;
+use crate::inertia::{Mass, MassError};
+use crate::number::Number;
+use crate::restitution::{Restitution, RestitutionError};
+
+pub use pi::{PiTheory, TrackReport};
 
 /// A body: mass, centre position, velocity, size (length along the track; 0 for a point).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -44,6 +51,9 @@ pub struct Track {
     /// Acceleration toward the left (so a left wall is a floor and positions are heights).
     pub gravity: f64,
 }
+
+/// Default cap on collisions (`--max-collisions`): enough for pi billiards with N = 8.
+pub const DEFAULT_MAX_COLLISIONS: u64 = 1_000_000_000;
 
 /// When to stop.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -164,8 +174,77 @@ fn weights(m1: f64, m2: f64) -> (Dd, Dd) {
 /// Why a track cannot be run.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TrackError {
-    #[error("{0}")]
-    Invalid(String),
+    #[error("a track needs at least one body")]
+    Empty,
+    #[error("body {body}: {error}")]
+    Mass { body: usize, error: MassError },
+    #[error("body {0}: size {1} must be finite and >= 0")]
+    Size(usize, f64),
+    #[error("body {0}: position and velocity must be finite")]
+    NotFinite(usize),
+    #[error(
+        "bodies {0} and {next} overlap or are out of order: positions must increase left to right \
+         by at least half the sum of their sizes", next = .0 + 1
+    )]
+    Order(usize),
+    #[error("body 1 is left of the left wall at {0}")]
+    LeftOfWall(f64),
+    #[error("body {0} is right of the right wall at {1}")]
+    RightOfWall(usize, f64),
+    #[error(transparent)]
+    Restitution(#[from] RestitutionError),
+    #[error("gravity {0} must be finite and >= 0 (it pulls toward the left)")]
+    Gravity(f64),
+    #[error("gravity pulls toward the left: give a --left-wall as the floor")]
+    NoFloor,
+    #[error(
+        "the track's energy or momentum is beyond binary64 (above 1.8e308): rescale the units \
+         (e.g. tons and km/s instead of kg and m/s)"
+    )]
+    TooLarge,
+}
+
+/// A list given with the wrong number of values (one per body is needed).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Miscount {
+    /// Which list: `positions`, `velocities` or `sizes`.
+    pub list: &'static str,
+    pub got: usize,
+    pub bodies: usize,
+}
+
+/// The bodies of a track from its lists as typed, one value per body (sizes default to 0,
+/// points); checked by `Track::check`.
+pub fn bodies(
+    masses: &[Number],
+    positions: &[Number],
+    velocities: &[Number],
+    sizes: Option<&[Number]>,
+) -> Result<Vec<Body>, Miscount> {
+    let n = masses.len();
+    let zeros = vec![Number::from_f64(0.0).expect("0 is a number"); n];
+    let sizes = sizes.unwrap_or(&zeros);
+    for (list, values) in [
+        ("positions", positions),
+        ("velocities", velocities),
+        ("sizes", sizes),
+    ] {
+        if values.len() != n {
+            return Err(Miscount {
+                list,
+                got: values.len(),
+                bodies: n,
+            });
+        }
+    }
+    Ok((0..n)
+        .map(|i| Body {
+            m: masses[i].value(),
+            x: positions[i].value(),
+            v: velocities[i].value(),
+            size: sizes[i].value(),
+        })
+        .collect())
 }
 
 impl Track {
@@ -198,33 +277,25 @@ impl Track {
     /// Checks the layout: positive masses, sizes >= 0, bodies left to right without overlap,
     /// inside the walls, restitutions in [0, 1], gravity >= 0 and only with a left wall (a floor).
     pub fn check(&self) -> Result<(), TrackError> {
-        let bad = |m: String| Err(TrackError::Invalid(m));
         if self.bodies.is_empty() {
-            return bad("a track needs at least one body".into());
+            return Err(TrackError::Empty);
         }
+        let number = |x: f64| Number::from_f64(x).map_err(MassError::from);
         for (i, b) in self.bodies.iter().enumerate() {
-            let k = i + 1;
-            if b.m.is_nan() || b.m <= 0.0 || !b.m.is_finite() {
-                return bad(format!(
-                    "body {k}: mass {} must be finite and greater than 0",
-                    b.m
-                ));
-            }
+            let body = i + 1;
+            number(b.m)
+                .and_then(Mass::new)
+                .map_err(|error| TrackError::Mass { body, error })?;
             if b.size.is_nan() || b.size < 0.0 || !b.size.is_finite() {
-                return bad(format!("body {k}: size {} must be finite and >= 0", b.size));
+                return Err(TrackError::Size(body, b.size));
             }
             if !b.x.is_finite() || !b.v.is_finite() {
-                return bad(format!("body {k}: position and velocity must be finite"));
+                return Err(TrackError::NotFinite(body));
             }
         }
         for (i, w) in self.bodies.windows(2).enumerate() {
             if w[1].x - w[0].x < (w[0].size + w[1].size) / 2.0 {
-                return bad(format!(
-                    "bodies {} and {} overlap or are out of order: positions must increase left to \
-                     right by at least half the sum of their sizes",
-                    i + 1,
-                    i + 2
-                ));
+                return Err(TrackError::Order(i + 1));
             }
         }
         let first = self.bodies[0];
@@ -232,38 +303,26 @@ impl Track {
         if let Some(l) = self.left_wall
             && first.x - first.size / 2.0 < l
         {
-            return bad(format!("body 1 is left of the left wall at {l}"));
+            return Err(TrackError::LeftOfWall(l));
         }
         if let Some(r) = self.right_wall
             && last.x + last.size / 2.0 > r
         {
-            return bad(format!(
-                "body {} is right of the right wall at {r}",
-                self.bodies.len()
-            ));
+            return Err(TrackError::RightOfWall(self.bodies.len(), r));
         }
-        for (name, e) in [("restitution", self.e), ("wall restitution", self.e_wall)] {
-            if !(0.0..=1.0).contains(&e) {
-                return bad(format!("{name} {e} is outside [0, 1]"));
-            }
+        for e in [self.e, self.e_wall] {
+            Restitution::new(Number::from_f64(e).map_err(RestitutionError::from)?)?;
         }
         if self.gravity.is_nan() || self.gravity < 0.0 || !self.gravity.is_finite() {
-            return bad(format!(
-                "gravity {} must be finite and >= 0 (it pulls toward the left)",
-                self.gravity
-            ));
+            return Err(TrackError::Gravity(self.gravity));
         }
         if self.gravity > 0.0 && self.left_wall.is_none() {
-            return bad("gravity pulls toward the left: give a --left-wall as the floor".into());
+            return Err(TrackError::NoFloor);
         }
         let (x, v): (Vec<f64>, Vec<f64>) = self.bodies.iter().map(|b| (b.x, b.v)).unzip();
         let energy = self.energy(&x, &v);
         if !energy.is_finite() || !self.momentum(&v).is_finite() {
-            return bad(
-                "the track's energy or momentum is beyond binary64 (above 1.8e308): rescale the \
-                 units (e.g. tons and km/s instead of kg and m/s)"
-                    .into(),
-            );
+            return Err(TrackError::TooLarge);
         }
         Ok(())
     }
@@ -714,24 +773,6 @@ fn extrapolate(times: &std::collections::VecDeque<f64>) -> Option<f64> {
     (r > 0.0 && r < 1.0).then(|| times.back().copied().unwrap_or(0.0) + b * r / (1.0 - r))
 }
 
-/// Pi billiards (Galperin 2003): a block of mass `m` between a wall and a block of mass `M`
-/// moving toward it makes `ceil(pi / theta) - 1` collisions, `theta = atan(sqrt(m / M))`.
-/// `pi / theta` is a whole number only for `m / M` in {3, 1, 1/3} (theta = pi/3, pi/4, pi/6), so
-/// those are exact; otherwise `pi / theta` is far enough from a whole number for binary64
-/// (its fractional part would have to be within 1e-16 of it relative).
-pub fn pi_count(m: f64, big_m: f64) -> u64 {
-    let r = m / big_m;
-    let exact = [(3.0, 2), (1.0, 3), (1.0 / 3.0, 5)];
-    if let Some((_, k)) = exact
-        .iter()
-        .find(|(q, _)| m == q * big_m || (*q < 1.0 && m * 3.0 == big_m))
-    {
-        return *k;
-    }
-    let theta = r.sqrt().atan();
-    (std::f64::consts::PI / theta).ceil() as u64 - 1
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -758,7 +799,7 @@ mod tests {
             let big = 100f64.powi(n);
             let run = pi_track(1.0, big).run(FOREVER, None);
             assert_eq!(run.collisions, digits, "mass ratio 100^{n}");
-            assert_eq!(pi_count(1.0, big), digits);
+            assert_eq!(pi::pi_count(1.0, big), digits);
             assert_eq!(run.stop, Stop::Done);
         }
     }
@@ -772,7 +813,11 @@ mod tests {
         assert_eq!(r.collisions, 2);
         assert_eq!(r.v[0], r.v[1], "both blocks end at the same velocity");
         assert_eq!(
-            (pi_count(1.0, 1.0), pi_count(1.0, 3.0), pi_count(3.0, 1.0)),
+            (
+                pi::pi_count(1.0, 1.0),
+                pi::pi_count(1.0, 3.0),
+                pi::pi_count(3.0, 1.0)
+            ),
             (3, 5, 2)
         );
         // Decimal masses whose ratio is 3 only up to rounding behave the same.
@@ -792,49 +837,5 @@ mod tests {
             );
             assert_eq!(fast.v, general.v);
         }
-    }
-}
-
-/// Pi billiards' theoretical count, when a run is that experiment.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct PiTheory {
-    /// `ceil(pi / theta) - 1`.
-    pub theory: u64,
-    /// `atan(sqrt(m1 / m2))`.
-    pub theta: f64,
-    /// Whether the simulation made exactly that many collisions.
-    pub agrees: bool,
-}
-
-/// `collide track`'s output: the run, and the pi-billiards theory when it applies.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TrackReport {
-    #[serde(flatten)]
-    pub run: Run,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub pi: Option<PiTheory>,
-}
-
-impl TrackReport {
-    pub fn new(track: &Track, run: Run) -> TrackReport {
-        let b = &track.bodies;
-        // Pi billiards: block 1 at rest between a wall and block 2 moving toward it, elastic.
-        let is_pi = b.len() == 2
-            && track.left_wall.is_some()
-            && track.right_wall.is_none()
-            && track.gravity == 0.0
-            && track.e == 1.0
-            && track.e_wall == 1.0
-            && b[0].v == 0.0
-            && b[1].v < 0.0;
-        let pi = is_pi.then(|| {
-            let theory = pi_count(b[0].m, b[1].m);
-            PiTheory {
-                theory,
-                theta: (b[0].m / b[1].m).sqrt().atan(),
-                agrees: theory == run.collisions,
-            }
-        });
-        TrackReport { run, pi }
     }
 }

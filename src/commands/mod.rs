@@ -1,0 +1,64 @@
+//! The subcommands, one file each, each reading top to bottom as "parse, solve, render": it turns
+//! validated arguments into the text to print and an exit status. Output is built whole before
+//! anything is written, so an error never leaves half a report on stdout (tables stream, and
+//! write files atomically).
+
+mod accuracy;
+mod frames;
+mod plot;
+mod scene;
+mod solve;
+mod table;
+mod track;
+
+use anyhow::Result;
+use collide::case::Case;
+use collide::problem::Problem;
+
+use crate::cli::{CaseArgs, Command};
+
+/// What a command prints and how it exits.
+#[derive(Debug, PartialEq)]
+pub struct Outcome {
+    pub stdout: String,
+    pub status: u8,
+}
+
+impl Outcome {
+    /// Success, printing `stdout`.
+    pub fn print(stdout: String) -> Outcome {
+        Outcome { stdout, status: 0 }
+    }
+}
+
+/// Runs a parsed command. `Err` is bad input: the caller prints it and exits 2.
+pub fn run(command: Command) -> Result<Outcome> {
+    match command {
+        Command::Solve(args) => solve::run(args),
+        Command::Scene(args) => scene::run(args),
+        Command::Accuracy(args) => accuracy::run(args),
+        Command::Frames(args) => frames::run(args),
+        Command::Sweep(args) => table::sweep(args),
+        Command::Batch(args) => table::batch(args),
+        Command::Track(args) => track::run(args),
+        Command::Plot(args) => plot::run(args),
+    }
+}
+
+impl CaseArgs {
+    /// The typed problem (masses or tensor, velocities, restitution, units).
+    pub fn problem(&self, fin: Option<&collide::units::Pair>) -> Problem {
+        Problem {
+            masses: self.masses.clone(),
+            velocities: self.velocities.clone(),
+            fin: fin.cloned(),
+            restitution: self.restitution.clone(),
+            si: self.si,
+        }
+    }
+
+    /// The case, with units resolved; `?` (an unknown) is for `collide solve`.
+    pub fn into_case(self) -> Result<Case> {
+        Ok(self.problem(None).into_case(self.inertia)?)
+    }
+}

@@ -1,0 +1,80 @@
+//! `collide plot`: the lecture's pictures, as SVG or in the terminal; also `solve --plot` and a
+//! scene's `[plot]`.
+
+use std::path::Path;
+
+use anyhow::Result;
+use collide::case::Case;
+use collide::frame::Frame;
+use collide::output::write_file;
+use collide::plot::{self, Kind, Picture};
+use collide::report::{Report, Section, Sections};
+use collide::solver::binary64::Binary64;
+
+use super::Outcome;
+use crate::cli::PlotArgs;
+
+pub fn run(args: PlotArgs) -> Result<Outcome> {
+    let case = args.case.into_case()?;
+    check_drawable(&case, &args.frame)?;
+    let stdout = match (&args.output, args.term) {
+        (_, true) => draw(
+            &case,
+            &args.frame,
+            args.kind,
+            args.frames,
+            Path::new("term"),
+        )?,
+        (Some(path), false) => draw(&case, &args.frame, args.kind, args.frames, path)?,
+        (None, false) => plot::svg(&case, &args.frame, args.kind, args.frames),
+    };
+    Ok(Outcome::print(stdout))
+}
+
+/// Draws to `target` (an SVG file, or `term`); returns what to print (the terminal picture, or
+/// nothing).
+pub fn draw(case: &Case, frame: &Frame, kind: Kind, frames: bool, target: &Path) -> Result<String> {
+    if target == Path::new("term") {
+        if kind != Kind::Velocity {
+            anyhow::bail!(
+                "the terminal plot draws the velocity diagram; use an SVG file for --kind {kind:?}"
+            );
+        }
+        return Ok(format!(
+            "\n{}",
+            plot::term::render(&Picture::new(case, frame, frames), terminal_width())
+        ));
+    }
+    write_file(target, plot::svg(case, frame, kind, frames).as_bytes())?;
+    Ok(String::new())
+}
+
+/// A picture needs the vectors, energies and ellipse radii, and a data range binary64 can map:
+/// refuse by name what it cannot hold.
+fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
+    let needed = Sections::new([
+        Section::Vectors,
+        Section::Momentum,
+        Section::Energy,
+        Section::Ellipses,
+    ]);
+    Report::build(&Binary64::new(&case.collision, frame), &needed)?;
+    let p = Picture::new(case, frame, false);
+    let fastest = [p.v_in.0, p.v_in.1, p.v_fin.0, p.v_fin.1]
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    if !plot::velocity::Map::fit(&p, (0.0, 0.0), 1.0).is_finite() || fastest > f64::MAX / 8.0 {
+        anyhow::bail!(
+            "the picture's range is beyond binary64 (velocities and radii span more than 1e308): rescale the units"
+        );
+    }
+    Ok(())
+}
+
+/// The terminal's width: `COLUMNS`, else 80.
+fn terminal_width() -> usize {
+    std::env::var("COLUMNS")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(80)
+}

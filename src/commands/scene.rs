@@ -1,0 +1,109 @@
+//! `collide scene`: TOML scenes solved and checked against their `[expect]` numbers (or, for a
+//! `[sweep]` scene run alone, its table written).
+
+use anyhow::{Context, Result};
+use collide::report::scene::{self as report, Checked, Listed};
+use collide::report::{AnyReport, json, solved, track as track_report};
+use collide::scene::{About, AnyScene, Scene, SceneError, TrackScene};
+use collide::table::sweep::Shard;
+use collide::track::TrackReport;
+
+use super::{Outcome, plot, table};
+use crate::cli::{Format, SceneArgs, TableArgs};
+
+pub fn run(args: SceneArgs) -> Result<Outcome> {
+    // A [sweep] scene writes a table, and comes alone.
+    if let [path] = args.files.as_slice()
+        && let AnyScene::Case(
+            scene @ Scene {
+                sweep: Some(sw), ..
+            },
+        ) = &Scene::load_any(path)?
+    {
+        let table = TableArgs {
+            columns: sw.columns.clone(),
+            format: sw.format,
+            output: None,
+            skip_bad: sw.skip_bad,
+        };
+        return table::run_sweep(&scene.case, &sw.grid, Shard::WHOLE, &table);
+    }
+    // Load and solve every scene first: a bad file is an error before anything is printed.
+    let mut listed = Vec::new();
+    let mut checked = Vec::new();
+    for p in &args.files {
+        match Scene::load_any(p)? {
+            // Among several files a [sweep] scene is listed, not written.
+            AnyScene::Case(Scene {
+                sweep: Some(sw),
+                about,
+                ..
+            }) => listed.push(Listed {
+                path: about.path,
+                rows: sw.grid.total,
+                title: about.title,
+            }),
+            AnyScene::Case(scene) => checked.push(solve(scene)?),
+            AnyScene::Track(scene) => checked.push(solve_track(scene)?),
+        }
+    }
+    let failed = checked.iter().any(Checked::failed);
+    let stdout = match args.format {
+        Format::Json => json::render(&report::json(&checked)),
+        Format::Text if checked.len() == 1 => report::text(&checked[0]),
+        Format::Text => report::summary(&checked, &listed),
+    };
+    Ok(Outcome {
+        stdout,
+        status: if failed { 1 } else { 0 },
+    })
+}
+
+fn solve(scene: Scene) -> Result<Checked> {
+    let sections = scene.sections_needed();
+    let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
+        .with_context(|| format!("{}", scene.about.path.display()))?;
+    let mut text = result.text(&scene.case, &scene.show);
+    if let Some(s) = &scene.solved {
+        text = solved::text(s, scene.exact) + &text;
+    }
+    if let Some(p) = &scene.plot {
+        plot::draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
+        text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
+    }
+    let mut json = result.json();
+    solved::annotate(&mut json, &scene.case, scene.solved.as_ref(), scene.exact);
+    check(scene.about, text, json)
+}
+
+fn solve_track(scene: TrackScene) -> Result<Checked> {
+    let result = TrackReport::new(&scene.track, scene.track.run(scene.limits, None));
+    let json =
+        track_report::json(&result).with_context(|| format!("{}", scene.about.path.display()))?;
+    let text = track_report::text(&scene.track, &result, scene.limits);
+    check(scene.about, text, json)
+}
+
+/// Checks a scene's expectations against its report; a key that names nothing in the report is
+/// an error with its line.
+fn check(about: About, text: String, json: serde_json::Value) -> Result<Checked> {
+    let checks = about
+        .expect
+        .iter()
+        .map(|e| {
+            e.check(&json).map_err(|message| SceneError {
+                path: about.path.clone(),
+                at: Some((e.line, 1)),
+                message: format!("[expect] {message}"),
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Checked {
+        path: about.path,
+        title: about.title,
+        source: about.source,
+        text,
+        json,
+        checks,
+    })
+}

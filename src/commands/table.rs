@@ -1,0 +1,110 @@
+//! `collide sweep` and `collide batch`: tables of collisions for scripts; also a `[sweep]` scene.
+
+use anyhow::Result;
+use collide::case::Case;
+use collide::output::{Output, Progress};
+use collide::table::batch;
+use collide::table::columns::Column;
+use collide::table::engine::{RowsError, Summary, write_batch, write_sweep};
+use collide::table::sweep::{Grid, Param, Shard};
+use collide::table::writer::RowWriter;
+
+use super::Outcome;
+use crate::cli::{BatchArgs, SweepArgs, TableArgs};
+
+pub fn sweep(args: SweepArgs) -> Result<Outcome> {
+    let case = args.case.into_case()?;
+    let grid = Grid::new(args.vary, args.max_rows)?;
+    run_sweep(&case, &grid, args.shard, &args.table)
+}
+
+/// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
+pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> Result<Outcome> {
+    let general = !case.inertia().is_diagonal();
+    if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
+        anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
+    }
+    let writer = RowWriter::new(columns(&table.columns, general), table.format);
+    let mut out = open(table)?;
+    let rows = shard.rows(grid.total);
+    let mut progress = Progress::new(Some(rows.end - rows.start));
+    let result = write_sweep(
+        case,
+        grid,
+        shard,
+        &writer,
+        table.skip_bad,
+        &mut out,
+        &mut progress,
+    );
+    finish(result, out, &progress, table)
+}
+
+pub fn batch(args: BatchArgs) -> Result<Outcome> {
+    let input = batch::open(
+        args.input.as_deref(),
+        args.input_format,
+        args.restitution.value(),
+    )?;
+    let writer = RowWriter::new(
+        columns(&args.table.columns, input.general),
+        args.table.format,
+    );
+    let mut out = open(&args.table)?;
+    let mut progress = Progress::new(None);
+    let result = write_batch(input, &writer, args.table.skip_bad, &mut out, &mut progress);
+    finish(result, out, &progress, &args.table)
+}
+
+fn columns(chosen: &[&'static Column], general: bool) -> Vec<&'static Column> {
+    if chosen.is_empty() {
+        Column::defaults(general)
+    } else {
+        chosen.to_vec()
+    }
+}
+
+/// Where the table goes (`-o FILE`, atomically, or stdout).
+fn open(table: &TableArgs) -> Result<Output> {
+    Output::open(table.output.as_deref()).map_err(|e| output_error(table, e))
+}
+
+fn output_error(table: &TableArgs, e: std::io::Error) -> anyhow::Error {
+    let path = table
+        .output
+        .as_ref()
+        .map_or("stdout".into(), |p| p.display().to_string());
+    anyhow::anyhow!("cannot write {path}: {e}")
+}
+
+/// Ends a table run: commits the output when complete (a bad row leaves no file behind), and
+/// reports skipped rows.
+fn finish(
+    result: Result<Summary, RowsError>,
+    out: Output,
+    progress: &Progress,
+    table: &TableArgs,
+) -> Result<Outcome> {
+    progress.finish();
+    let summary = match result {
+        Ok(s) => s,
+        // `out` is dropped unfinished: a temporary file is removed, stdout keeps whole rows.
+        Err(RowsError::Row(e)) => {
+            let hint = if table.skip_bad {
+                ""
+            } else {
+                " (--skip-bad reports bad rows and goes on)"
+            };
+            return Err(anyhow::anyhow!("{e}{hint}"));
+        }
+        Err(RowsError::Io(e)) => return Err(e.into()),
+    };
+    out.commit().map_err(|e| output_error(table, e))?;
+    if summary.skipped > 0 {
+        eprintln!(
+            "{} rows written, {} bad rows skipped",
+            summary.rows, summary.skipped
+        );
+    }
+    Ok(Outcome::print(String::new()))
+}

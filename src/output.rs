@@ -1,0 +1,159 @@
+//! Where output goes: stdout, or a file written atomically (a temporary file beside it renamed
+//! into place when complete, removed if not), and a progress bar for long runs.
+
+use std::fs::File;
+use std::io::{self, BufWriter, IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// Where bytes go: stdout; a regular file written atomically (a temporary file beside it renamed
+/// into place when the run completes, removed if it does not); or a device, FIFO or other
+/// non-regular file (`-o /dev/null`), written directly and never replaced.
+pub enum Output {
+    Stdout(io::StdoutLock<'static>),
+    File {
+        tmp: PathBuf,
+        path: PathBuf,
+        file: BufWriter<File>,
+        done: bool,
+    },
+    Direct(BufWriter<File>),
+}
+
+impl Output {
+    pub fn open(path: Option<&Path>) -> io::Result<Output> {
+        let Some(path) = path else {
+            return Ok(Output::Stdout(io::stdout().lock()));
+        };
+        // Follow a symlink to the file it names, so the rename replaces that file, not the link.
+        let path = match std::fs::metadata(path) {
+            Ok(m) if !m.is_file() => {
+                let file = std::fs::OpenOptions::new().write(true).open(path)?;
+                return Ok(Output::Direct(BufWriter::with_capacity(1 << 20, file)));
+            }
+            Ok(_) => std::fs::canonicalize(path)?,
+            Err(_) => path.to_path_buf(),
+        };
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let tmp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
+        let file = BufWriter::with_capacity(1 << 20, File::create(&tmp)?);
+        Ok(Output::File {
+            tmp,
+            path,
+            file,
+            done: false,
+        })
+    }
+
+    /// Flushes, and renames a file into place.
+    pub fn commit(mut self) -> io::Result<()> {
+        match &mut self {
+            Output::Stdout(s) => s.flush(),
+            Output::Direct(f) => f.flush(),
+            Output::File {
+                tmp,
+                path,
+                file,
+                done,
+            } => {
+                file.flush()?;
+                file.get_ref().sync_all()?;
+                std::fs::rename(tmp, path)?;
+                *done = true;
+                Ok(())
+            }
+        }
+    }
+}
+
+impl Write for Output {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        match self {
+            Output::Stdout(s) => s.write(buf),
+            Output::File { file, .. } | Output::Direct(file) => file.write(buf),
+        }
+    }
+    fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
+        match self {
+            Output::Stdout(s) => s.write_all(buf),
+            Output::File { file, .. } | Output::Direct(file) => file.write_all(buf),
+        }
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        match self {
+            Output::Stdout(s) => s.flush(),
+            Output::File { file, .. } | Output::Direct(file) => file.flush(),
+        }
+    }
+}
+
+impl Drop for Output {
+    fn drop(&mut self) {
+        if let Output::File {
+            tmp, done: false, ..
+        } = self
+        {
+            let _ = std::fs::remove_file(tmp);
+        }
+    }
+}
+
+/// A progress bar on stderr for runs longer than about a second, only on a terminal (never in
+/// pipes or CI), and not with `TERM=dumb`.
+pub struct Progress {
+    bar: indicatif::ProgressBar,
+    start: Instant,
+    shown: bool,
+    allowed: bool,
+}
+
+impl Progress {
+    pub fn new(total: Option<u64>) -> Progress {
+        let bar = match total {
+            Some(t) => indicatif::ProgressBar::with_draw_target(
+                Some(t),
+                indicatif::ProgressDrawTarget::hidden(),
+            ),
+            None => indicatif::ProgressBar::hidden(),
+        };
+        let allowed = io::stderr().is_terminal()
+            && std::env::var_os("TERM").is_none_or(|t| t != "dumb")
+            && std::env::var_os("CI").is_none();
+        Progress {
+            bar,
+            start: Instant::now(),
+            shown: false,
+            allowed,
+        }
+    }
+
+    pub fn advance(&mut self, rows: u64) {
+        self.bar.inc(rows);
+        if self.allowed && !self.shown && self.start.elapsed() > Duration::from_secs(1) {
+            self.shown = true;
+            if let Ok(style) = indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} rows ({per_sec}, eta {eta})",
+            ) {
+                self.bar.set_style(style);
+            }
+            self.bar
+                .set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+    }
+
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+/// Writes a whole file atomically; errors name the path.
+pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    let named =
+        |e: io::Error| io::Error::new(e.kind(), format!("cannot write {}: {e}", path.display()));
+    let mut out = Output::open(Some(path)).map_err(named)?;
+    out.write_all(bytes).map_err(named)?;
+    out.commit().map_err(named)
+}

@@ -1,0 +1,84 @@
+//! `collide accuracy`'s report: each method's error against exact arithmetic beside its run time,
+//! per family of cases.
+
+use serde::Serialize;
+
+use super::text::Block;
+use crate::accuracy::{Family, Row, Spread};
+
+/// The JSON document: the seed, the families and the rows.
+pub fn json(seed: u64, families: &[Family], rows: &[Row]) -> serde_json::Value {
+    #[derive(Serialize)]
+    struct FamilyJson<'a> {
+        name: &'a str,
+        about: &'a str,
+        cases: usize,
+    }
+    serde_json::json!({
+        "seed": seed,
+        "families": families
+            .iter()
+            .map(|f| FamilyJson { name: f.name, about: f.about, cases: f.cases.len() })
+            .collect::<Vec<_>>(),
+        "rows": rows,
+    })
+}
+
+/// The table for people, one group of rows per family.
+pub fn text(seed: u64, families: &[Family], rows: &[Row]) -> String {
+    let mut out = format!(
+        "Error against run time, seed {seed}: errors in ulps of each quantity's natural scale \
+         (FIN: max(|V1|, |V2|, |FIN1|, |FIN2|); crunch and lost: themselves), median / worst; \
+         time per solve, median (fastest-slowest pass).\n\
+         inf: no finite result (overflow), or a non-zero result where the exact value is 0.\n"
+    );
+    let u = |s: &Spread| format!("{} / {}", ulp_text(s.median), ulp_text(s.worst));
+    let mut table = Block::table(&[2, 3, 4, 5]);
+    table.cells([
+        "family".to_string(),
+        "method".into(),
+        "cases".into(),
+        "FIN ulps".into(),
+        "crunch ulps".into(),
+        "lost ulps".into(),
+        "ns/solve".into(),
+    ]);
+    let mut family = None;
+    for r in rows {
+        if family.is_some_and(|f| f != r.family) || family.is_none() {
+            table.gap();
+        }
+        family = Some(r.family);
+        table.cells([
+            r.family.to_string(),
+            r.method.name().to_string(),
+            r.cases.to_string(),
+            u(&r.fin_ulps),
+            u(&r.crunch_ulps),
+            u(&r.lost_ulps),
+            format!("{:.1} ({:.1}-{:.1})", r.ns_median, r.ns_min, r.ns_max),
+        ]);
+    }
+    table.render(&mut out);
+    out.push_str("\nFamilies:\n");
+    for f in families {
+        out.push_str(&format!("  {:<15} {}\n", f.name, f.about));
+    }
+    out
+}
+
+/// An error in ulps for the table: `0`, `0.5`, `3`, `2.1e12`, or `inf`.
+fn ulp_text(x: f64) -> String {
+    if !x.is_finite() {
+        "inf".into()
+    } else if x == 0.0 {
+        "0".into()
+    } else if x < 100.0 {
+        format!("{x:.2}")
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .to_string()
+    } else {
+        format!("{x:.1e}")
+    }
+}

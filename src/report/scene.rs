@@ -1,0 +1,157 @@
+//! `collide scene`'s report: each scene solved and checked against its `[expect]` numbers, for
+//! people (one scene in full, several a line each) and as JSON.
+
+use std::path::PathBuf;
+
+use serde::Serialize;
+
+use crate::expect::Check;
+
+/// A scene solved and checked.
+pub struct Checked {
+    pub path: PathBuf,
+    pub title: Option<String>,
+    pub source: Option<String>,
+    /// The report for people (what a single scene prints).
+    pub text: String,
+    pub json: serde_json::Value,
+    pub checks: Vec<Check>,
+}
+
+impl Checked {
+    pub fn failures(&self) -> impl Iterator<Item = &Check> {
+        self.checks.iter().filter(|c| !c.passed)
+    }
+
+    pub fn failed(&self) -> bool {
+        self.failures().next().is_some()
+    }
+}
+
+/// A `[sweep]` scene among several: listed, not written.
+pub struct Listed {
+    pub path: PathBuf,
+    pub rows: u64,
+    pub title: Option<String>,
+}
+
+#[derive(Serialize)]
+struct SceneJson<'a> {
+    scene: String,
+    title: Option<&'a str>,
+    source: Option<&'a str>,
+    report: &'a serde_json::Value,
+    checks: usize,
+    failed: Vec<FailedJson<'a>>,
+}
+
+#[derive(Serialize)]
+struct FailedJson<'a> {
+    key: &'a str,
+    line: usize,
+    expected: &'a str,
+    actual: &'a str,
+}
+
+/// The JSON of one scene, or an array of them for several.
+pub fn json(scenes: &[Checked]) -> serde_json::Value {
+    let one = |s: &Checked| {
+        serde_json::to_value(SceneJson {
+            scene: s.path.display().to_string(),
+            title: s.title.as_deref(),
+            source: s.source.as_deref(),
+            report: &s.json,
+            checks: s.checks.len(),
+            failed: s
+                .failures()
+                .map(|c| FailedJson {
+                    key: &c.key,
+                    line: c.line,
+                    expected: &c.expected,
+                    actual: &c.actual,
+                })
+                .collect(),
+        })
+        .expect("scene reports serialize")
+    };
+    match scenes {
+        [s] => one(s),
+        all => all.iter().map(one).collect(),
+    }
+}
+
+fn failure_lines(s: &Checked, out: &mut String) {
+    for c in s.failures() {
+        out.push_str(&format!(
+            "  FAIL {}:{}: {}: expected {} ({}), got {}\n",
+            s.path.display(),
+            c.line,
+            c.key,
+            c.expected,
+            c.tolerance,
+            c.actual
+        ));
+    }
+}
+
+/// One scene in full: title, report, checks.
+pub fn text(s: &Checked) -> String {
+    let mut out = String::new();
+    if let Some(t) = &s.title {
+        out.push_str(t);
+        if let Some(src) = &s.source {
+            out.push_str(&format!(" ({src})"));
+        }
+        out.push('\n');
+    }
+    out.push_str(&s.text);
+    if !s.checks.is_empty() {
+        let failed = s.failures().count();
+        out.push_str(&format!(
+            "\nChecks: {} of {} pass\n",
+            s.checks.len() - failed,
+            s.checks.len()
+        ));
+        failure_lines(s, &mut out);
+    }
+    out
+}
+
+/// Several scenes, a line each (failures listed under their scene), then the tally.
+pub fn summary(checked: &[Checked], listed: &[Listed]) -> String {
+    let mut out = String::new();
+    let width = checked
+        .iter()
+        .map(|s| s.path.display().to_string().len())
+        .chain(listed.iter().map(|t| t.path.display().to_string().len()))
+        .max()
+        .unwrap_or(0);
+    for s in checked {
+        let failed = s.failures().count();
+        let verdict = if failed > 0 { "FAIL" } else { "ok  " };
+        out.push_str(&format!(
+            "{verdict}  {:<width$}  {:>3}/{:<3} checks  {}\n",
+            s.path.display(),
+            s.checks.len() - failed,
+            s.checks.len(),
+            s.title.as_deref().unwrap_or("")
+        ));
+        failure_lines(s, &mut out);
+    }
+    for t in listed {
+        let rows = format!("{} rows", t.rows);
+        out.push_str(&format!(
+            "table {:<width$}  {rows:>13}  {} (a [sweep] scene: run it alone to write it)\n",
+            t.path.display(),
+            t.title.as_deref().unwrap_or("")
+        ));
+    }
+    let bad = checked.iter().filter(|s| s.failed()).count();
+    out.push_str(&format!(
+        "{} scenes: {} pass, {} fail\n",
+        checked.len(),
+        checked.len() - bad,
+        bad
+    ));
+    out
+}

@@ -1,0 +1,89 @@
+//! What a homework problem's unknowns came out as (`Solved: v1 = 60, e = 1`), the laws checked
+//! rather than used, and the units: the lines and JSON keys `solve` and scenes add to a report.
+
+use num_rational::BigRational;
+use num_traits::Zero;
+use serde_json::{Map, Value};
+
+use crate::case::Case;
+use crate::number::num;
+use crate::quantity::{Exact, Scalar, fraction, to_f64};
+use crate::units::Units;
+use crate::unknowns::Solved;
+
+/// `Solved: ...` and `Check: ...` lines, then a blank line.
+pub fn text(s: &Solved, exact: bool) -> String {
+    let show = |q: &BigRational| {
+        if exact {
+            Exact::Rational(q.clone()).show()
+        } else {
+            num(to_f64(q).unwrap_or(f64::NAN))
+        }
+    };
+    let mut out = String::new();
+    if !s.unknowns.is_empty() {
+        let parts: Vec<String> = s
+            .unknowns
+            .iter()
+            .map(|v| format!("{v} = {}", show(s.get(*v))))
+            .collect();
+        out.push_str(&format!("Solved: {}\n", parts.join(", ")));
+    }
+    for (law, residual) in &s.checks {
+        if residual.is_zero() {
+            out.push_str(&format!("Check: {law} holds exactly\n"));
+        } else {
+            out.push_str(&format!(
+                "Check: {law} does NOT hold: it misses by {}\n",
+                show(residual)
+            ));
+        }
+    }
+    out.push('\n');
+    out
+}
+
+/// Adds `units` (when given), `solved` and `check` (when unknowns were solved) to a report's
+/// JSON object.
+pub fn annotate(json: &mut Value, case: &Case, solved: Option<&Solved>, exact: bool) {
+    let Some(o) = json.as_object_mut() else {
+        return;
+    };
+    if case.units != Units::default() {
+        let u = &case.units;
+        // Only the units given ("as given" values have none).
+        let mut units = Map::new();
+        if let Some(m) = u.mass {
+            units.insert("mass".into(), m.into());
+        }
+        if let Some(v) = u.velocity {
+            units.insert("velocity".into(), v.into());
+        }
+        units.insert("energy".into(), u.energy().into());
+        o.insert("units".into(), Value::Object(units));
+    }
+    let Some(s) = solved else {
+        return;
+    };
+    let value = |q: &BigRational| {
+        if exact {
+            Value::String(fraction(q))
+        } else {
+            serde_json::json!(to_f64(q))
+        }
+    };
+    let solved: Map<String, Value> = s
+        .unknowns
+        .iter()
+        .map(|v| (v.name().to_string(), value(s.get(*v))))
+        .collect();
+    o.insert("solved".into(), Value::Object(solved));
+    let checks: Map<String, Value> = s
+        .checks
+        .iter()
+        .map(|(law, r)| (law.to_string(), value(r)))
+        .collect();
+    if !checks.is_empty() {
+        o.insert("check".into(), Value::Object(checks));
+    }
+}

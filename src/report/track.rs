@@ -1,0 +1,140 @@
+//! `collide track`'s result for people: the stop, the counts, the bodies, the bookkeeping.
+
+use std::fmt::Write;
+
+use super::text::Block;
+use crate::number::num;
+use crate::track::{Limits, Stop, Track, TrackReport};
+
+/// A quantity of a track's result beyond binary64.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "{0} is not representable in binary64 (its magnitude is outside 2.2e-308 to 1.8e308): \
+     rescale the units (e.g. tons and km/s instead of kg and m/s)"
+)]
+pub struct Unrepresentable(pub String);
+
+/// The result as JSON, refusing by name a quantity that is not a real result.
+pub fn json(r: &TrackReport) -> Result<serde_json::Value, Unrepresentable> {
+    let v = serde_json::to_value(r).expect("track reports serialize");
+    match super::first_unrepresentable(&v) {
+        Some(quantity) => Err(Unrepresentable(quantity)),
+        None => Ok(v),
+    }
+}
+
+/// `collide track` for people.
+pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
+    let run = &r.run;
+    let mut out = String::new();
+    let walls = match (t.left_wall, t.right_wall) {
+        (Some(l), Some(rw)) => format!("walls at {} and {}", num(l), num(rw)),
+        (Some(l), None) => format!("a left wall at {}", num(l)),
+        (None, Some(rw)) => format!("a right wall at {}", num(rw)),
+        (None, None) => "no walls".into(),
+    };
+    let gravity = if t.gravity > 0.0 {
+        format!(", gravity {} toward the left wall", num(t.gravity))
+    } else {
+        String::new()
+    };
+    let _ = writeln!(
+        out,
+        "{} bodies, {walls}{gravity}; e = {} between bodies, {} at walls",
+        t.bodies.len(),
+        num(t.e),
+        num(t.e_wall)
+    );
+    let why = match &run.stop {
+        Stop::Done => "no collision can happen any more".to_string(),
+        Stop::Until => "reached --until".to_string(),
+        Stop::MaxCollisions => format!(
+            "stopped at the --max-collisions cap of {}; raise it to go on",
+            limits.max_collisions
+        ),
+        Stop::Zeno {
+            at,
+            accumulation,
+            who,
+            x,
+        } => format!(
+            "infinitely many collisions in finite time (inelastic collapse): collisions {who} near x = {} \
+             accumulate at t = {}; stopped at t = {}",
+            num(*x),
+            num(*accumulation),
+            num(*at)
+        ),
+    };
+    let _ = writeln!(out, "Stopped: {why}");
+    let mut b = Block::new(format!(
+        "After {} collisions at t = {}",
+        run.collisions,
+        num(run.time)
+    ));
+    b.row(
+        "collisions",
+        run.collisions.to_string(),
+        format!(
+            "{} between bodies, {} with walls",
+            run.pair_collisions, run.wall_collisions
+        ),
+    );
+    if run.simultaneous > 0 {
+        b.row(
+            "simultaneous",
+            run.simultaneous.to_string(),
+            "instants with more than one collision, resolved left to right",
+        );
+    }
+    if let Some(pi) = &r.pi {
+        let verdict = if pi.agrees { "agrees" } else { "DISAGREES" };
+        b.row(
+            "pi billiards",
+            pi.theory.to_string(),
+            format!(
+                "ceil(pi/theta) - 1 with theta = atan(sqrt(m1/m2)) = {}: {verdict}",
+                num(pi.theta)
+            ),
+        );
+    }
+    b.render(&mut out);
+    let mut bodies = Block::new("Bodies");
+    bodies.cells(["body".to_string(), "m".into(), "x".into(), "v".into()]);
+    for (i, body) in t.bodies.iter().enumerate() {
+        bodies.cells([
+            (i + 1).to_string(),
+            num(body.m),
+            num(run.x[i]),
+            num(run.v[i]),
+        ]);
+    }
+    bodies.render(&mut out);
+    let mut book = Block::new("Bookkeeping");
+    let walled = t.left_wall.is_some() || t.right_wall.is_some();
+    let walls_note = match (walled, t.gravity > 0.0) {
+        (true, true) => "walls and gravity change it",
+        (true, false) => "the walls change it",
+        (false, true) => "gravity changes it",
+        (false, false) => "conserved",
+    };
+    book.cells([
+        "momentum".to_string(),
+        num(run.momentum.start),
+        num(run.momentum.end),
+        walls_note.into(),
+    ]);
+    let rel = (run.energy.end - run.energy.start) / run.energy.start.abs().max(f64::MIN_POSITIVE);
+    let energy_note = if t.e == 1.0 && t.e_wall == 1.0 {
+        format!("elastic: relative change {rel:.1e}")
+    } else {
+        format!("relative change {rel:.1e} (lost to heat)")
+    };
+    book.cells([
+        "energy".to_string(),
+        num(run.energy.start),
+        num(run.energy.end),
+        energy_note,
+    ]);
+    book.render(&mut out);
+    out
+}

@@ -1,0 +1,306 @@
+//! The table engine (`collide sweep`, `collide batch`, `[sweep]` scenes): rows are solved by the
+//! same binary64 solver as `solve`, in parallel (rayon) in chunks, and written in order; a bad row
+//! stops the run after every row before it has been written whole, or, with `skip_bad`, is
+//! reported on stderr and skipped.
+
+use std::io::{self, Write};
+
+use nalgebra::Vector2;
+use rayon::prelude::*;
+
+use super::batch::Batch;
+use super::columns::Column;
+use super::row::{Row, RowCase, RowError, RowProblem};
+use super::sweep::{Grid, Param, Shard};
+use super::writer::{FieldCache, RowWriter};
+use crate::case::Case;
+use crate::collision::Collision;
+use crate::inertia::InertiaTensor;
+use crate::number::Number;
+use crate::output::Progress;
+use crate::restitution::Restitution;
+use crate::solver::binary64::Binary64;
+
+/// Solves a row's columns into `out`. `shared` is the tensor when every row has the same one.
+pub fn solve_row(
+    case: &RowCase,
+    shared: Option<&InertiaTensor>,
+    columns: &[&'static Column],
+    out: &mut [f64],
+) -> Result<(), RowProblem> {
+    let n = Number::from_f64;
+    let inertia = match shared {
+        Some(t) => t.clone(),
+        None => {
+            InertiaTensor::general([[n(case.m11)?, n(case.m12)?], [n(case.m12)?, n(case.m22)?]])?
+        }
+    };
+    let e = Restitution::new(n(case.e)?)?;
+    let c = Collision::new(inertia, Vector2::new(case.v[0], case.v[1]), e);
+    let mut row = Row::new(case, Binary64::lab(&c));
+    for (slot, col) in out.iter_mut().zip(columns) {
+        *slot = col.value(&mut row);
+        if !slot.is_finite() {
+            return Err(RowProblem::Unrepresentable(col.name));
+        }
+    }
+    Ok(())
+}
+
+/// What a chunk of rows became.
+pub struct ChunkOut {
+    pub bytes: Vec<u8>,
+    pub rows: u64,
+    /// Rows skipped (`--skip-bad`), in order.
+    pub skipped: Vec<RowError>,
+    /// The row that stopped the run; `bytes` holds every row before it.
+    pub stop: Option<RowError>,
+}
+
+/// Solves and formats a chunk of rows: `(place, case)` or an input error.
+pub fn chunk(
+    items: impl Iterator<Item = Result<(u64, RowCase), RowError>>,
+    place: &dyn Fn(u64) -> String,
+    shared: Option<&InertiaTensor>,
+    writer: &RowWriter,
+    skip_bad: bool,
+) -> ChunkOut {
+    let mut buf = writer.buffer();
+    let mut fields = FieldCache::new(writer.columns().len());
+    let mut values = vec![0.0; writer.columns().len()];
+    let mut out = ChunkOut {
+        bytes: Vec::new(),
+        rows: 0,
+        skipped: Vec::new(),
+        stop: None,
+    };
+    for item in items {
+        let result = item.and_then(|(at, case)| {
+            solve_row(&case, shared, writer.columns(), &mut values).map_err(|problem| RowError {
+                place: place(at),
+                problem,
+            })
+        });
+        match result {
+            Ok(()) => {
+                writer.row(&values, &mut buf, &mut fields);
+                out.rows += 1;
+            }
+            Err(e) if skip_bad => out.skipped.push(e),
+            Err(e) => {
+                out.stop = Some(e);
+                break;
+            }
+        }
+    }
+    out.bytes = buf.into_bytes();
+    out
+}
+
+/// How a table run ended.
+#[derive(Debug, Default, PartialEq)]
+pub struct Summary {
+    pub rows: u64,
+    pub skipped: u64,
+}
+
+/// Why a table run stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum RowsError {
+    #[error(transparent)]
+    Row(#[from] RowError),
+    #[error(transparent)]
+    Io(#[from] io::Error),
+}
+
+/// Rows per chunk solved by one thread.
+pub const CHUNK_ROWS: usize = 8192;
+
+/// Solves chunks in parallel, a batch at a time, and writes them in order; reports skipped rows
+/// on stderr as it goes; stops at the first bad row (after writing every row before it).
+pub fn write_chunks<C: Send>(
+    chunks: impl Iterator<Item = C>,
+    solve: impl Fn(C) -> ChunkOut + Sync + Send,
+    out: &mut dyn Write,
+    progress: &mut Progress,
+) -> Result<Summary, RowsError> {
+    let mut summary = Summary::default();
+    for batch in batched(chunks) {
+        let done: Vec<ChunkOut> = batch.into_par_iter().map(&solve).collect();
+        for c in done {
+            out.write_all(&c.bytes)?;
+            summary.rows += c.rows;
+            progress.advance(c.rows + c.skipped.len() as u64);
+            for s in &c.skipped {
+                eprintln!("skipped {s}");
+            }
+            summary.skipped += c.skipped.len() as u64;
+            if let Some(stop) = c.stop {
+                out.flush()?;
+                return Err(stop.into());
+            }
+        }
+    }
+    out.flush()?;
+    Ok(summary)
+}
+
+/// Groups chunks into batches of a few per thread.
+fn batched<C>(chunks: impl Iterator<Item = C>) -> impl Iterator<Item = Vec<C>> {
+    let per_batch = 4 * rayon::current_num_threads().max(1);
+    let mut chunks = chunks.peekable();
+    std::iter::from_fn(move || {
+        chunks.peek()?;
+        Some(chunks.by_ref().take(per_batch).collect())
+    })
+}
+
+/// Solves the rows of `shard` of a sweep of `case` over `grid` and writes them (with the header
+/// when `shard` is the first) to `out`.
+pub fn write_sweep(
+    case: &Case,
+    grid: &Grid,
+    shard: Shard,
+    writer: &RowWriter,
+    skip_bad: bool,
+    out: &mut dyn Write,
+    progress: &mut Progress,
+) -> Result<Summary, RowsError> {
+    let m = case.inertia().matrix();
+    // A tensor every row shares, when no mass varies.
+    let shared =
+        (!grid.varies(Param::M1) && !grid.varies(Param::M2)).then(|| case.inertia().untyped());
+    let c = &case.collision;
+    let base = RowCase {
+        m11: m[(0, 0)],
+        m12: m[(0, 1)],
+        m22: m[(1, 1)],
+        v: [c.v_in.x, c.v_in.y],
+        e: c.restitution.value(),
+    };
+    let rows = shard.rows(grid.total);
+    if shard.k == 1 {
+        let mut header = Vec::new();
+        writer.header(&mut header);
+        out.write_all(&header)?;
+    }
+    let chunk_ranges = (rows.start..rows.end)
+        .step_by(CHUNK_ROWS)
+        .map(move |s| s..(s + CHUNK_ROWS as u64).min(rows.end));
+    let solve = |range: std::ops::Range<u64>| {
+        let mut varied = [(Param::E, 0.0); 5];
+        let varied = &mut varied[..grid.vary.len()];
+        let items = range.map(|r| {
+            grid.row(r, varied);
+            let mut row = base;
+            for &(p, x) in varied.iter() {
+                match p {
+                    Param::M1 => row.m11 = x,
+                    Param::M2 => row.m22 = x,
+                    Param::V1 => row.v[0] = x,
+                    Param::V2 => row.v[1] = x,
+                    Param::E => row.e = x,
+                }
+            }
+            Ok((r + 1, row))
+        });
+        chunk(
+            items,
+            &|r| format!("row {r}"),
+            shared.as_ref(),
+            writer,
+            skip_bad,
+        )
+    };
+    write_chunks(chunk_ranges, solve, out, progress)
+}
+
+/// Solves every case of `input` and writes its rows, with the header, to `out`. The input is read
+/// a batch of chunks at a time: memory stays bounded whatever its size.
+pub fn write_batch(
+    input: Batch,
+    writer: &RowWriter,
+    skip_bad: bool,
+    out: &mut dyn Write,
+    progress: &mut Progress,
+) -> Result<Summary, RowsError> {
+    let mut header = Vec::new();
+    writer.header(&mut header);
+    out.write_all(&header)?;
+    let mut input = input.peekable();
+    let chunks = std::iter::from_fn(move || {
+        input.peek()?;
+        Some(input.by_ref().take(CHUNK_ROWS).collect::<Vec<_>>())
+    });
+    let solve = |items: Vec<Result<(u64, RowCase), RowError>>| {
+        chunk(
+            items.into_iter(),
+            &|l| format!("line {l}"),
+            None,
+            writer,
+            skip_bad,
+        )
+    };
+    write_chunks(chunks, solve, out, progress)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::columns::by_names;
+    use crate::table::writer::RowFormat;
+
+    fn case(m1: f64, m2: f64, v: [f64; 2], e: f64) -> RowCase {
+        RowCase {
+            m11: m1,
+            m12: 0.0,
+            m22: m2,
+            v,
+            e,
+        }
+    }
+
+    #[test]
+    fn a_row_is_the_lecture_case() {
+        let cols = Column::defaults(false);
+        let mut out = vec![0.0; cols.len()];
+        solve_row(&case(4.0, 1.0, [60.0, 10.0], 1.0), None, &cols, &mut out).unwrap();
+        // m1 m2 v1 v2 e fin1 fin2 v_com ke_in ke_fin crunch lost
+        assert_eq!(
+            out,
+            [
+                4.0, 1.0, 60.0, 10.0, 1.0, 40.0, 90.0, 50.0, 7250.0, 7250.0, 1000.0, 0.0
+            ]
+        );
+    }
+
+    #[test]
+    fn bad_rows_stop_or_are_skipped() {
+        let w = RowWriter::new(by_names(&["fin1"]).unwrap(), RowFormat::Csv);
+        let items = || {
+            vec![
+                Ok((1, case(4.0, 1.0, [60.0, 10.0], 1.0))),
+                Ok((2, case(1.0, 1.0, [1e200, -1e200], 1.0))),
+                Ok((3, case(4.0, 1.0, [60.0, 10.0], 0.0))),
+            ]
+            .into_iter()
+        };
+        let place = |r: u64| format!("row {r}");
+        // FIN of row 2 is representable (-1e200, 1e200): only what is asked is computed.
+        let all = chunk(items(), &place, None, &w, false);
+        assert_eq!(all.bytes, b"40.0\n-1e200\n50.0\n");
+        // Its KE (1e400) is not.
+        let w = RowWriter::new(by_names(&["ke_in"]).unwrap(), RowFormat::Csv);
+        let stopped = chunk(items(), &place, None, &w, false);
+        assert_eq!(stopped.bytes, b"7250.0\n");
+        assert_eq!(stopped.stop.unwrap().place, "row 2");
+        let skipping = chunk(items(), &place, None, &w, true);
+        assert_eq!(skipping.bytes, b"7250.0\n7250.0\n");
+        assert_eq!(skipping.skipped.len(), 1);
+        assert!(
+            skipping.skipped[0]
+                .to_string()
+                .contains("ke_in is not representable")
+        );
+    }
+}

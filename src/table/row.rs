@@ -1,0 +1,112 @@
+//! One row of a table: its inputs, the solver computing it, and why a row can be bad.
+
+use crate::inertia::{InertiaError, MassError};
+use crate::number::NumberError;
+use crate::restitution::RestitutionError;
+use crate::solver::Solver;
+use crate::solver::binary64::Binary64;
+
+/// The inputs of one row: `M = [[m11, m12], [m12, m22]]`, `V`, `e`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowCase {
+    pub m11: f64,
+    pub m12: f64,
+    pub m22: f64,
+    pub v: [f64; 2],
+    pub e: f64,
+}
+
+/// A row being computed: its inputs, its solver, and FIN once computed (several columns use it).
+pub struct Row<'a> {
+    pub case: &'a RowCase,
+    pub seen: Binary64<'a>,
+    fin: Option<[f64; 2]>,
+}
+
+impl<'a> Row<'a> {
+    pub fn new(case: &'a RowCase, seen: Binary64<'a>) -> Row<'a> {
+        Row {
+            case,
+            seen,
+            fin: None,
+        }
+    }
+
+    /// `V_FIN`, computed once.
+    pub fn fin(&mut self) -> [f64; 2] {
+        *self.fin.get_or_insert_with(|| self.seen.v_fin())
+    }
+}
+
+/// A row that could not be given, and where it is.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{place}: {problem}")]
+pub struct RowError {
+    /// `line 17` (batch input) or `row 17` (sweep).
+    pub place: String,
+    pub problem: RowProblem,
+}
+
+/// What is wrong with a row.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RowProblem {
+    #[error("field '{field}': {problem}")]
+    Field {
+        field: &'static str,
+        problem: ValueProblem,
+    },
+    #[error("{got} fields, but the header names {named}")]
+    FieldCount { got: usize, named: usize },
+    #[error("not a CSV record: {0}")]
+    NotCsv(String),
+    #[error("cannot read: {0}")]
+    Read(String),
+    #[error("not JSON: {0}")]
+    NotJson(String),
+    #[error("expected a JSON object such as {{\"m1\": 4, \"m2\": 1, \"v1\": 60, \"v2\": 10}}")]
+    NotObject,
+    #[error("field '{0}': expected a number, got {1}")]
+    NotNumber(String, String),
+    #[error(transparent)]
+    Layout(#[from] LayoutError),
+    #[error("this object gives the tensor differently from the first line")]
+    OtherLayout,
+    #[error(transparent)]
+    Number(#[from] NumberError),
+    #[error(transparent)]
+    Inertia(#[from] InertiaError),
+    #[error(transparent)]
+    Restitution(#[from] RestitutionError),
+    #[error(
+        "{0} is not representable in binary64 (beyond 2.2e-308 to 1.8e308); rescale the units or \
+         use collide solve --exact"
+    )]
+    Unrepresentable(&'static str),
+}
+
+/// What is wrong with one value of a row: a field of an input row, a value of a `--vary`.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ValueProblem {
+    #[error("missing")]
+    Missing,
+    #[error(transparent)]
+    Number(#[from] NumberError),
+    #[error(transparent)]
+    Mass(#[from] MassError),
+    #[error(transparent)]
+    Restitution(#[from] RestitutionError),
+}
+
+/// What is wrong with the names of an input's columns (a CSV header, a JSON object's keys).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LayoutError {
+    #[error("unknown column '{0}': expected {KNOWN}")]
+    Unknown(String),
+    #[error("missing column '{0}': expected {KNOWN}")]
+    Missing(&'static str),
+    #[error("give m1, m2 or m11, m12, m22, not both")]
+    Both,
+}
+
+/// The columns an input may have.
+pub const KNOWN: &str = "m1, m2, v1, v2 and optionally e (or m11, m12, m22 for a general tensor)";

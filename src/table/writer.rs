@@ -1,0 +1,177 @@
+//! Rows written as CSV (the csv crate), JSON Lines or aligned text, numbers shortest round-trip
+//! (ryu) with no allocation per field.
+
+use std::io::Write;
+
+use super::columns::Column;
+
+/// How rows are written (`--format`, `format` in a scene's `[sweep]`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum RowFormat {
+    /// Comma-separated values with a header line
+    Csv,
+    /// One JSON object a line
+    Jsonl,
+    /// Aligned columns for people
+    Text,
+}
+
+/// Width of a text column: the longest shortest-round-trip binary64 ("-1.2345678901234567e-308").
+const TEXT_WIDTH: usize = 24;
+
+/// Writes rows of numbers in one format.
+pub struct RowWriter {
+    columns: Vec<&'static Column>,
+    format: RowFormat,
+}
+
+impl RowWriter {
+    pub fn new(columns: Vec<&'static Column>, format: RowFormat) -> RowWriter {
+        RowWriter { columns, format }
+    }
+
+    pub fn columns(&self) -> &[&'static Column] {
+        &self.columns
+    }
+
+    /// The header line (CSV and text; nothing for JSON Lines).
+    pub fn header(&self, out: &mut Vec<u8>) {
+        match self.format {
+            RowFormat::Csv => {
+                let mut w = csv::Writer::from_writer(out);
+                let _ = w.write_record(self.columns.iter().map(|c| c.name));
+                let _ = w.flush();
+            }
+            RowFormat::Text => {
+                for (i, c) in self.columns.iter().enumerate() {
+                    let sep = if i == 0 { "" } else { " " };
+                    let _ = write!(out, "{sep}{:>TEXT_WIDTH$}", c.name);
+                }
+                out.push(b'\n');
+            }
+            RowFormat::Jsonl => {}
+        }
+    }
+
+    /// A buffer for a chunk of rows in this format.
+    pub fn buffer(&self) -> RowBuf {
+        match self.format {
+            RowFormat::Csv => RowBuf::Csv(Box::new(
+                csv::WriterBuilder::new()
+                    .has_headers(false)
+                    // Fields are numbers: they never need quotes, so skip looking for them.
+                    .quote_style(csv::QuoteStyle::Never)
+                    .from_writer(Vec::with_capacity(1 << 16)),
+            )),
+            _ => RowBuf::Raw(Vec::with_capacity(1 << 16)),
+        }
+    }
+
+    /// Writes one row of values (all finite).
+    pub fn row(&self, values: &[f64], buf: &mut RowBuf, fields: &mut FieldCache) {
+        match buf {
+            RowBuf::Csv(csv) => {
+                for (i, v) in values.iter().enumerate() {
+                    let _ = csv.write_field(fields.format(i, *v));
+                }
+                let _ = csv.write_record(None::<&[u8]>);
+            }
+            RowBuf::Raw(out) if self.format == RowFormat::Jsonl => {
+                out.push(b'{');
+                for (i, (c, v)) in self.columns.iter().zip(values).enumerate() {
+                    if i > 0 {
+                        out.push(b',');
+                    }
+                    out.push(b'"');
+                    out.extend_from_slice(c.name.as_bytes());
+                    out.extend_from_slice(b"\":");
+                    out.extend_from_slice(fields.format(i, *v));
+                }
+                out.extend_from_slice(b"}\n");
+            }
+            RowBuf::Raw(out) => {
+                for (i, v) in values.iter().enumerate() {
+                    let s = fields.format(i, *v);
+                    let pad = TEXT_WIDTH.saturating_sub(s.len()) + usize::from(i > 0);
+                    out.extend(std::iter::repeat_n(b' ', pad));
+                    out.extend_from_slice(s);
+                }
+                out.push(b'\n');
+            }
+        }
+    }
+}
+
+/// Shortest round-trip text of each column's last value: in a sweep most fields repeat from one
+/// row to the next (inputs that do not vary, and whatever does not depend on the fastest
+/// parameter), and formatting numbers is most of a table's cost.
+pub struct FieldCache {
+    last: Vec<(u64, [u8; 32], u8)>,
+    ryu: ryu::Buffer,
+}
+
+impl FieldCache {
+    pub fn new(columns: usize) -> FieldCache {
+        // A NaN bit pattern: never equal to a finite value's.
+        FieldCache {
+            last: vec![(u64::MAX, [0; 32], 0); columns],
+            ryu: ryu::Buffer::new(),
+        }
+    }
+
+    /// The text of `v` (finite) in column `i`.
+    pub fn format(&mut self, i: usize, v: f64) -> &[u8] {
+        let (bits, text, len) = &mut self.last[i];
+        if *bits != v.to_bits() {
+            let s = self.ryu.format_finite(v).as_bytes();
+            text[..s.len()].copy_from_slice(s);
+            *len = s.len() as u8;
+            *bits = v.to_bits();
+        }
+        &text[..*len as usize]
+    }
+}
+
+/// A chunk's bytes as they are written.
+pub enum RowBuf {
+    Csv(Box<csv::Writer<Vec<u8>>>),
+    Raw(Vec<u8>),
+}
+
+impl RowBuf {
+    pub fn into_bytes(self) -> Vec<u8> {
+        match self {
+            RowBuf::Csv(w) => w.into_inner().unwrap_or_default(),
+            RowBuf::Raw(v) => v,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::columns::by_names;
+
+    #[test]
+    fn formats() {
+        let cols = || by_names(&["e", "ke_in"]).unwrap();
+        let w = RowWriter::new(cols(), RowFormat::Csv);
+        let mut header = Vec::new();
+        w.header(&mut header);
+        assert_eq!(header, b"e,ke_in\n");
+        let mut buf = w.buffer();
+        let mut f = FieldCache::new(2);
+        w.row(&[0.3, 1e300], &mut buf, &mut f);
+        w.row(&[0.3, -2.5], &mut buf, &mut f);
+        assert_eq!(buf.into_bytes(), b"0.3,1e300\n0.3,-2.5\n");
+        let w = RowWriter::new(cols(), RowFormat::Jsonl);
+        let mut buf = w.buffer();
+        w.row(&[0.3, 7250.0], &mut buf, &mut FieldCache::new(2));
+        assert_eq!(buf.into_bytes(), b"{\"e\":0.3,\"ke_in\":7250.0}\n");
+        let w = RowWriter::new(by_names(&["e"]).unwrap(), RowFormat::Text);
+        let mut buf = w.buffer();
+        w.row(&[0.5], &mut buf, &mut FieldCache::new(1));
+        assert_eq!(buf.into_bytes(), format!("{:>24}\n", "0.5").as_bytes());
+    }
+}
