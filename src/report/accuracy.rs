@@ -45,7 +45,8 @@ pub fn text(seed: u64, families: &[Family], rows: &[Row]) -> String {
     ]);
     let mut family = None;
     for r in rows {
-        if family.is_some_and(|f| f != r.family) || family.is_none() {
+        // A blank line after the header and between families.
+        if family != Some(r.family) {
             table.gap();
         }
         family = Some(r.family);
