@@ -3,6 +3,7 @@
 
 use std::time::Instant;
 
+use collide::inertia::Mass;
 use collide::track::{Body, Limits, Track};
 
 fn main() {
@@ -11,9 +12,12 @@ fn main() {
         max_collisions: u64::MAX,
     };
     for n in [6, 7, 8] {
-        let t = Track::pi_billiards(1.0, 100f64.powi(n));
+        let t = Track::pi_billiards(
+            Mass::from_f64(1.0).unwrap(),
+            Mass::from_f64(100f64.powi(n)).unwrap(),
+        );
         let s = Instant::now();
-        let r = t.run(forever, None);
+        let r = t.run(forever, None).expect("pi billiards runs");
         let secs = s.elapsed().as_secs_f64();
         println!(
             "pi billiards N = {n}: {:>10} collisions in {secs:6.3} s: {:5.1} ns a collision, {:6.1} M/s; energy drift {:.1e}",
@@ -28,7 +32,7 @@ fn main() {
         let t = Track {
             bodies: (0..bodies)
                 .map(|i| Body {
-                    m: 1.0 + (i % 2) as f64,
+                    m: Mass::from_f64(1.0 + (i % 2) as f64).unwrap(),
                     x: i as f64 + 1.0,
                     v: ((i * 7919) % 13) as f64 - 6.0,
                     size: 0.0,
@@ -42,13 +46,15 @@ fn main() {
         };
         let limit = 5_000_000;
         let s = Instant::now();
-        let r = t.run(
-            Limits {
-                until: None,
-                max_collisions: limit,
-            },
-            None,
-        );
+        let r = t
+            .run(
+                Limits {
+                    until: None,
+                    max_collisions: limit,
+                },
+                None,
+            )
+            .expect("the track runs");
         let secs = s.elapsed().as_secs_f64();
         println!(
             "{bodies:>6} bodies between walls: {:>8} collisions in {secs:6.3} s: {:5.1} ns a collision; energy drift {:.1e}",

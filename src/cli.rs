@@ -50,6 +50,9 @@ pub enum Command {
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
     Track(TrackArgs),
+    /// Pi from collisions: the exact count for mass ratio 100^N (the first N + 1 digits of pi),
+    /// simulated as well for N <= 10
+    Pi(PiArgs),
     /// Draw the collision: the velocity-velocity diagram, or Newton's or Minkowski's space-time
     Plot(PlotArgs),
 }
@@ -78,6 +81,25 @@ pub struct PlotArgs {
     /// Draw in the terminal (Unicode braille) instead of SVG
     #[arg(long)]
     pub term: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct PiArgs {
+    /// Digits after the 3: the mass ratio is 100^N (0 to 10,000)
+    #[arg(value_name = "N", value_parser = clap::value_parser!(u32).range(0..=10_000))]
+    pub n: u32,
+
+    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes]
+    #[arg(long, overrides_with = "no_simulate")]
+    pub simulate: bool,
+
+    /// Give the count only, without simulating
+    #[arg(long)]
+    pub no_simulate: bool,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
 }
 
 #[derive(Args, Debug)]
@@ -123,8 +145,8 @@ pub struct TrackArgs {
     #[arg(long, value_name = "G", default_value = "0")]
     pub gravity: Number,
 
-    /// Stop at this time and give the state then
-    #[arg(long, value_name = "T")]
+    /// Give the state at this time (>= 0): collisions up to it, free flight after the last one
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub until: Option<Number>,
 
     /// Stop after this many collisions

@@ -37,6 +37,10 @@ impl Mass {
             Err(MassError::NotPositive(n.to_string()))
         }
     }
+    /// The mass of a binary64 value (its exact value, as if typed in full).
+    pub fn from_f64(x: f64) -> Result<Mass, MassError> {
+        Mass::new(Number::from_f64(x)?)
+    }
     pub fn value(&self) -> f64 {
         self.0.value()
     }

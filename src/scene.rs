@@ -577,19 +577,24 @@ impl TrackScene {
             t.velocities.get_ref(),
             t.sizes.as_ref().map(|s| s.get_ref().as_slice()),
         )
-        .map_err(|m| {
-            let list = match m.list {
-                "positions" => &t.positions,
-                "velocities" => &t.velocities,
-                _ => t.sizes.as_ref().unwrap_or(&t.masses),
-            };
-            err(
-                Some(list.span()),
-                format!(
-                    "[track] {}: {} values for {} bodies",
-                    m.list, m.got, m.bodies
-                ),
-            )
+        .map_err(|e| match e {
+            crate::track::BodiesError::Miscount(m) => {
+                let list = match m.list {
+                    "positions" => &t.positions,
+                    "velocities" => &t.velocities,
+                    _ => t.sizes.as_ref().unwrap_or(&t.masses),
+                };
+                err(
+                    Some(list.span()),
+                    format!(
+                        "[track] {}: {} values for {} bodies",
+                        m.list, m.got, m.bodies
+                    ),
+                )
+            }
+            crate::track::BodiesError::Track(e) => {
+                err(Some(t.masses.span()), format!("[track] {e}"))
+            }
         })?;
         let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
         let track = Track {
@@ -609,6 +614,9 @@ impl TrackScene {
                 .max_collisions
                 .unwrap_or(crate::track::DEFAULT_MAX_COLLISIONS),
         };
+        limits
+            .check()
+            .map_err(|e| err(None, format!("[track] {e}")))?;
         let known = |top: &str| {
             if TRACK_KEYS.contains(&top) {
                 Ok(())

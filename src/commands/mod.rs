@@ -5,6 +5,7 @@
 
 mod accuracy;
 mod frames;
+mod pi;
 mod plot;
 mod scene;
 mod solve;
@@ -41,6 +42,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Sweep(args) => table::sweep(args),
         Command::Batch(args) => table::batch(args),
         Command::Track(args) => track::run(args),
+        Command::Pi(args) => pi::run(args),
         Command::Plot(args) => plot::run(args),
     }
 }

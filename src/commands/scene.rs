@@ -77,7 +77,11 @@ fn solve(scene: Scene) -> Result<Checked> {
 }
 
 fn solve_track(scene: TrackScene) -> Result<Checked> {
-    let result = TrackReport::new(&scene.track, scene.track.run(scene.limits, None));
+    let run = scene
+        .track
+        .run(scene.limits, None)
+        .with_context(|| format!("{}", scene.about.path.display()))?;
+    let result = TrackReport::new(&scene.track, run);
     let json =
         track_report::json(&result).with_context(|| format!("{}", scene.about.path.display()))?;
     let text = track_report::text(&scene.track, &result, scene.limits);

@@ -4,9 +4,10 @@ use std::io::Write;
 use std::path::Path;
 
 use anyhow::{Context, Result};
+use collide::output::Output;
 use collide::report::{json, track as report};
 use collide::table::batch::InputFormat;
-use collide::track::{Event, Limits, Run, Track, TrackReport, bodies};
+use collide::track::{BodiesError, Event, Limits, Run, Track, TrackReport, bodies};
 
 use super::Outcome;
 use crate::cli::{Format, TrackArgs};
@@ -18,13 +19,14 @@ pub fn run(args: TrackArgs) -> Result<Outcome> {
         &args.velocities.0,
         args.sizes.as_ref().map(|s| s.0.as_slice()),
     )
-    .map_err(|m| {
-        anyhow::anyhow!(
+    .map_err(|e| match e {
+        BodiesError::Miscount(m) => anyhow::anyhow!(
             "--{} has {} values for {} masses: give one per body",
             m.list,
             m.got,
             m.bodies
-        )
+        ),
+        BodiesError::Track(e) => e.into(),
     })?;
     let e = args.restitution.value();
     let track = Track {
@@ -40,8 +42,9 @@ pub fn run(args: TrackArgs) -> Result<Outcome> {
         until: args.until.map(|t| t.value()),
         max_collisions: args.max_collisions,
     };
-    let run = match &args.log {
-        None => track.run(limits, None),
+    limits.check()?;
+    let (run, log) = match &args.log {
+        None => (track.run(limits, None)?, None),
         Some(path) => run_logged(&track, limits, path, args.log_format)?,
     };
     let result = TrackReport::new(&track, run);
@@ -50,75 +53,73 @@ pub fn run(args: TrackArgs) -> Result<Outcome> {
         Format::Json => json::render(&value),
         Format::Text => report::text(&track, &result, limits),
     };
+    // The log takes the place of an old one only now that the whole command succeeded.
+    if let (Some(log), Some(path)) = (log, &args.log) {
+        log.commit()
+            .with_context(|| format!("cannot write the log {}", path.display()))?;
+    }
     Ok(Outcome::print(stdout))
 }
 
-/// Runs `track`, writing each collision to `path` ('-': stderr) as CSV or JSON Lines.
+/// Runs `track`, writing each collision to `path` ('-': stderr) as CSV or JSON Lines. A file is
+/// written like `-o`: to a temporary file beside it, which the caller renames into place
+/// (`Output::commit`) when the command succeeds, and which is removed otherwise.
 fn run_logged(
     track: &Track,
     limits: Limits,
     path: &Path,
     format: Option<InputFormat>,
-) -> Result<Run> {
+) -> Result<(Run, Option<Output>)> {
     let jsonl = match format {
         Some(f) => f == InputFormat::Jsonl,
         None => path.extension().is_some_and(|e| e == "jsonl"),
     };
-    let sink: Box<dyn Write> = if path == Path::new("-") {
-        Box::new(std::io::stderr())
+    let named = || format!("cannot write the log {}", path.display());
+    let mut out = if path == Path::new("-") {
+        None
     } else {
-        Box::new(
-            std::fs::File::create(path)
-                .with_context(|| format!("cannot write {}", path.display()))?,
-        )
+        Some(Output::open(Some(path)).with_context(named)?)
     };
-    let out = std::io::BufWriter::new(sink);
-    enum Log {
-        Csv(Box<csv::Writer<std::io::BufWriter<Box<dyn Write>>>>),
-        Jsonl(std::io::BufWriter<Box<dyn Write>>),
-    }
-    let mut log = if jsonl {
-        Log::Jsonl(out)
-    } else {
-        Log::Csv(Box::new(csv::Writer::from_writer(out)))
+    let mut stderr = std::io::stderr().lock();
+    let sink: &mut dyn Write = match &mut out {
+        Some(o) => o,
+        None => &mut stderr,
     };
-    let mut failed: Option<String> = None;
-    if let Log::Csv(w) = &mut log {
-        w.write_record(["n", "t", "who", "v_before", "v_after"])?;
+    let mut failed: Option<std::io::Error> = None;
+    if !jsonl {
+        failed = sink.write_all(b"n,t,who,v_before,v_after\n").err();
     }
+    let mut line = String::new();
     let mut record = |ev: &Event| {
         if failed.is_some() {
             return;
         }
-        let join = |v: &[f64]| {
-            v.iter()
-                .map(|x| ryu::Buffer::new().format(*x).to_string())
-                .collect::<Vec<_>>()
-                .join(" ")
-        };
-        let result = match &mut log {
-            Log::Csv(w) => w
-                .write_record([
-                    ev.n.to_string(),
-                    ryu::Buffer::new().format(ev.t).to_string(),
-                    ev.who.clone(),
-                    join(&ev.before),
-                    join(&ev.after),
-                ])
-                .map_err(|e| e.to_string()),
-            Log::Jsonl(w) => serde_json::to_writer(&mut *w, ev)
-                .map_err(|e| e.to_string())
-                .and_then(|()| w.write_all(b"\n").map_err(|e| e.to_string())),
-        };
-        failed = result.err();
+        line.clear();
+        if jsonl {
+            line.push_str(&serde_json::to_string(ev).expect("events serialize"));
+        } else {
+            let join = |v: &[f64]| {
+                v.iter()
+                    .map(|x| ryu::Buffer::new().format(*x).to_string())
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            };
+            line.push_str(&format!(
+                "{},{},{},{},{}",
+                ev.n,
+                ryu::Buffer::new().format(ev.t),
+                ev.who,
+                join(&ev.before),
+                join(&ev.after)
+            ));
+        }
+        line.push('\n');
+        failed = sink.write_all(line.as_bytes()).err();
     };
-    let run = track.run(limits, Some(&mut record));
+    let run = track.run(limits, Some(&mut record))?;
     if let Some(e) = failed {
-        anyhow::bail!("cannot write the log {}: {e}", path.display());
+        return Err(e).with_context(named);
     }
-    match &mut log {
-        Log::Csv(w) => w.flush()?,
-        Log::Jsonl(w) => w.flush()?,
-    }
-    Ok(run)
+    stderr.flush().with_context(named)?;
+    Ok((run, out))
 }

@@ -5,6 +5,7 @@
 pub mod accuracy;
 pub mod frames;
 pub mod json;
+pub mod pi;
 pub mod scene;
 pub mod solved;
 pub mod text;

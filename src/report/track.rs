@@ -38,15 +38,22 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
     } else {
         String::new()
     };
+    let n = t.bodies.len();
     let _ = writeln!(
         out,
-        "{} bodies, {walls}{gravity}; e = {} between bodies, {} at walls",
-        t.bodies.len(),
+        "{n} {}, {walls}{gravity}; e = {} between bodies, {} at walls",
+        if n == 1 { "body" } else { "bodies" },
         num(t.e),
         num(t.e_wall)
     );
     let why = match &run.stop {
-        Stop::Done => "no collision can happen any more".to_string(),
+        Stop::Done => match limits.until {
+            Some(u) => format!(
+                "no collision can happen any more; the state at --until {}",
+                num(u)
+            ),
+            None => "no collision can happen any more".to_string(),
+        },
         Stop::Until => "reached --until".to_string(),
         Stop::MaxCollisions => format!(
             "stopped at the --max-collisions cap of {}; raise it to go on",
@@ -58,7 +65,8 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
             who,
             x,
         } => format!(
-            "infinitely many collisions in finite time (inelastic collapse): collisions {who} near x = {} \
+            "infinitely many collisions in finite time (inelastic collapse or coming to rest): \
+             collisions {who} near x = {} \
              accumulate at t = {}; stopped at t = {}",
             num(*x),
             num(*accumulation),
@@ -67,8 +75,9 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
     };
     let _ = writeln!(out, "Stopped: {why}");
     let mut b = Block::new(format!(
-        "After {} collisions at t = {}",
+        "After {} collision{} at t = {}",
         run.collisions,
+        if run.collisions == 1 { "" } else { "s" },
         num(run.time)
     ));
     b.row(
@@ -87,10 +96,14 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
         );
     }
     if let Some(pi) = &r.pi {
-        let verdict = if pi.agrees { "agrees" } else { "DISAGREES" };
+        let verdict = match pi.agrees {
+            Some(true) => "agrees",
+            Some(false) => "DISAGREES",
+            None => "not compared: the run did not end by itself",
+        };
         b.row(
             "pi billiards",
-            pi.theory.to_string(),
+            pi.theory.clone(),
             format!(
                 "ceil(pi/theta) - 1 with theta = atan(sqrt(m1/m2)) = {}: {verdict}",
                 num(pi.theta)
@@ -103,7 +116,7 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
     for (i, body) in t.bodies.iter().enumerate() {
         bodies.cells([
             (i + 1).to_string(),
-            num(body.m),
+            body.m.number().to_string(),
             num(run.x[i]),
             num(run.v[i]),
         ]);
