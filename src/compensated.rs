@@ -4,7 +4,7 @@
 //! (a general tensor with negative `M12`, or a form of two nearly M-orthogonal vectors) costs nothing.
 
 /// `a + b = s + err` exactly (Knuth's TwoSum).
-#[inline]
+#[inline(always)]
 pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
@@ -12,7 +12,7 @@ pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
 }
 
 /// `a * b = p + err` exactly (with a fused multiply-add), barring underflow.
-#[inline]
+#[inline(always)]
 pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
     (p, a.mul_add(b, -p))
