@@ -50,6 +50,9 @@ pub enum Command {
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
     Track(TrackArgs),
+    /// Collisions in time: contact forces (linear spring-dashpot, Hertz, Hunt-Crossley)
+    /// integrated through each impact, with the error of each method against its run time
+    Contact(ContactArgs),
     /// Pi from collisions: the exact count for mass ratio 100^N (the first N + 1 digits of pi),
     /// simulated as well for N <= 10
     Pi(PiArgs),
@@ -102,8 +105,9 @@ pub struct PiArgs {
     pub format: Format,
 }
 
+/// Bodies on a track: masses, positions, velocities, sizes, walls (`track` and `contact`).
 #[derive(Args, Debug)]
-pub struct TrackArgs {
+pub struct LayoutArgs {
     /// Masses, left to right, e.g. 1,100
     #[arg(short, long, value_name = "M1,M2,...")]
     pub masses: NumberList,
@@ -132,6 +136,12 @@ pub struct TrackArgs {
     /// A wall at this position, right of every body
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub right_wall: Option<Number>,
+}
+
+#[derive(Args, Debug)]
+pub struct TrackArgs {
+    #[command(flatten)]
+    pub layout: LayoutArgs,
 
     /// Restitution between bodies: a number in [0, 1], 'elastic' or 'inelastic'
     #[arg(short = 'e', long, value_name = "E", default_value = "elastic")]
@@ -410,4 +420,161 @@ pub enum Format {
     Text,
     /// One JSON object (stable schema, see README)
     Json,
+}
+
+/// An integration method for `collide contact`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    /// Picks bdf when contact time scales differ by more than 100x (stiff), else tsit45
+    Auto,
+    /// Fixed step: v += h a, then x += h v (Euler-Cromer)
+    SymplecticEuler,
+    /// Fixed step: velocity Verlet
+    Verlet,
+    /// Fixed step: classical Runge-Kutta 4
+    Rk4,
+    /// Fixed step: implicit Euler (Newton)
+    ImplicitEuler,
+    /// Fixed step: implicit midpoint (Newton)
+    ImplicitMidpoint,
+    /// Adaptive: Tsitouras 5(4), explicit (diffsol)
+    Tsit45,
+    /// Adaptive: variable-order BDF (diffsol)
+    Bdf,
+    /// Adaptive: ESDIRK3(4), L-stable (diffsol)
+    Sdirk,
+}
+
+impl MethodArg {
+    pub fn method(self) -> Option<collide::contact::Method> {
+        match self {
+            MethodArg::Auto => None,
+            m => collide::contact::Method::parse(
+                m.to_possible_value().expect("no skipped values").get_name(),
+            ),
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct ContactArgs {
+    #[command(flatten)]
+    pub layout: LayoutArgs,
+
+    /// Contact law
+    #[arg(long, value_enum, default_value_t = collide::contact::LawKind::Linear)]
+    pub law: collide::contact::LawKind,
+
+    /// Stiffness k of the contacts between bodies (force per overlap, or per overlap^(3/2))
+    #[arg(
+        long,
+        value_name = "K",
+        default_value_t = 1.0,
+        allow_hyphen_values = true
+    )]
+    pub stiffness: f64,
+
+    /// Damping between bodies: c of the linear law (force per speed), chi of Hunt-Crossley
+    /// (per speed)
+    #[arg(
+        long,
+        value_name = "C",
+        group = "body_damping",
+        allow_hyphen_values = true
+    )]
+    pub damping: Option<f64>,
+
+    /// Damping ratio zeta = c / (2 sqrt(k mu)) between bodies (linear law)
+    #[arg(
+        long,
+        value_name = "Z",
+        group = "body_damping",
+        allow_hyphen_values = true
+    )]
+    pub zeta: Option<f64>,
+
+    /// Restitution between bodies (linear law): zeta is found from it exactly
+    #[arg(
+        short = 'e',
+        long,
+        value_name = "E",
+        group = "body_damping",
+        allow_hyphen_values = true
+    )]
+    pub restitution: Option<f64>,
+
+    /// Stiffness at the walls [default: --stiffness]
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    pub wall_stiffness: Option<f64>,
+
+    /// Damping coefficient at the walls [default: the bodies' damping]
+    #[arg(
+        long,
+        value_name = "C",
+        group = "wall_damping_group",
+        allow_hyphen_values = true
+    )]
+    pub wall_damping: Option<f64>,
+
+    /// Damping ratio at the walls
+    #[arg(
+        long,
+        value_name = "Z",
+        group = "wall_damping_group",
+        allow_hyphen_values = true
+    )]
+    pub wall_zeta: Option<f64>,
+
+    /// Restitution at the walls (linear law)
+    #[arg(
+        long,
+        value_name = "E",
+        group = "wall_damping_group",
+        allow_hyphen_values = true
+    )]
+    pub wall_restitution: Option<f64>,
+
+    /// Integration method
+    #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
+    pub method: MethodArg,
+
+    /// Step of the fixed-step methods [default: 1/64 of the shortest contact time]
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+
+    /// Tolerance (relative; absolute in units of the overlap and speed scales) of the adaptive
+    /// methods [default: 1e-10; 1e-12 for the Hertzian laws]
+    #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
+    pub tol: Option<f64>,
+
+    /// Give the state at this time (>= 0)
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub until: Option<Number>,
+
+    /// Stop with an error after this many steps
+    #[arg(long, value_name = "N", default_value_t = collide::contact::DEFAULT_MAX_STEPS)]
+    pub max_steps: u64,
+
+    /// Error against run time for each method on a ladder of tolerances or steps
+    #[arg(long)]
+    pub work_precision: bool,
+
+    /// Methods for --work-precision [default: all]
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        value_name = "LIST",
+        requires = "work_precision"
+    )]
+    pub methods: Option<Vec<MethodArg>>,
+
+    /// Write a picture to FILE.svg: the work-precision diagram with --work-precision, else the
+    /// force and overlap of each contact against time
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
 }

@@ -8,7 +8,8 @@
 //! 2. two-body physics: `inertia`, `restitution`, `collision`, `ellipse`;
 //! 3. what the user asked: `case`, `problem`, `unknowns`, `frame`;
 //! 4. how it is computed: `solver` (the `Solver` trait, `binary64`, `exact`);
-//! 5. computations beyond one solve: `accuracy`, `expect`, `table`, `track`;
+//! 5. computations beyond one solve: `accuracy`, `expect`, `table`, `track`, `contact` (which
+//!    runs `track` as its impulse model);
 //! 6. what is printed: `report`, `plot`;
 //! 7. files: `scene`.
 //!
@@ -47,6 +48,7 @@ pub mod solver;
 
 // 5. computations beyond one solve
 pub mod accuracy;
+pub mod contact;
 pub mod expect;
 pub mod table;
 pub mod track;

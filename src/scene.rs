@@ -23,6 +23,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::case::Case;
+use crate::contact::{Damping, LawKind, Laws, Method, Settings, Setup};
 use crate::expect::{ExpectError, Expectation};
 use crate::frame::Frame;
 use crate::inertia::InertiaTensor;
@@ -204,6 +205,7 @@ pub struct Scene {
 pub enum AnyScene {
     Case(Scene),
     Track(TrackScene),
+    Contact(ContactScene),
 }
 
 /// A problem in a scene file, located.
@@ -237,14 +239,16 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 }
 
 impl Scene {
-    /// Reads a scene of either kind: a two-body case (or `[sweep]`), or a `[track]`.
+    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]` or a `[contact]`.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|e| SceneError {
             path: path.to_path_buf(),
             at: None,
             message: format!("cannot read scene file: {e}"),
         })?;
-        if is_track(&text) {
+        if has_table(&text, "contact") {
+            ContactScene::parse(path, &text).map(AnyScene::Contact)
+        } else if has_table(&text, "track") {
             TrackScene::parse(path, &text).map(AnyScene::Track)
         } else {
             Scene::parse(path, &text).map(AnyScene::Case)
@@ -561,9 +565,9 @@ pub const TRACK_KEYS: [&str; 11] = [
     "pi",
 ];
 
-/// Whether scene text holds a `[track]` table.
-pub fn is_track(text: &str) -> bool {
-    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("track"))
+/// Whether scene text holds a table `name` (`[track]`, `[contact]`).
+pub fn has_table(text: &str, name: &str) -> bool {
+    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key(name))
 }
 
 impl TrackScene {
@@ -571,31 +575,12 @@ impl TrackScene {
         let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
         let file: TrackFile = from_toml(path, text)?;
         let t = file.track;
-        let bodies = crate::track::bodies(
-            t.masses.get_ref(),
-            t.positions.get_ref(),
-            t.velocities.get_ref(),
-            t.sizes.as_ref().map(|s| s.get_ref().as_slice()),
-        )
-        .map_err(|e| match e {
-            crate::track::BodiesError::Miscount(m) => {
-                let list = match m.list {
-                    "positions" => &t.positions,
-                    "velocities" => &t.velocities,
-                    _ => t.sizes.as_ref().unwrap_or(&t.masses),
-                };
-                err(
-                    Some(list.span()),
-                    format!(
-                        "[track] {}: {} values for {} bodies",
-                        m.list, m.got, m.bodies
-                    ),
-                )
-            }
-            crate::track::BodiesError::Track(e) => {
-                err(Some(t.masses.span()), format!("[track] {e}"))
-            }
-        })?;
+        let bodies = layout(
+            (path, text),
+            "track",
+            [&t.masses, &t.positions, &t.velocities],
+            t.sizes.as_ref(),
+        )?;
         let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
         let track = Track {
             bodies,
@@ -632,6 +617,185 @@ impl TrackScene {
             about,
             track,
             limits,
+        })
+    }
+}
+
+/// The bodies of a `[track]` or `[contact]` table, with a miscount or a bad body located.
+fn layout(
+    (path, text): (&Path, &str),
+    table: &str,
+    [masses, positions, velocities]: [&Spanned<Vec<Number>>; 3],
+    sizes: Option<&Spanned<Vec<Number>>>,
+) -> Result<Vec<crate::track::Body>, SceneError> {
+    let err = |span: Range<usize>, message: String| located(path, text, Some(span), message);
+    crate::track::bodies(
+        masses.get_ref(),
+        positions.get_ref(),
+        velocities.get_ref(),
+        sizes.map(|s| s.get_ref().as_slice()),
+    )
+    .map_err(|e| match e {
+        crate::track::BodiesError::Miscount(m) => {
+            let list = match m.list {
+                "positions" => positions,
+                "velocities" => velocities,
+                _ => sizes.unwrap_or(masses),
+            };
+            err(
+                list.span(),
+                format!(
+                    "[{table}] {}: {} values for {} bodies",
+                    m.list, m.got, m.bodies
+                ),
+            )
+        }
+        crate::track::BodiesError::Track(e) => err(masses.span(), format!("[{table}] {e}")),
+    })
+}
+
+/// `[contact]` in a scene: bodies pushing with contact forces (`collide contact`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ContactFile {
+    title: Option<String>,
+    source: Option<String>,
+    contact: ContactTable,
+    expect: Option<ExpectTable>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ContactTable {
+    masses: Spanned<Vec<Number>>,
+    positions: Spanned<Vec<Number>>,
+    velocities: Spanned<Vec<Number>>,
+    sizes: Option<Spanned<Vec<Number>>>,
+    left_wall: Option<Number>,
+    right_wall: Option<Number>,
+    law: Option<LawKind>,
+    stiffness: Option<Number>,
+    damping: Option<Number>,
+    zeta: Option<Number>,
+    restitution: Option<Number>,
+    wall_stiffness: Option<Number>,
+    wall_damping: Option<Number>,
+    wall_zeta: Option<Number>,
+    wall_restitution: Option<Number>,
+    method: Option<Spanned<String>>,
+    dt: Option<Number>,
+    tol: Option<Number>,
+    until: Option<Number>,
+    max_steps: Option<u64>,
+}
+
+/// A contact scene, validated.
+#[derive(Clone, Debug)]
+pub struct ContactScene {
+    pub about: About,
+    pub setup: Setup,
+    pub settings: Settings,
+}
+
+/// Top-level keys of `collide contact --format json`.
+pub const CONTACT_KEYS: [&str; 12] = [
+    "law",
+    "method",
+    "dt",
+    "tol",
+    "time",
+    "x",
+    "v",
+    "contacts",
+    "energy",
+    "stats",
+    "impulse_model",
+    "stop",
+];
+
+impl ContactScene {
+    pub fn parse(path: &Path, text: &str) -> Result<ContactScene, SceneError> {
+        let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
+        let file: ContactFile = from_toml(path, text)?;
+        let t = file.contact;
+        let bodies = layout(
+            (path, text),
+            "contact",
+            [&t.masses, &t.positions, &t.velocities],
+            t.sizes.as_ref(),
+        )?;
+        let value = |n: &Option<Number>| n.as_ref().map(Number::value);
+        let damping = |keys: [&str; 3], [c, z, e]: [&Option<Number>; 3]| {
+            if [c, z, e].iter().filter(|n| n.is_some()).count() > 1 {
+                return Err(err(
+                    None,
+                    format!("[contact] give at most one of {}", keys.join(", ")),
+                ));
+            }
+            Ok(Damping::given(value(c), value(z), value(e)))
+        };
+        let laws = Laws {
+            kind: t.law.unwrap_or(LawKind::Linear),
+            k: value(&t.stiffness).unwrap_or(1.0),
+            damping: damping(
+                ["damping", "zeta", "restitution"],
+                [&t.damping, &t.zeta, &t.restitution],
+            )?,
+            wall_k: value(&t.wall_stiffness),
+            wall_damping: damping(
+                ["wall_damping", "wall_zeta", "wall_restitution"],
+                [&t.wall_damping, &t.wall_zeta, &t.wall_restitution],
+            )?,
+        };
+        let setup = Setup::new(bodies, (value(&t.left_wall), value(&t.right_wall)), laws);
+        setup
+            .slots()
+            .map_err(|e| err(Some(t.masses.span()), format!("[contact] {e}")))?;
+        let method = match &t.method {
+            None => None,
+            Some(m) if m.get_ref() == "auto" => None,
+            Some(m) => Some(Method::parse(m.get_ref()).ok_or_else(|| {
+                let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
+                err(
+                    Some(m.span()),
+                    format!(
+                        "[contact] method '{}': expected auto, {}",
+                        m.get_ref(),
+                        names.join(", ")
+                    ),
+                )
+            })?),
+        };
+        let until = value(&t.until);
+        Limits {
+            until,
+            max_collisions: 0,
+        }
+        .check()
+        .map_err(|e| err(None, format!("[contact] {e}")))?;
+        let settings = Settings {
+            method,
+            dt: value(&t.dt),
+            tol: value(&t.tol),
+            until,
+            max_steps: t.max_steps.unwrap_or(crate::contact::DEFAULT_MAX_STEPS),
+            trace: false,
+        };
+        let known = |top: &str| {
+            if CONTACT_KEYS.contains(&top) {
+                Ok(())
+            } else {
+                Err(ExpectError::UnknownQuantity {
+                    top: top.to_string(),
+                    expected: CONTACT_KEYS.join(", "),
+                })
+            }
+        };
+        let about = About::new((path, text), file.title, file.source, file.expect, known)?;
+        Ok(ContactScene {
+            about,
+            setup,
+            settings,
         })
     }
 }

@@ -4,6 +4,7 @@
 //! write files atomically).
 
 mod accuracy;
+mod contact;
 mod frames;
 mod pi;
 mod plot;
@@ -16,7 +17,7 @@ use anyhow::Result;
 use collide::case::Case;
 use collide::problem::Problem;
 
-use crate::cli::{CaseArgs, Command};
+use crate::cli::{CaseArgs, Command, LayoutArgs};
 
 /// What a command prints and how it exits.
 #[derive(Debug, PartialEq)]
@@ -43,6 +44,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Batch(args) => table::batch(args),
         Command::Track(args) => track::run(args),
         Command::Pi(args) => pi::run(args),
+        Command::Contact(args) => contact::run(args),
         Command::Plot(args) => plot::run(args),
     }
 }
@@ -62,5 +64,27 @@ impl CaseArgs {
     /// The case, with units resolved; `?` (an unknown) is for `collide solve`.
     pub fn into_case(self) -> Result<Case> {
         Ok(self.problem(None).into_case(self.inertia)?)
+    }
+}
+
+impl LayoutArgs {
+    /// The bodies, one per mass, with a message naming the list that has the wrong count.
+    pub fn bodies(&self) -> Result<Vec<collide::track::Body>> {
+        use collide::track::BodiesError;
+        collide::track::bodies(
+            &self.masses.0,
+            &self.positions.0,
+            &self.velocities.0,
+            self.sizes.as_ref().map(|s| s.0.as_slice()),
+        )
+        .map_err(|e| match e {
+            BodiesError::Miscount(m) => anyhow::anyhow!(
+                "--{} has {} values for {} masses: give one per body",
+                m.list,
+                m.got,
+                m.bodies
+            ),
+            BodiesError::Track(e) => e.into(),
+        })
     }
 }

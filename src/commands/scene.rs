@@ -3,8 +3,8 @@
 
 use anyhow::{Context, Result};
 use collide::report::scene::{self as report, Checked, Listed};
-use collide::report::{AnyReport, json, solved, track as track_report};
-use collide::scene::{About, AnyScene, Scene, SceneError, TrackScene};
+use collide::report::{AnyReport, contact as contact_report, json, solved, track as track_report};
+use collide::scene::{About, AnyScene, ContactScene, Scene, SceneError, TrackScene};
 use collide::table::sweep::Shard;
 use collide::track::TrackReport;
 
@@ -45,6 +45,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
             }),
             AnyScene::Case(scene) => checked.push(solve(scene)?),
             AnyScene::Track(scene) => checked.push(solve_track(scene)?),
+            AnyScene::Contact(scene) => checked.push(solve_contact(scene)?),
         }
     }
     let failed = checked.iter().any(Checked::failed);
@@ -85,6 +86,14 @@ fn solve_track(scene: TrackScene) -> Result<Checked> {
     let json =
         track_report::json(&result).with_context(|| format!("{}", scene.about.path.display()))?;
     let text = track_report::text(&scene.track, &result, scene.limits);
+    check(scene.about, text, json)
+}
+
+fn solve_contact(scene: ContactScene) -> Result<Checked> {
+    let at = || format!("{}", scene.about.path.display());
+    let run = collide::contact::simulate(&scene.setup, &scene.settings).with_context(at)?;
+    let json = contact_report::json(&run).with_context(at)?;
+    let text = contact_report::text(&scene.setup, &run);
     check(scene.about, text, json)
 }
 

@@ -7,32 +7,18 @@ use anyhow::{Context, Result};
 use collide::output::Output;
 use collide::report::{json, track as report};
 use collide::table::batch::InputFormat;
-use collide::track::{BodiesError, Event, Limits, Run, Track, TrackReport, bodies};
+use collide::track::{Event, Limits, Run, Track, TrackReport};
 
 use super::Outcome;
 use crate::cli::{Format, TrackArgs};
 
 pub fn run(args: TrackArgs) -> Result<Outcome> {
-    let bodies = bodies(
-        &args.masses.0,
-        &args.positions.0,
-        &args.velocities.0,
-        args.sizes.as_ref().map(|s| s.0.as_slice()),
-    )
-    .map_err(|e| match e {
-        BodiesError::Miscount(m) => anyhow::anyhow!(
-            "--{} has {} values for {} masses: give one per body",
-            m.list,
-            m.got,
-            m.bodies
-        ),
-        BodiesError::Track(e) => e.into(),
-    })?;
+    let bodies = args.layout.bodies()?;
     let e = args.restitution.value();
     let track = Track {
         bodies,
-        left_wall: args.left_wall.map(|x| x.value()),
-        right_wall: args.right_wall.map(|x| x.value()),
+        left_wall: args.layout.left_wall.map(|x| x.value()),
+        right_wall: args.layout.right_wall.map(|x| x.value()),
         e,
         e_wall: args.wall_restitution.map_or(e, |r| r.value()),
         gravity: args.gravity.value(),

@@ -7,6 +7,7 @@ pub mod spacetime;
 pub mod svg;
 pub mod term;
 pub mod velocity;
+pub mod work;
 
 use crate::case::Case;
 use crate::frame::Frame;

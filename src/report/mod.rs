@@ -3,6 +3,7 @@
 //! and the renderers of the other commands' results (frames, tables of methods, tracks, scenes).
 
 pub mod accuracy;
+pub mod contact;
 pub mod frames;
 pub mod json;
 pub mod pi;

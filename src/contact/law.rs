@@ -1,0 +1,99 @@
+//! Contact laws: the force with which two overlapping bodies (or a body and a wall) push apart,
+//! as a function of the overlap `d` and its rate `d'` (positive while they press together).
+//!
+//! - Linear (Kelvin-Voigt spring-dashpot): `F = k d + c d'`.
+//! - Hertz (elastic spheres): `F = k d^(3/2)`; with Hunt-Crossley damping
+//!   `F = k d^(3/2) (1 + chi d')` (K. H. Hunt, F. R. E. Crossley, "Coefficient of restitution
+//!   interpreted as damping in vibroimpact", J. Appl. Mech. 42 (1975) 440).
+//!
+//! A contact pushes only: it is active while `d > 0` and the force is positive, and it ends when
+//! the force reaches zero, possibly with the bodies still overlapping (T. Schwager, T. Poeschel,
+//! "Coefficient of restitution and linear-dashpot model revisited", Granular Matter 9 (2007)
+//! 465). [`Law::gate`] is positive exactly when the contact is active; its zeros are the events.
+
+/// A contact law with its constants.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Law {
+    /// `F = k d + c d'`.
+    Linear { k: f64, c: f64 },
+    /// `F = k d^(3/2) (1 + chi d')`; `chi = 0` is plain Hertz.
+    Hertz { k: f64, chi: f64 },
+}
+
+impl Law {
+    /// The force (positive: pushing apart) while the contact is active. `d` below 0 counts as 0
+    /// for Hertz, so the force is smooth where a step ends slightly past the touching point.
+    pub fn force(&self, d: f64, rate: f64) -> f64 {
+        match *self {
+            Law::Linear { k, c } => k * d + c * rate,
+            Law::Hertz { k, chi } => {
+                let d = d.max(0.0);
+                k * d * d.sqrt() * (1.0 + chi * rate)
+            }
+        }
+    }
+
+    /// `(dF/dd, dF/dd')`, for the Jacobian of implicit methods.
+    pub fn slopes(&self, d: f64, rate: f64) -> (f64, f64) {
+        match *self {
+            Law::Linear { k, c } => (k, c),
+            Law::Hertz { k, chi } => {
+                let d = d.max(0.0);
+                (
+                    1.5 * k * d.sqrt() * (1.0 + chi * rate),
+                    k * d * d.sqrt() * chi,
+                )
+            }
+        }
+    }
+
+    /// Positive exactly when the contact pushes: `min(d, F/k)` in length units for the linear law
+    /// (`d + (c/k) d'`), `min(d, d (1 + chi d'))` for Hertz.
+    pub fn gate(&self, d: f64, rate: f64) -> f64 {
+        match *self {
+            Law::Linear { k, c } => d.min(d + c / k * rate),
+            Law::Hertz { chi, .. } => d.min(d * (1.0 + chi * rate)),
+        }
+    }
+
+    /// The elastic energy stored at overlap `d`: `k d^2 / 2` or `2/5 k d^(5/2)`.
+    pub fn potential(&self, d: f64) -> f64 {
+        let d = d.max(0.0);
+        match *self {
+            Law::Linear { k, .. } => 0.5 * k * d * d,
+            Law::Hertz { k, .. } => 0.4 * k * d * d * d.sqrt(),
+        }
+    }
+
+    /// Whether the law dissipates energy.
+    pub fn damped(&self) -> bool {
+        match *self {
+            Law::Linear { c, .. } => c > 0.0,
+            Law::Hertz { chi, .. } => chi > 0.0,
+        }
+    }
+
+    /// The stiffness `k`.
+    pub fn k(&self) -> f64 {
+        match *self {
+            Law::Linear { k, .. } | Law::Hertz { k, .. } => k,
+        }
+    }
+
+    /// The fastest angular frequency of a contact with reduced mass `mu` hit at speed `v`: the
+    /// linear `sqrt(k/mu)`, or for Hertz the frequency of the stiffness `dF/dd` at the largest
+    /// overlap. Used to pick a method and to flag explicit steps past their stability limit.
+    pub fn frequency(&self, mu: f64, v: f64) -> f64 {
+        match *self {
+            Law::Linear { k, c } => {
+                let w0 = (k / mu).sqrt();
+                // Strong damping adds a fast decay rate c/mu.
+                w0.max(c / mu)
+            }
+            Law::Hertz { k, chi } => {
+                let d = super::closed::hertz_max_overlap(k, mu, v);
+                ((1.5 * k * d.sqrt() / mu).sqrt()).max(k * d * d.sqrt() * chi / mu)
+            }
+        }
+    }
+}

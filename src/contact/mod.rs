@@ -1,0 +1,898 @@
+//! Collisions in time: bodies on a track that push with a contact force while they overlap,
+//! integrated through each impact (`collide contact`), where `track` treats every collision as an
+//! instantaneous impulse.
+//!
+//! A single contact is not stiff: a larger stiffness only rescales its time. Stiffness needs two
+//! time scales at once (a soft contact pressed against a hard one, a stack on a stiff floor,
+//! Newton's cradle), and there the time-domain answer can differ from the sequential impulses of
+//! `track` even in the stiff limit, which the run shows beside it (`impulse_model`).
+//!
+//! - `law`: the contact forces; `closed`: the closed forms of a single contact;
+//! - `system`: the equations of motion; `fixed`: the fixed-step methods (ours);
+//!   `adaptive`: tsit45, bdf and sdirk (diffsol); `run`: the event-driven integration;
+//! - `work`: error against run time for each method.
+
+pub mod adaptive;
+pub mod closed;
+pub mod fixed;
+pub mod law;
+pub mod run;
+pub mod system;
+pub mod work;
+
+use serde::Serialize;
+
+use crate::track::{self, Body, Contact, Track};
+
+pub use adaptive::Adaptive;
+pub use fixed::{Counts, Fixed};
+pub use law::Law;
+pub use run::Failure;
+use system::{Slot, System};
+
+/// Which law, as asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, serde::Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum LawKind {
+    /// F = k d + c d' (Kelvin-Voigt spring-dashpot)
+    Linear,
+    /// F = k d^(3/2) (elastic spheres, no damping)
+    Hertz,
+    /// F = k d^(3/2) (1 + chi d') (Hertz with Hunt-Crossley damping)
+    HuntCrossley,
+}
+
+impl LawKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            LawKind::Linear => "linear",
+            LawKind::Hertz => "hertz",
+            LawKind::HuntCrossley => "hunt-crossley",
+        }
+    }
+}
+
+/// How the damping of a contact is given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Damping {
+    /// None: a purely elastic contact.
+    None,
+    /// The coefficient itself: `c` (linear) or `chi` (Hunt-Crossley).
+    Absolute(f64),
+    /// The damping ratio `zeta = c / (2 sqrt(k mu))` (linear).
+    Zeta(f64),
+    /// The restitution the contact must give (linear: `zeta` found from `e` exactly).
+    Restitution(f64),
+}
+
+/// A contact law as asked: kind, stiffness and damping.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Spec {
+    pub kind: LawKind,
+    pub k: f64,
+    pub damping: Damping,
+}
+
+impl Damping {
+    /// The damping given as at most one of a coefficient, a ratio or a restitution.
+    pub fn given(c: Option<f64>, zeta: Option<f64>, e: Option<f64>) -> Option<Damping> {
+        match (c, zeta, e) {
+            (Some(c), _, _) => Some(Damping::Absolute(c)),
+            (_, Some(z), _) => Some(Damping::Zeta(z)),
+            (_, _, Some(e)) => Some(Damping::Restitution(e)),
+            _ => None,
+        }
+    }
+}
+
+/// The laws as a user gives them: one kind; stiffness and damping between bodies; the walls'
+/// stiffness and damping, each defaulting to the bodies' values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Laws {
+    pub kind: LawKind,
+    pub k: f64,
+    pub damping: Option<Damping>,
+    pub wall_k: Option<f64>,
+    pub wall_damping: Option<Damping>,
+}
+
+impl Laws {
+    /// Between bodies, and at the walls.
+    pub fn specs(&self) -> (Spec, Spec) {
+        let law = Spec {
+            kind: self.kind,
+            k: self.k,
+            damping: self.damping.unwrap_or(Damping::None),
+        };
+        let wall = Spec {
+            kind: self.kind,
+            k: self.wall_k.unwrap_or(self.k),
+            damping: self.wall_damping.unwrap_or(law.damping),
+        };
+        (law, wall)
+    }
+}
+
+/// A layout and its contact laws.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Setup {
+    pub bodies: Vec<Body>,
+    pub left_wall: Option<f64>,
+    pub right_wall: Option<f64>,
+    /// Between bodies, and at the walls.
+    pub law: Spec,
+    pub wall: Spec,
+}
+
+/// A method, as asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    Fixed(Fixed),
+    Adaptive(Adaptive),
+}
+
+impl Method {
+    pub const ALL: [Method; 8] = [
+        Method::Fixed(Fixed::SymplecticEuler),
+        Method::Fixed(Fixed::Verlet),
+        Method::Fixed(Fixed::Rk4),
+        Method::Fixed(Fixed::ImplicitEuler),
+        Method::Fixed(Fixed::ImplicitMidpoint),
+        Method::Adaptive(Adaptive::Tsit45),
+        Method::Adaptive(Adaptive::Bdf),
+        Method::Adaptive(Adaptive::Sdirk),
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Fixed(Fixed::SymplecticEuler) => "symplectic-euler",
+            Method::Fixed(Fixed::Verlet) => "verlet",
+            Method::Fixed(Fixed::Rk4) => "rk4",
+            Method::Fixed(Fixed::ImplicitEuler) => "implicit-euler",
+            Method::Fixed(Fixed::ImplicitMidpoint) => "implicit-midpoint",
+            Method::Adaptive(Adaptive::Tsit45) => "tsit45",
+            Method::Adaptive(Adaptive::Bdf) => "bdf",
+            Method::Adaptive(Adaptive::Sdirk) => "sdirk",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == s)
+    }
+
+    pub fn implicit(self) -> bool {
+        matches!(
+            self,
+            Method::Fixed(Fixed::ImplicitEuler | Fixed::ImplicitMidpoint)
+                | Method::Adaptive(Adaptive::Bdf | Adaptive::Sdirk)
+        )
+    }
+}
+
+/// How to integrate: a method with its step or tolerance, when to stop, a cap on steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// `None`: `auto`.
+    pub method: Option<Method>,
+    pub dt: Option<f64>,
+    pub tol: Option<f64>,
+    pub until: Option<f64>,
+    pub max_steps: u64,
+    /// Record the history of every contact (for `--plot`).
+    pub trace: bool,
+}
+
+/// Default cap on steps (`--max-steps`).
+pub const DEFAULT_MAX_STEPS: u64 = 20_000_000;
+
+/// The default tolerance of the adaptive methods: final velocities within 1e-8 of the initial
+/// relative speed over a run of a few dozen contacts (`tests/contact.rs`).
+pub const AUTO_TOL: f64 = 1e-10;
+
+/// The default tolerance where a law is Hertzian: its force grows like d^(3/2) from the
+/// contact's start, a kink the error estimates see poorly (about 1e-8 of the energy per contact
+/// at 1e-10, 1e-10 at 1e-12, measured).
+pub const AUTO_TOL_HERTZ: f64 = 1e-12;
+
+/// Stiffness ratio (fastest over slowest contact frequency) above which `auto` picks an implicit
+/// method.
+pub const STIFF_RATIO: f64 = 100.0;
+
+/// Why a contact run cannot be made.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ContactError {
+    #[error(transparent)]
+    Track(#[from] track::TrackError),
+    #[error("{which}stiffness {k} must be a finite number > 0")]
+    Stiffness { which: &'static str, k: f64 },
+    #[error("{which}damping {value} must be a finite number >= 0")]
+    Damping { which: &'static str, value: f64 },
+    #[error(
+        "{which}restitution {e} cannot be reached by a linear contact: give a value in (0, 1] \
+         (e = 0, sticking, would need infinite damping)"
+    )]
+    Restitution { which: &'static str, e: f64 },
+    #[error("{which}{kind} contacts take no --zeta or -e: {why}")]
+    NotForLaw {
+        which: &'static str,
+        kind: &'static str,
+        why: &'static str,
+    },
+    #[error("bodies {0} and {next} overlap at the start: start them touching or apart", next = .0 + 1)]
+    Overlap(usize),
+    #[error("--dt {0} must be a finite number > 0")]
+    Dt(f64),
+    #[error("--tol {0} must be a number in [1e-14, 0.1]")]
+    Tol(f64),
+    #[error(
+        "--dt is for the fixed-step methods and --tol for the adaptive ones; {0} takes the other"
+    )]
+    WrongStep(&'static str),
+    #[error(
+        "{method} with --dt {dt} is unstable on the stiffest contact ({who}: omega dt = {wh:.3} > \
+         {limit:.3}); use --dt below {safe:.3e} or an implicit method (implicit-euler, \
+         implicit-midpoint, bdf, sdirk)"
+    )]
+    Unstable {
+        method: &'static str,
+        dt: f64,
+        who: String,
+        wh: f64,
+        limit: f64,
+        safe: f64,
+    },
+    #[error("{method} failed: {failure}")]
+    Failed {
+        method: &'static str,
+        failure: Failure,
+    },
+    #[error(
+        "{method} gained energy: {end} at the end against {start} at the start ({gain:.3e} \
+         relative) though no contact law can create any; the result is not printed (use a \
+         smaller --dt or --tol)"
+    )]
+    EnergyGain {
+        method: &'static str,
+        start: f64,
+        end: f64,
+        gain: f64,
+    },
+}
+
+/// One contact from its start to its end.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ContactRecord {
+    /// Bodies, 1-based, or "left"/"right" for a wall.
+    pub between: [serde_json::Value; 2],
+    pub start: f64,
+    /// `None` while still active at the end of the run (`--until`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub duration: Option<f64>,
+    pub max_overlap: f64,
+    /// Approach speed at the start.
+    pub speed: f64,
+    /// `-(rate of overlap at the end) / (rate at the start)`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
+    #[serde(skip)]
+    pub slot: usize,
+}
+
+/// The energy at the start and the end, and what the contacts dissipated (never negative).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct EnergyBudget {
+    pub start: f64,
+    pub end: f64,
+    pub dissipated: f64,
+}
+
+/// What `collide track` gives for the same layout with the calibrated restitutions.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ImpulseModel {
+    pub e: f64,
+    pub e_wall: f64,
+    pub v: Vec<f64>,
+    pub collisions: u64,
+}
+
+/// A finished run.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ContactRun {
+    pub law: &'static str,
+    pub method: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tol: Option<f64>,
+    pub time: f64,
+    pub x: Vec<f64>,
+    pub v: Vec<f64>,
+    pub contacts: Vec<ContactRecord>,
+    pub energy: EnergyBudget,
+    pub stats: Counts,
+    /// `None` where restitution depends on the impact speed (Hunt-Crossley) or differs between
+    /// pairs.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impulse_model: Option<ImpulseModel>,
+    /// Why the run ended: "done" (no contact active and none can begin) or "until".
+    pub stop: &'static str,
+    /// Overlap and force of the active contacts after every step, when asked
+    /// (`Settings::trace`).
+    #[serde(skip)]
+    pub history: Vec<run::Sample>,
+}
+
+impl Setup {
+    /// Bodies between optional walls, with the laws as given.
+    pub fn new(
+        bodies: Vec<Body>,
+        (left_wall, right_wall): (Option<f64>, Option<f64>),
+        laws: Laws,
+    ) -> Setup {
+        let (law, wall) = laws.specs();
+        Setup {
+            bodies,
+            left_wall,
+            right_wall,
+            law,
+            wall,
+        }
+    }
+
+    fn track(&self) -> Track {
+        Track {
+            bodies: self.bodies.clone(),
+            left_wall: self.left_wall,
+            right_wall: self.right_wall,
+            e: 1.0,
+            e_wall: 1.0,
+            gravity: 0.0,
+        }
+    }
+
+    fn masses(&self) -> Vec<f64> {
+        self.bodies.iter().map(|b| b.m.value()).collect()
+    }
+
+    /// The possible contacts: left wall, neighbouring pairs, right wall.
+    pub fn contacts(&self) -> Vec<Contact> {
+        let n = self.bodies.len();
+        let mut out = Vec::new();
+        if self.left_wall.is_some() {
+            out.push(Contact::LeftWall);
+        }
+        out.extend((0..n.saturating_sub(1)).map(Contact::Pair));
+        if self.right_wall.is_some() {
+            out.push(Contact::RightWall);
+        }
+        out
+    }
+
+    /// Checks the layout (as `collide track`) and the laws, and resolves each slot's law.
+    pub fn slots(&self) -> Result<Vec<Slot>, ContactError> {
+        self.track().check()?;
+        let m = self.masses();
+        self.contacts()
+            .into_iter()
+            .map(|who| {
+                let (spec, which, mu) = match who {
+                    Contact::Pair(i) => (self.law, "", m[i] * m[i + 1] / (m[i] + m[i + 1])),
+                    Contact::LeftWall => (self.wall, "wall ", m[0]),
+                    Contact::RightWall => (self.wall, "wall ", m[m.len() - 1]),
+                };
+                Ok(Slot {
+                    who,
+                    law: resolve(spec, mu, which)?,
+                    mu,
+                })
+            })
+            .collect()
+    }
+
+    /// The overlap of slot `who` at positions `x`.
+    fn overlap(&self, who: Contact, x: &[f64]) -> f64 {
+        let s = |i: usize| self.bodies[i].size;
+        match who {
+            Contact::LeftWall => self.left_wall.unwrap_or(f64::NEG_INFINITY) - (x[0] - s(0) / 2.0),
+            Contact::Pair(i) => (s(i) + s(i + 1)) / 2.0 - (x[i + 1] - x[i]),
+            Contact::RightWall => {
+                let n = x.len() - 1;
+                x[n] + s(n) / 2.0 - self.right_wall.unwrap_or(f64::INFINITY)
+            }
+        }
+    }
+
+    /// The largest relative speed at the start: between any two bodies, or a body and a wall.
+    pub fn speed_scale(&self) -> f64 {
+        let v: Vec<f64> = self.bodies.iter().map(|b| b.v).collect();
+        let hi = v.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b));
+        let lo = v.iter().fold(f64::INFINITY, |a, b| a.min(*b));
+        let mut s = hi - lo;
+        if self.left_wall.is_some() || self.right_wall.is_some() {
+            s = s.max(hi.abs()).max(lo.abs());
+        }
+        s
+    }
+}
+
+/// The law of one slot from its spec and reduced mass.
+fn resolve(spec: Spec, mu: f64, which: &'static str) -> Result<Law, ContactError> {
+    if !(spec.k > 0.0 && spec.k.is_finite()) {
+        return Err(ContactError::Stiffness { which, k: spec.k });
+    }
+    let k = spec.k;
+    let check = |value: f64| {
+        if value >= 0.0 && value.is_finite() {
+            Ok(value)
+        } else {
+            Err(ContactError::Damping { which, value })
+        }
+    };
+    Ok(match (spec.kind, spec.damping) {
+        (LawKind::Linear, Damping::None) => Law::Linear { k, c: 0.0 },
+        (LawKind::Linear, Damping::Absolute(c)) => Law::Linear { k, c: check(c)? },
+        (LawKind::Linear, Damping::Zeta(z)) => Law::Linear {
+            k,
+            c: closed::Linear::damping(k, mu, check(z)?),
+        },
+        (LawKind::Linear, Damping::Restitution(e)) => {
+            let z = closed::Linear::zeta_for(e).ok_or(ContactError::Restitution { which, e })?;
+            Law::Linear {
+                k,
+                c: closed::Linear::damping(k, mu, z),
+            }
+        }
+        (LawKind::Hertz, Damping::None) => Law::Hertz { k, chi: 0.0 },
+        (LawKind::Hertz, Damping::Absolute(0.0)) => Law::Hertz { k, chi: 0.0 },
+        (LawKind::Hertz, _) => {
+            return Err(ContactError::NotForLaw {
+                which,
+                kind: "hertz",
+                why: "they are elastic (e = 1); use --law hunt-crossley --damping CHI for damping",
+            });
+        }
+        (LawKind::HuntCrossley, Damping::None) => Law::Hertz { k, chi: 0.0 },
+        (LawKind::HuntCrossley, Damping::Absolute(chi)) => Law::Hertz {
+            k,
+            chi: check(chi)?,
+        },
+        (LawKind::HuntCrossley, _) => {
+            return Err(ContactError::NotForLaw {
+                which,
+                kind: "hunt-crossley",
+                why: "their restitution depends on the impact speed; give --damping CHI (1/speed)",
+            });
+        }
+    })
+}
+
+/// Runs `setup` with `settings`.
+pub fn simulate(setup: &Setup, settings: &Settings) -> Result<ContactRun, ContactError> {
+    let slots = setup.slots()?;
+    let x0: Vec<f64> = setup.bodies.iter().map(|b| b.x).collect();
+    for slot in &slots {
+        if let Contact::Pair(i) = slot.who
+            && setup.overlap(slot.who, &x0) > 0.0
+        {
+            return Err(ContactError::Overlap(i + 1));
+        }
+    }
+    let scales = Scales::of(setup, &slots);
+    let method = settings.method.unwrap_or(scales.auto());
+    let (dt, tol) = steps_for(method, settings, &scales)?;
+    if let (Method::Fixed(f), Some(dt)) = (method, dt)
+        && let Some(limit) = f.stability_limit()
+        && let Some((who, w)) = scales.fastest(setup)
+        && w * dt > limit
+    {
+        return Err(ContactError::Unstable {
+            method: method.name(),
+            dt,
+            who,
+            wh: w * dt,
+            limit,
+            safe: limit / w,
+        });
+    }
+    let mut run = integrate(setup, &slots, &scales, method, dt, tol, settings)?;
+    run.impulse_model = impulse_model(setup, &slots, settings.until)?;
+    Ok(run)
+}
+
+/// Time, length and speed scales of a setup, for tolerances, default steps and `auto`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scales {
+    /// Largest initial relative speed.
+    pub speed: f64,
+    /// Per slot: angular frequency at that speed.
+    pub omega: Vec<f64>,
+    /// Smallest deepest overlap over the slots at that speed.
+    pub overlap: f64,
+    /// Shortest and longest contact time.
+    pub t_min: f64,
+    pub t_max: f64,
+    /// [`AUTO_TOL`], or [`AUTO_TOL_HERTZ`] where any law is Hertzian.
+    pub default_tol: f64,
+}
+
+impl Scales {
+    pub fn of(setup: &Setup, slots: &[Slot]) -> Scales {
+        let speed = setup.speed_scale();
+        let v = if speed > 0.0 { speed } else { 1.0 };
+        let omega: Vec<f64> = slots.iter().map(|s| s.law.frequency(s.mu, v)).collect();
+        let overlap = slots
+            .iter()
+            .map(|s| match s.law {
+                Law::Linear { k, .. } => v / (k / s.mu).sqrt(),
+                Law::Hertz { k, .. } => closed::hertz_max_overlap(k, s.mu, v),
+            })
+            .fold(f64::INFINITY, f64::min);
+        let times: Vec<f64> = omega.iter().map(|w| std::f64::consts::PI / w).collect();
+        Scales {
+            speed,
+            t_min: times.iter().copied().fold(f64::INFINITY, f64::min),
+            t_max: times.iter().copied().fold(0.0, f64::max),
+            omega,
+            overlap,
+            default_tol: if slots.iter().any(|s| matches!(s.law, Law::Hertz { .. })) {
+                AUTO_TOL_HERTZ
+            } else {
+                AUTO_TOL
+            },
+        }
+    }
+
+    /// Fastest over slowest contact frequency.
+    pub fn stiffness_ratio(&self) -> f64 {
+        let hi = self.omega.iter().copied().fold(0.0, f64::max);
+        let lo = self.omega.iter().copied().fold(f64::INFINITY, f64::min);
+        if lo > 0.0 && lo.is_finite() {
+            hi / lo
+        } else {
+            1.0
+        }
+    }
+
+    /// `auto`: bdf where two time scales differ by more than [`STIFF_RATIO`], else tsit45.
+    pub fn auto(&self) -> Method {
+        if self.stiffness_ratio() > STIFF_RATIO {
+            Method::Adaptive(Adaptive::Bdf)
+        } else {
+            Method::Adaptive(Adaptive::Tsit45)
+        }
+    }
+
+    /// The stiffest slot, named, and its frequency.
+    fn fastest(&self, setup: &Setup) -> Option<(String, f64)> {
+        let contacts = setup.contacts();
+        let (i, w) = self
+            .omega
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))?;
+        Some((contacts[i].describe(setup.bodies.len()), *w))
+    }
+}
+
+/// The step (fixed) or tolerance (adaptive) to use.
+fn steps_for(
+    method: Method,
+    settings: &Settings,
+    scales: &Scales,
+) -> Result<(Option<f64>, Option<f64>), ContactError> {
+    match method {
+        Method::Fixed(_) => {
+            if settings.tol.is_some() {
+                return Err(ContactError::WrongStep(method.name()));
+            }
+            // Explicit methods need steps under their stability limit on the stiffest contact;
+            // implicit ones only need to resolve the slowest.
+            let dt = settings.dt.unwrap_or(if method.implicit() {
+                scales.t_max / 1000.0
+            } else {
+                scales.t_min / 64.0
+            });
+            if !(dt > 0.0 && dt.is_finite()) {
+                return Err(ContactError::Dt(dt));
+            }
+            Ok((Some(dt), None))
+        }
+        Method::Adaptive(_) => {
+            if settings.dt.is_some() {
+                return Err(ContactError::WrongStep(method.name()));
+            }
+            let tol = settings.tol.unwrap_or(scales.default_tol);
+            if !(1e-14..=0.1).contains(&tol) {
+                return Err(ContactError::Tol(tol));
+            }
+            Ok((None, Some(tol)))
+        }
+    }
+}
+
+/// An open contact: when it began and how fast.
+struct Open {
+    start: f64,
+    speed: f64,
+}
+
+fn between(who: Contact, n: usize) -> [serde_json::Value; 2] {
+    use serde_json::json;
+    match who {
+        Contact::LeftWall => [json!("left"), json!(1)],
+        Contact::Pair(i) => [json!(i + 1), json!(i + 2)],
+        Contact::RightWall => [json!(n), json!("right")],
+    }
+}
+
+/// The event-driven integration (see `run`).
+fn integrate(
+    setup: &Setup,
+    slots: &[Slot],
+    scales: &Scales,
+    method: Method,
+    dt: Option<f64>,
+    tol: Option<f64>,
+    settings: &Settings,
+) -> Result<ContactRun, ContactError> {
+    let n = setup.bodies.len();
+    let m = setup.masses();
+    let mut x: Vec<f64> = setup.bodies.iter().map(|b| b.x).collect();
+    let mut v: Vec<f64> = setup.bodies.iter().map(|b| b.v).collect();
+    let mut t = 0.0f64;
+    let until = settings.until.unwrap_or(f64::INFINITY);
+    let mut active = vec![false; slots.len()];
+    let mut open: Vec<Option<Open>> = (0..slots.len()).map(|_| None).collect();
+    let mut closed = vec![false; slots.len()];
+    let mut records: Vec<ContactRecord> = Vec::new();
+    let kinetic = |v: &[f64]| -> f64 { m.iter().zip(v).map(|(m, v)| 0.5 * (m * v) * v).sum() };
+    let e_start = kinetic(&v);
+    let mut ledger = run::Ledger {
+        counts: Counts::default(),
+        steps_left: settings.max_steps,
+        peaks: vec![0.0; slots.len()],
+        energy_cap: 2.0 * e_start.max(f64::MIN_POSITIVE),
+        trace: settings.trace.then(Vec::new),
+    };
+    let fail = |failure: Failure| ContactError::Failed {
+        method: method.name(),
+        failure: match failure {
+            Failure::Steps(_) => Failure::Steps(settings.max_steps),
+            f => f,
+        },
+    };
+    let system = |active: &[bool], x: &[f64]| System {
+        m: m.clone(),
+        slots: slots.to_vec(),
+        active: active.to_vec(),
+        d0: slots.iter().map(|s| setup.overlap(s.who, x)).collect(),
+    };
+    let tolerances = tol.map(|tol| adaptive::Tolerances {
+        rtol: tol,
+        atol_u: tol * scales.overlap,
+        atol_v: tol * scales.speed.max(f64::MIN_POSITIVE),
+        h0: scales.t_min * 1e-3,
+    });
+    let stop;
+    loop {
+        if !active.iter().any(|a| *a) {
+            // Free flight: exact, to the first contact that begins.
+            let sys = system(&active, &x);
+            let mut y = vec![0.0; 2 * n];
+            y[n..].copy_from_slice(&v);
+            let mut next: Option<(f64, usize)> = None;
+            for (s, &was_closed) in closed.iter().enumerate() {
+                let (d, rate) = sys.overlap(s, &y);
+                // In free flight a gate only falls while the pair separates (rate <= 0), so a
+                // positive one is either the starting overlap or a closing's rounding: a closed
+                // contact reopens only on approach (else it would chatter at its end).
+                let wait = if sys.gate(s, &y) > 0.0 && (rate > 0.0 || !was_closed) {
+                    0.0
+                } else if rate > 0.0 && d <= 0.0 {
+                    -d / rate
+                } else {
+                    continue;
+                };
+                if next.is_none_or(|(w, _)| wait < w) {
+                    next = Some((wait, s));
+                }
+            }
+            let Some((wait, s)) = next.filter(|(w, _)| t + w <= until) else {
+                if until.is_finite() {
+                    for i in 0..n {
+                        x[i] += v[i] * (until - t);
+                    }
+                    t = until;
+                }
+                stop = if next.is_some() { "until" } else { "done" };
+                break;
+            };
+            for i in 0..n {
+                x[i] += v[i] * wait;
+            }
+            t += wait;
+            let (_, rate) = system(&active, &x).overlap(s, &y);
+            active[s] = true;
+            ledger.peaks[s] = 0.0;
+            open[s] = Some(Open {
+                start: t,
+                speed: rate,
+            });
+            continue;
+        }
+        let sys = system(&active, &x);
+        let mut y0 = vec![0.0; 2 * n];
+        y0[n..].copy_from_slice(&v);
+        let end = match (method, dt, tolerances) {
+            (Method::Fixed(f), Some(h), _) => {
+                run::fixed_stretch((f, h), &sys, (t, &y0), until, &mut ledger)
+            }
+            (Method::Adaptive(a), _, Some(tol)) => {
+                adaptive::stretch((a, tol), &sys, (t, &y0), until, &mut ledger)
+            }
+            _ => unreachable!("steps_for gives a step to fixed methods and a tolerance otherwise"),
+        }
+        .map_err(fail)?;
+        for (xi, u) in x.iter_mut().zip(&end.y[..n]) {
+            *xi += u;
+        }
+        v.copy_from_slice(&end.y[n..]);
+        t = end.t;
+        through(setup, &x, t).map_err(fail)?;
+        let Some(s) = end.event else {
+            stop = "until";
+            break;
+        };
+        // The event's slot changes, and so does any other whose gate crossed at the same
+        // instant (symmetric impacts end together; a crossing left for later would start the
+        // next stretch on the wrong side and never be seen).
+        for p in 0..slots.len() {
+            if p != s && (sys.gate(p, &end.y) > 0.0) == active[p] {
+                continue;
+            }
+            let (_, rate) = sys.overlap(p, &end.y);
+            if active[p] {
+                active[p] = false;
+                closed[p] = true;
+                let o = open[p].take().expect("an active contact is open");
+                records.push(ContactRecord {
+                    between: between(slots[p].who, n),
+                    start: o.start,
+                    duration: Some(t - o.start),
+                    max_overlap: ledger.peaks[p],
+                    speed: o.speed,
+                    // A contact that began without an impact (pressed by another) has no
+                    // restitution.
+                    restitution: (o.speed > 1e-8 * scales.speed).then(|| -rate / o.speed),
+                    slot: p,
+                });
+            } else {
+                active[p] = true;
+                ledger.peaks[p] = 0.0;
+                open[p] = Some(Open {
+                    start: t,
+                    speed: rate,
+                });
+            }
+        }
+    }
+    // Contacts still active at --until.
+    for s in 0..slots.len() {
+        if let Some(o) = open[s].take() {
+            records.push(ContactRecord {
+                between: between(slots[s].who, n),
+                start: o.start,
+                duration: None,
+                max_overlap: ledger.peaks[s],
+                speed: o.speed,
+                restitution: None,
+                slot: s,
+            });
+        }
+    }
+    records.sort_by(|a, b| a.start.total_cmp(&b.start));
+    let sys = system(&active, &x);
+    let mut y = vec![0.0; 2 * n];
+    y[n..].copy_from_slice(&v);
+    let e_end = sys.energy(&y);
+    let gain = (e_end - e_start) / e_start.max(f64::MIN_POSITIVE);
+    if gain > 1e-6 {
+        return Err(ContactError::EnergyGain {
+            method: method.name(),
+            start: e_start,
+            end: e_end,
+            gain,
+        });
+    }
+    Ok(ContactRun {
+        law: setup.law.kind.name(),
+        method: method.name(),
+        dt,
+        tol,
+        time: t,
+        x,
+        v,
+        contacts: records,
+        energy: EnergyBudget {
+            start: e_start,
+            end: e_end,
+            dissipated: (e_start - e_end).max(0.0),
+        },
+        stats: ledger.counts,
+        impulse_model: None,
+        stop,
+        history: ledger.trace.unwrap_or_default(),
+    })
+}
+
+/// Bodies whose centres crossed (or crossed a wall) went through each other.
+fn through(setup: &Setup, x: &[f64], t: f64) -> Result<(), Failure> {
+    for i in 1..x.len() {
+        if x[i] <= x[i - 1] {
+            return Err(Failure::Through {
+                t,
+                what: format!("the centres of bodies {i} and {} crossed", i + 1),
+            });
+        }
+    }
+    if let Some(l) = setup.left_wall
+        && x[0] <= l
+    {
+        return Err(Failure::Through {
+            t,
+            what: "the centre of body 1 reached the left wall".into(),
+        });
+    }
+    if let Some(r) = setup.right_wall
+        && x[x.len() - 1] >= r
+    {
+        return Err(Failure::Through {
+            t,
+            what: format!("the centre of body {} reached the right wall", x.len()),
+        });
+    }
+    Ok(())
+}
+
+/// `collide track` on the same layout with the restitutions the contact laws give, where they do
+/// not depend on the impact speed and are the same for every pair (and for both walls).
+fn impulse_model(
+    setup: &Setup,
+    slots: &[Slot],
+    until: Option<f64>,
+) -> Result<Option<ImpulseModel>, ContactError> {
+    let e_of = |s: &Slot| match s.law {
+        Law::Linear { k, c } => Some(closed::Linear::new(k, c, s.mu).restitution()),
+        Law::Hertz { chi, .. } => (chi == 0.0).then_some(1.0),
+    };
+    let mut pair: Option<f64> = None;
+    let mut wall: Option<f64> = None;
+    for s in slots {
+        let Some(e) = e_of(s) else { return Ok(None) };
+        let which = if matches!(s.who, Contact::Pair(_)) {
+            &mut pair
+        } else {
+            &mut wall
+        };
+        match which {
+            Some(prev) if (*prev - e).abs() > 1e-12 * e.max(*prev) => return Ok(None),
+            _ => *which = Some(e),
+        }
+    }
+    let mut track = setup.track();
+    track.e = pair.unwrap_or(1.0);
+    track.e_wall = wall.unwrap_or(track.e);
+    let limits = track::Limits {
+        until,
+        max_collisions: 10_000_000,
+    };
+    let Ok(run) = track.run(limits, None) else {
+        return Ok(None);
+    };
+    Ok(Some(ImpulseModel {
+        e: track.e,
+        e_wall: track.e_wall,
+        v: run.v,
+        collisions: run.collisions,
+    }))
+}

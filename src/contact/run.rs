@@ -1,0 +1,281 @@
+//! The event-driven integration shared by every method: exact free flight while no contact is
+//! active, one integrator stretch per set of active contacts, and every opening and closing of a
+//! contact found as a root of its gate (`Law::gate`) between two steps, never stepped over.
+//!
+//! A stretch asks its integrator for steps (`Ask::Step`) and for states inside the last step
+//! (`Ask::At`: dense output for the adaptive methods, a partial step from the step's start for
+//! the fixed ones). A gate that changes sign across a step is located by the Illinois variant of
+//! regula falsi to a few ulps of time, on the side where the contact has already changed, and the
+//! stretch ends there; the deepest overlap of each active contact is located the same way, as
+//! the zero of the overlap rate.
+
+use super::fixed::{Counts, Fixed};
+use super::system::System;
+
+/// What a stretch asks of its integrator.
+pub enum Ask {
+    /// Take the next step; answer the new time and state.
+    Step,
+    /// The state at this time, inside the last step.
+    At(f64),
+}
+
+/// Why an integration cannot go on: the method failed or became unstable.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum Failure {
+    #[error("the state became infinite or NaN at t = {t}")]
+    NotFinite { t: f64 },
+    #[error(
+        "the energy grew to {ratio:.3e} times its start at t = {t} (the method is unstable at this step size)"
+    )]
+    Blowup { t: f64, ratio: f64 },
+    #[error("Newton's iteration did not converge at t = {t}")]
+    Newton { t: f64 },
+    #[error("the solver failed at t = {t}: {why}")]
+    Solver { t: f64, why: String },
+    #[error(
+        "more than {0} steps (raise --max-steps, or use a larger --dt / --tol or an implicit method)"
+    )]
+    Steps(u64),
+    #[error("{what} at t = {t}: the bodies passed through each other or a wall")]
+    Through { t: f64, what: String },
+}
+
+/// What a run keeps across its stretches: work, the step budget, the deepest overlap of each
+/// slot, the energy above which a run has blown up, and (when asked) the history of forces.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Ledger {
+    pub counts: Counts,
+    pub steps_left: u64,
+    pub peaks: Vec<f64>,
+    pub energy_cap: f64,
+    /// `Some` to record `(t, slot, overlap, force)` of the active contacts after every step.
+    pub trace: Option<Vec<Sample>>,
+}
+
+/// One point of a contact's history.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    pub t: f64,
+    pub slot: usize,
+    pub overlap: f64,
+    pub force: f64,
+}
+
+/// Most samples kept; beyond it every other one is dropped (and only every second step kept).
+const TRACE_CAP: usize = 100_000;
+
+impl Ledger {
+    fn record(&mut self, sys: &System, t: f64, y: &[f64]) {
+        let Some(trace) = &mut self.trace else {
+            return;
+        };
+        if trace.len() >= TRACE_CAP {
+            let mut i = 0;
+            trace.retain(|_| {
+                i += 1;
+                i % 2 == 0
+            });
+        }
+        for s in (0..sys.slots.len()).filter(|&s| sys.active[s]) {
+            let (d, rate) = sys.overlap(s, y);
+            trace.push(Sample {
+                t,
+                slot: s,
+                overlap: d,
+                force: sys.slots[s].law.force(d, rate),
+            });
+        }
+    }
+}
+
+/// How a stretch ended: at an event of slot `event`, or at the stop time.
+pub struct End {
+    pub t: f64,
+    pub y: Vec<f64>,
+    pub event: Option<usize>,
+}
+
+/// Finds where `f` changes side between `a` (old side, value `fa`) and `b` (new side, `fb`):
+/// Illinois regula falsi, ending on the new side within a few ulps of the crossing.
+fn locate(
+    f: &mut dyn FnMut(f64) -> Result<f64, Failure>,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+    new_side: &dyn Fn(f64) -> bool,
+) -> Result<f64, Failure> {
+    let mut last = 0i8;
+    for _ in 0..200 {
+        if b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs()) + f64::MIN_POSITIVE {
+            break;
+        }
+        let mut c = b - fb * (b - a) / (fb - fa);
+        if !(c > a && c < b) {
+            c = 0.5 * (a + b);
+        }
+        if c <= a || c >= b {
+            break;
+        }
+        let fc = f(c)?;
+        if new_side(fc) {
+            b = c;
+            fb = fc;
+            if last == 1 {
+                fa *= 0.5;
+            }
+            last = 1;
+        } else {
+            a = c;
+            fa = fc;
+            if last == -1 {
+                fb *= 0.5;
+            }
+            last = -1;
+        }
+    }
+    Ok(b)
+}
+
+/// Integrates one stretch (fixed set of active contacts) from `(t0, y0)` until a contact opens
+/// or closes, or `t_stop`. Records the deepest overlap of each active slot in `peaks`.
+pub fn segment(
+    drive: &mut dyn FnMut(Ask) -> Result<(f64, Vec<f64>), Failure>,
+    sys: &System,
+    (t0, y0): (f64, &[f64]),
+    t_stop: f64,
+    ledger: &mut Ledger,
+) -> Result<End, Failure> {
+    let slots = sys.slots.len();
+    let agrees = |s: usize, g: f64| (g > 0.0) == sys.active[s];
+    let (mut ta, mut ya) = (t0, y0.to_vec());
+    let mut ga: Vec<f64> = (0..slots).map(|s| sys.gate(s, &ya)).collect();
+    // A slot on the wrong side at the start (a contact opened at an overlap of -0 by rounding,
+    // or one whose end came at the same instant as another's) counts as just on its own side,
+    // so that its next crossing (at once, for the second) is found.
+    for (s, g) in ga.iter_mut().enumerate() {
+        if !agrees(s, *g) {
+            *g = if sys.active[s] {
+                f64::MIN_POSITIVE
+            } else {
+                0.0
+            };
+        }
+    }
+    ledger.record(sys, ta, &ya);
+    loop {
+        if ta >= t_stop {
+            return Ok(End {
+                t: ta,
+                y: ya,
+                event: None,
+            });
+        }
+        if ledger.steps_left == 0 {
+            return Err(Failure::Steps(0));
+        }
+        ledger.steps_left -= 1;
+        let (tb, yb) = drive(Ask::Step)?;
+        if !tb.is_finite() || yb.iter().any(|q| !q.is_finite()) {
+            return Err(Failure::NotFinite { t: tb });
+        }
+        let e = sys.energy(&yb);
+        if e > ledger.energy_cap {
+            return Err(Failure::Blowup {
+                t: tb,
+                ratio: e / (ledger.energy_cap / 2.0),
+            });
+        }
+        let gb: Vec<f64> = (0..slots).map(|s| sys.gate(s, &yb)).collect();
+        let mut first: Option<(f64, usize)> = None;
+        for s in 0..slots {
+            if agrees(s, ga[s]) && !agrees(s, gb[s]) {
+                let mut f = |t: f64| -> Result<f64, Failure> {
+                    let (_, y) = drive(Ask::At(t))?;
+                    Ok(sys.gate(s, &y))
+                };
+                let t = locate(&mut f, (ta, ga[s]), (tb, gb[s]), &|g| !agrees(s, g))?;
+                if first.is_none_or(|(t0, _)| t < t0) {
+                    first = Some((t, s));
+                }
+            }
+        }
+        let t_end = first.map_or(tb, |(t, _)| t);
+        for s in (0..slots).filter(|&s| sys.active[s]) {
+            let (_, ra) = sys.overlap(s, &ya);
+            let (_, rb) = sys.overlap(s, &yb);
+            if ra > 0.0 && rb <= 0.0 {
+                let mut f = |t: f64| -> Result<f64, Failure> {
+                    let (_, y) = drive(Ask::At(t))?;
+                    Ok(sys.overlap(s, &y).1)
+                };
+                let tp = locate(&mut f, (ta, ra), (tb, rb), &|r| r <= 0.0)?;
+                if tp <= t_end {
+                    let (_, y) = drive(Ask::At(tp))?;
+                    ledger.peaks[s] = ledger.peaks[s].max(sys.overlap(s, &y).0);
+                }
+            }
+        }
+        if let Some((t, s)) = first {
+            let (_, y) = drive(Ask::At(t))?;
+            for p in (0..slots).filter(|&p| sys.active[p]) {
+                ledger.peaks[p] = ledger.peaks[p].max(sys.overlap(p, &y).0);
+            }
+            ledger.record(sys, t, &y);
+            return Ok(End {
+                t,
+                y,
+                event: Some(s),
+            });
+        }
+        for p in (0..slots).filter(|&p| sys.active[p]) {
+            ledger.peaks[p] = ledger.peaks[p].max(sys.overlap(p, &yb).0);
+        }
+        ledger.record(sys, tb, &yb);
+        (ta, ya, ga) = (tb, yb, gb);
+    }
+}
+
+/// Integrates one stretch with a fixed-step method of step `h` (the last step is cut to land
+/// on `t_stop`; events cut a step, and the next stretch starts a fresh grid there).
+pub fn fixed_stretch(
+    (method, h): (Fixed, f64),
+    sys: &System,
+    (t0, y0): (f64, &[f64]),
+    t_stop: f64,
+    ledger: &mut Ledger,
+) -> Result<End, Failure> {
+    let mut counts = ledger.counts;
+    let (mut t_prev, mut y_prev) = (t0, y0.to_vec());
+    let (mut t, mut y) = (t0, y0.to_vec());
+    let mut out = vec![0.0; y0.len()];
+    let mut drive = |ask: Ask| -> Result<(f64, Vec<f64>), Failure> {
+        match ask {
+            Ask::Step => {
+                t_prev = t;
+                y_prev.copy_from_slice(&y);
+                let (step, next) = if t_stop - t <= h {
+                    (t_stop - t, t_stop)
+                } else {
+                    (h, t + h)
+                };
+                method
+                    .step(sys, &y_prev, step, &mut y, &mut counts)
+                    .map_err(|_| Failure::Newton { t })?;
+                t = next;
+                Ok((t, y.clone()))
+            }
+            Ask::At(at) => {
+                let mut scratch = Counts::default();
+                method
+                    .step(sys, &y_prev, at - t_prev, &mut out, &mut scratch)
+                    .map_err(|_| Failure::Newton { t: at })?;
+                counts.rhs_evals += scratch.rhs_evals;
+                counts.jacobians += scratch.jacobians;
+                Ok((at, out.clone()))
+            }
+        }
+    };
+    let end = segment(&mut drive, sys, (t0, y0), t_stop, ledger);
+    ledger.counts = counts;
+    end
+}
