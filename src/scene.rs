@@ -602,22 +602,32 @@ impl TrackScene {
         limits
             .check()
             .map_err(|e| err(None, format!("[track] {e}")))?;
-        let known = |top: &str| {
-            if TRACK_KEYS.contains(&top) {
-                Ok(())
-            } else {
-                Err(ExpectError::UnknownQuantity {
-                    top: top.to_string(),
-                    expected: TRACK_KEYS.join(", "),
-                })
-            }
-        };
-        let about = About::new((path, text), file.title, file.source, file.expect, known)?;
+        let about = About::new(
+            (path, text),
+            file.title,
+            file.source,
+            file.expect,
+            among(&TRACK_KEYS),
+        )?;
         Ok(TrackScene {
             about,
             track,
             limits,
         })
+    }
+}
+
+/// `[expect]` keys of a report whose top-level keys are `keys`.
+fn among(keys: &'static [&'static str]) -> impl Fn(&str) -> Result<(), ExpectError> {
+    move |top| {
+        if keys.contains(&top) {
+            Ok(())
+        } else {
+            Err(ExpectError::UnknownQuantity {
+                top: top.to_string(),
+                expected: keys.join(", "),
+            })
+        }
     }
 }
 
@@ -781,17 +791,13 @@ impl ContactScene {
             max_steps: t.max_steps.unwrap_or(crate::contact::DEFAULT_MAX_STEPS),
             trace: false,
         };
-        let known = |top: &str| {
-            if CONTACT_KEYS.contains(&top) {
-                Ok(())
-            } else {
-                Err(ExpectError::UnknownQuantity {
-                    top: top.to_string(),
-                    expected: CONTACT_KEYS.join(", "),
-                })
-            }
-        };
-        let about = About::new((path, text), file.title, file.source, file.expect, known)?;
+        let about = About::new(
+            (path, text),
+            file.title,
+            file.source,
+            file.expect,
+            among(&CONTACT_KEYS),
+        )?;
         Ok(ContactScene {
             about,
             setup,

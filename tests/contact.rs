@@ -41,6 +41,11 @@ fn refused(args: &[&str], needle: &str) {
     assert!(!err.contains("panicked"), "{err}");
 }
 
+/// A command line's words.
+fn args(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 fn f(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("{v} is not a number"))
 }
@@ -80,22 +85,9 @@ fn a_single_linear_contact_gives_its_closed_forms_for_k_from_1_to_1e12() {
     for k in ["1", "1e3", "1e6", "1e9", "1e12"] {
         let kk: f64 = k.parse().unwrap();
         let (tc, e, dmax) = linear_closed(kk, 0.5, 0.2, 1.0);
-        let j = run(&[
-            "-m",
-            "1,1",
-            "-x",
-            "0,1",
-            "--sizes",
-            "1,1",
-            "-v",
-            "1,0",
-            "--stiffness",
-            k,
-            "--zeta",
-            "0.2",
-            "--tol",
-            "1e-12",
-        ]);
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness {k} --zeta 0.2 --tol 1e-12"
+        )));
         let c = &j["contacts"][0];
         rel(f(&c["duration"]), tc, 1e-10, &format!("k = {k}: t_c"));
         rel(f(&c["restitution"]), e, 1e-10, &format!("k = {k}: e"));
@@ -121,20 +113,9 @@ fn a_single_linear_contact_gives_its_closed_forms_for_k_from_1_to_1e12() {
 fn the_default_accuracy_is_1e_8_of_the_relative_speed() {
     // auto (no --tol): final velocities within 1e-8 of the initial relative speed (here 3).
     let (_, e, _) = linear_closed(1e4, 2.0 / 3.0, 0.5, 3.0);
-    let j = run(&[
-        "-m",
-        "1,2",
-        "-x",
-        "0,1",
-        "--sizes",
-        "1,1",
-        "-v",
-        "2,-1",
-        "--stiffness",
-        "1e4",
-        "--zeta",
-        "0.5",
-    ]);
+    let j = run(&args(
+        "-m 1,2 -x 0,1 --sizes 1,1 -v 2,-1 --stiffness 1e4 --zeta 0.5",
+    ));
     let u = 3.0;
     let jimp = (1.0 + e) * (2.0 / 3.0) * u;
     let v = floats(&j["v"]);
@@ -146,62 +127,17 @@ fn the_default_accuracy_is_1e_8_of_the_relative_speed() {
 fn asking_for_e_gives_that_e() {
     for (args, e) in [
         (
-            vec![
-                "-m",
-                "1,3",
-                "-x",
-                "0,1",
-                "--sizes",
-                "1,1",
-                "-v",
-                "1,0",
-                "--stiffness",
-                "1e6",
-                "-e",
-                "0.5",
-                "--tol",
-                "1e-12",
-            ],
+            args("-m 1,3 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1e6 -e 0.5 --tol 1e-12"),
             0.5,
         ),
         (
-            vec![
-                "-m",
-                "1",
-                "-x",
-                "0",
-                "--sizes",
-                "1",
-                "-v",
-                "1",
-                "--right-wall",
-                "0.5",
-                "--wall-stiffness",
-                "1e6",
-                "--wall-restitution",
-                "0.5",
-                "--tol",
-                "1e-12",
-            ],
+            args(
+                "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 1e6 --wall-restitution 0.5 --tol 1e-12",
+            ),
             0.5,
         ),
         (
-            vec![
-                "-m",
-                "2,1",
-                "-x",
-                "0,1",
-                "--sizes",
-                "1,1",
-                "-v",
-                "1,-1",
-                "--stiffness",
-                "10",
-                "-e",
-                "0.05",
-                "--tol",
-                "1e-12",
-            ],
+            args("-m 2,1 -x 0,1 --sizes 1,1 -v 1,-1 --stiffness 10 -e 0.05 --tol 1e-12"),
             0.05,
         ),
     ] {
@@ -214,24 +150,9 @@ fn asking_for_e_gives_that_e() {
         );
     }
     // The wall case: the body leaves at -e v.
-    let j = run(&[
-        "-m",
-        "1",
-        "-x",
-        "0",
-        "--sizes",
-        "1",
-        "-v",
-        "1",
-        "--right-wall",
-        "0.5",
-        "--wall-stiffness",
-        "1e6",
-        "--wall-restitution",
-        "0.5",
-        "--tol",
-        "1e-12",
-    ]);
+    let j = run(&args(
+        "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 1e6 --wall-restitution 0.5 --tol 1e-12",
+    ));
     rel(floats(&j["v"])[0], -0.5, 1e-10, "v after the wall");
     rel(
         floats(&j["impulse_model"]["v"])[0],
@@ -253,22 +174,9 @@ fn an_elastic_hertz_contact_gives_its_closed_forms() {
         let dmax = (5.0 * mu * v * v / (4.0 * kk)).powf(0.4);
         let masses = format!("1,{m2}");
         let speeds = format!("{v},0");
-        let j = run(&[
-            "-m",
-            &masses,
-            "-x",
-            "0,1",
-            "--sizes",
-            "1,1",
-            "-v",
-            &speeds,
-            "--law",
-            "hertz",
-            "--stiffness",
-            k,
-            "--tol",
-            "1e-12",
-        ]);
+        let j = run(&args(&format!(
+            "-m {masses} -x 0,1 --sizes 1,1 -v {speeds} --law hertz --stiffness {k} --tol 1e-12"
+        )));
         let c = &j["contacts"][0];
         rel(
             f(&c["max_overlap"]),
@@ -296,20 +204,9 @@ fn separate_contacts_converge_to_the_impulse_model_as_k_grows() {
     let e = linear_closed(1.0, 1.0, 0.2, 1.0).1;
     let track = {
         let out = collide()
-            .args([
-                "track",
-                "-m",
-                "1,2",
-                "-x",
-                "0,2",
-                "--sizes",
-                "1,1",
-                "-v",
-                "1,0",
-                "--right-wall",
-                "4",
-                "-e",
-            ])
+            .args(args(
+                "track -m 1,2 -x 0,2 --sizes 1,1 -v 1,0 --right-wall 4 -e",
+            ))
             .arg(e.to_string())
             .args(["--until", "8", "--format", "json"])
             .output()
@@ -319,24 +216,9 @@ fn separate_contacts_converge_to_the_impulse_model_as_k_grows() {
     let tx = floats(&track["x"]);
     let mut gaps = Vec::new();
     for k in ["1e2", "1e4", "1e6", "1e8"] {
-        let j = run(&[
-            "-m",
-            "1,2",
-            "-x",
-            "0,2",
-            "--sizes",
-            "1,1",
-            "-v",
-            "1,0",
-            "--right-wall",
-            "4",
-            "--stiffness",
-            k,
-            "--zeta",
-            "0.2",
-            "--until",
-            "8",
-        ]);
+        let j = run(&args(&format!(
+            "-m 1,2 -x 0,2 --sizes 1,1 -v 1,0 --right-wall 4 --stiffness {k} --zeta 0.2 --until 8"
+        )));
         let (v, vi) = (floats(&j["v"]), floats(&j["impulse_model"]["v"]));
         for i in 0..2 {
             assert!(
@@ -362,26 +244,9 @@ fn the_stiff_backstop_reaches_its_own_limit_not_the_impulse_model() {
     let e = linear_closed(1.0, 1.0, 0.2, 1.0).1;
     let mut misses = Vec::new();
     for k in ["1e4", "1e6", "1e8"] {
-        let j = run(&[
-            "-m",
-            "1,1",
-            "-x",
-            "0,1",
-            "--sizes",
-            "1,1",
-            "-v",
-            "1,0",
-            "--right-wall",
-            "1.5",
-            "--stiffness",
-            "1",
-            "--damping",
-            "0.4",
-            "--wall-stiffness",
-            k,
-            "--wall-zeta",
-            "1",
-        ]);
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --stiffness 1 --damping 0.4 --wall-stiffness {k} --wall-zeta 1"
+        )));
         assert_eq!(j["method"], "bdf", "auto picks a stiff method");
         let v = floats(&j["v"]);
         misses.push((v[0] + e).abs());
@@ -402,53 +267,17 @@ fn the_stiff_backstop_reaches_its_own_limit_not_the_impulse_model() {
 fn energy_is_kept_without_damping_and_never_created() {
     // 16 to 18 contacts, with symmetric impacts that begin and end together.
     for law in ["linear", "hertz"] {
-        let j = run(&[
-            "-m",
-            "1,2,1",
-            "-x",
-            "0,1.5,3",
-            "--sizes",
-            "1,1,1",
-            "-v",
-            "1,0,-1",
-            "--law",
-            law,
-            "--left-wall",
-            "-2",
-            "--right-wall",
-            "5",
-            "--stiffness",
-            "100",
-            "--until",
-            "20",
-        ]);
+        let j = run(&args(&format!(
+            "-m 1,2,1 -x 0,1.5,3 --sizes 1,1,1 -v 1,0,-1 --law {law} --left-wall -2 --right-wall 5 --stiffness 100 --until 20"
+        )));
         let e = &j["energy"];
         rel(f(&e["end"]), f(&e["start"]), 1e-8, law);
         assert!(f(&e["dissipated"]) >= 0.0);
     }
     for (law, d) in [("linear", "0.3"), ("hunt-crossley", "0.5")] {
-        let j = run(&[
-            "-m",
-            "1,2,1",
-            "-x",
-            "0,1.5,3",
-            "--sizes",
-            "1,1,1",
-            "-v",
-            "1,0,-1",
-            "--law",
-            law,
-            "--damping",
-            d,
-            "--left-wall",
-            "-2",
-            "--right-wall",
-            "5",
-            "--stiffness",
-            "100",
-            "--until",
-            "20",
-        ]);
+        let j = run(&args(&format!(
+            "-m 1,2,1 -x 0,1.5,3 --sizes 1,1,1 -v 1,0,-1 --law {law} --damping {d} --left-wall -2 --right-wall 5 --stiffness 100 --until 20"
+        )));
         let e = &j["energy"];
         assert!(f(&e["dissipated"]) > 0.0, "{law}: {e}");
         assert!(f(&e["end"]) < f(&e["start"]), "{law}: {e}");
@@ -466,10 +295,9 @@ fn a_hertz_cradle_does_not_give_0_0_1() {
     // Three touching equal balls, elastic Hertz contacts: the time-domain answer (tsit45, bdf
     // and sdirk at tolerance 1e-13 agree to 1e-10), while the sequential impulses give
     // (0, 0, 1). Momentum is exact by construction, so it is checked tightly.
-    let j = run(&[
-        "-m", "1,1,1", "-x", "0,1,2", "--sizes", "1,1,1", "-v", "1,0,0", "--law", "hertz", "--tol",
-        "1e-12",
-    ]);
+    let j = run(&args(
+        "-m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz --tol 1e-12",
+    ));
     let v = floats(&j["v"]);
     let reference = [-0.070_952_353_66, 0.076_403_039_07, 0.994_549_314_6];
     for i in 0..3 {
@@ -481,44 +309,16 @@ fn a_hertz_cradle_does_not_give_0_0_1() {
 
 #[test]
 fn explicit_steps_past_the_stability_limit_are_refused() {
-    let stiff = [
-        "-m",
-        "1,1",
-        "-x",
-        "0,1",
-        "--sizes",
-        "1,1",
-        "-v",
-        "1,0",
-        "--right-wall",
-        "1.5",
-        "--stiffness",
-        "1",
-        "--damping",
-        "0.4",
-        "--wall-stiffness",
-        "1e10",
-        "--wall-zeta",
-        "1",
-    ];
+    let stiff = args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --stiffness 1 --damping 0.4 --wall-stiffness 1e10 --wall-zeta 1",
+    );
     for method in ["verlet", "symplectic-euler", "rk4"] {
         let mut args = stiff.to_vec();
         args.extend(["--method", method, "--dt", "1e-3"]);
         refused(&args, "is unstable on the stiffest contact");
     }
     // Undamped, Verlet's limit is omega h = 2: k = 1e6 against a wall, mu = 1: h < 2e-3.
-    let wall = [
-        "-m",
-        "1",
-        "-x",
-        "0",
-        "--sizes",
-        "1",
-        "-v",
-        "1",
-        "--right-wall",
-        "0.5",
-    ];
+    let wall = args("-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5");
     let mut args = wall.to_vec();
     args.extend([
         "--wall-stiffness",
@@ -544,7 +344,7 @@ fn explicit_steps_past_the_stability_limit_are_refused() {
 
 #[test]
 fn bad_input_is_refused_with_exit_2() {
-    let two = ["-m", "1,1", "-x", "0,1", "--sizes", "1,1", "-v", "1,0"];
+    let two = args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0");
     let with = |extra: &[&'static str]| {
         let mut a = two.to_vec();
         a.extend(extra);
@@ -583,38 +383,18 @@ fn bad_input_is_refused_with_exit_2() {
         "cannot be used with",
     );
     refused(&with(&["--methods", "rk4"]), "--work-precision");
+    refused(&args("-m 1,1 -x 0,0.5 --sizes 1,1 -v 1,0"), "overlap");
     refused(
-        &["-m", "1,1", "-x", "0,0.5", "--sizes", "1,1", "-v", "1,0"],
-        "overlap",
-    );
-    refused(
-        &with(&["--method", "rk4", "--dt", "1e-9", "--max-steps", "1000"]),
+        &with(&args("--method rk4 --dt 1e-9 --max-steps 1000")),
         "more than 1000 steps",
     );
 }
 
 #[test]
 fn json_has_the_documented_shape() {
-    let j = run(&[
-        "-m",
-        "1,1",
-        "-x",
-        "0,1",
-        "--sizes",
-        "1,1",
-        "-v",
-        "1,0",
-        "--right-wall",
-        "1.5",
-        "--stiffness",
-        "1",
-        "--damping",
-        "0.4",
-        "--wall-stiffness",
-        "1e10",
-        "--wall-zeta",
-        "1",
-    ]);
+    let j = run(&args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --stiffness 1 --damping 0.4 --wall-stiffness 1e10 --wall-zeta 1",
+    ));
     let keys: Vec<&str> = j.as_object().unwrap().keys().map(|k| k.as_str()).collect();
     for key in [
         "law",
@@ -651,25 +431,12 @@ fn json_has_the_documented_shape() {
 #[test]
 fn work_precision_measures_every_method_against_the_exact_answer() {
     let svg = scratch("wpd.svg");
-    let j = run(&[
-        "-m",
-        "1,1",
-        "-x",
-        "0,1",
-        "--sizes",
-        "1,1",
-        "-v",
-        "1,0",
-        "--stiffness",
-        "1",
-        "--zeta",
-        "0.2",
-        "--work-precision",
-        "--methods",
-        "verlet,implicit-euler,bdf",
-        "--plot",
-        svg.to_str().unwrap(),
-    ]);
+    let mut line = args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1 --zeta 0.2 --work-precision \
+         --methods verlet,implicit-euler,bdf --plot",
+    );
+    line.push(svg.to_str().unwrap());
+    let j = run(&line);
     assert_eq!(j["reference"]["kind"], "exact");
     let e = linear_closed(1.0, 0.5, 0.2, 1.0).1;
     let v = floats(&j["reference"]["v"]);
@@ -701,29 +468,9 @@ fn work_precision_measures_every_method_against_the_exact_answer() {
 
 #[test]
 fn work_precision_marks_unstable_rows() {
-    let j = run(&[
-        "-m",
-        "1,1",
-        "-x",
-        "0,1",
-        "--sizes",
-        "1,1",
-        "-v",
-        "1,0",
-        "--right-wall",
-        "1.5",
-        "--stiffness",
-        "1",
-        "--damping",
-        "0.4",
-        "--wall-stiffness",
-        "1e6",
-        "--wall-zeta",
-        "1",
-        "--work-precision",
-        "--methods",
-        "verlet,bdf",
-    ]);
+    let j = run(&args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --stiffness 1 --damping 0.4 --wall-stiffness 1e6 --wall-zeta 1 --work-precision --methods verlet,bdf",
+    ));
     assert_eq!(j["reference"]["kind"], "run");
     assert!(f(&j["reference"]["uncertainty"]) < 1e-9);
     let rows = j["rows"].as_array().unwrap();
@@ -773,16 +520,9 @@ fn scratch(name: &str) -> std::path::PathBuf {
 
 #[test]
 fn contact_scenes_pass_and_bad_ones_are_located() {
-    let names = [
-        "contact-single-zeta-0.2",
-        "contact-backstop-1e2",
-        "contact-backstop-1e4",
-        "contact-backstop-1e8",
-        "contact-backstop-1e10",
-        "contact-cradle-linear",
-        "contact-cradle-hertz",
-        "contact-superball",
-    ];
+    let names = args(
+        "contact-single-zeta-0.2 contact-backstop-1e2 contact-backstop-1e4 contact-backstop-1e8 contact-backstop-1e10 contact-cradle-linear contact-cradle-hertz contact-superball",
+    );
     let paths: Vec<String> = names
         .iter()
         .map(|n| format!("scenarios/{n}.toml"))

@@ -60,26 +60,13 @@ pub fn svg(rows: &[Row], seed: u64) -> String {
         TOP + H - (l - e0) / (e1 - e0) * H
     };
     let mut s = Svg::new(WIDTH, HEIGHT);
-    s.text(
-        (LEFT, 30.0),
+    s.heading(
+        LEFT,
         "Error against run time",
-        "font-size=\"17\" font-weight=\"600\"",
-    );
-    s.text(
-        (LEFT, 46.0),
         &format!("collide accuracy, seed {seed}: worst error of FIN, crunch and lost in ulps, against median time per solve"),
-        "fill=\"#4b5563\" font-size=\"12\"",
     );
-    s.raw(&format!("<rect x=\"{LEFT}\" y=\"{TOP}\" width=\"{W}\" height=\"{H}\" fill=\"none\" stroke=\"#d1d5db\"/>"));
-    for d in (t0 as i32)..=(t1 as i32) {
-        let px = x(10f64.powi(d));
-        s.line(None, (px, TOP), (px, TOP + H), "stroke=\"#f3f4f6\"");
-        s.text(
-            (px, TOP + H + 16.0),
-            &format!("1e{d} ns"),
-            "text-anchor=\"middle\" fill=\"#6b7280\" font-size=\"11\"",
-        );
-    }
+    s.frame((LEFT, TOP, W, H));
+    s.time_decades((t0, t1), x, (TOP, H));
     // At most about 8 labelled decades (errors can span 300).
     let step = (((e1 - e0) / 8.0).ceil() as usize).max(1);
     for d in ((e0 as i32)..(e1 as i32)).step_by(step) {

@@ -155,6 +155,42 @@ impl Svg {
     }
 
     /// The document.
+    /// A picture's title and its grey subtitle, at `left`.
+    pub fn heading(&mut self, left: f64, title: &str, subtitle: &str) {
+        self.text((left, 30.0), title, "font-size=\"17\" font-weight=\"600\"");
+        self.text((left, 46.0), subtitle, "fill=\"#4b5563\" font-size=\"12\"");
+    }
+
+    /// The grey box of a plot area `(left, top, width, height)`.
+    pub fn frame(&mut self, (left, top, w, h): (f64, f64, f64, f64)) {
+        self.raw(&format!(
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#d1d5db\"/>",
+            f(left),
+            f(top),
+            f(w),
+            f(h)
+        ));
+    }
+
+    /// A log time axis: a grid line and a label (`1e{d} ns`) at each decade `d` from `t0` to
+    /// `t1`, at `x(10^d)`, under a plot area from `top` of height `h`.
+    pub fn time_decades(
+        &mut self,
+        (t0, t1): (f64, f64),
+        x: impl Fn(f64) -> f64,
+        (top, h): (f64, f64),
+    ) {
+        for d in (t0 as i32)..=(t1 as i32) {
+            let px = x(10f64.powi(d));
+            self.line(None, (px, top), (px, top + h), "stroke=\"#f3f4f6\"");
+            self.text(
+                (px, top + h + 16.0),
+                &format!("1e{d} ns"),
+                "text-anchor=\"middle\" fill=\"#6b7280\" font-size=\"11\"",
+            );
+        }
+    }
+
     pub fn finish(self, title: &str) -> String {
         let mut out = String::new();
         let attrs: String = self

@@ -2,7 +2,7 @@
 //! line per method; unstable runs left out and counted in the legend), and a run's history (the
 //! force and the overlap of each contact against time, one colour per contact).
 
-use super::svg::{Svg, f, short, ticks};
+use super::svg::{Svg, short, ticks};
 use crate::contact::work::Work;
 use crate::contact::{ContactRun, Setup};
 
@@ -42,32 +42,17 @@ pub fn svg(work: &Work) -> String {
     let x = |ns: f64| LEFT + (ns.log10() - t0) / (t1 - t0) * W;
     let y = |e: f64| TOP + H - (e.max(floor).log10() - e0) / (e1 - e0) * H;
     let mut s = Svg::new(WIDTH, HEIGHT);
-    s.text(
-        (LEFT, 30.0),
+    s.heading(
+        LEFT,
         "Error against run time",
-        "font-size=\"17\" font-weight=\"600\"",
-    );
-    s.text(
-        (LEFT, 46.0),
         &format!(
             "collide contact --work-precision: final-velocity error ({} reference) against the fastest time of each run; stiffness ratio {}",
             work.reference.kind,
             short(work.stiffness_ratio)
         ),
-        "fill=\"#4b5563\" font-size=\"12\"",
     );
-    s.raw(&format!(
-        "<rect x=\"{LEFT}\" y=\"{TOP}\" width=\"{W}\" height=\"{H}\" fill=\"none\" stroke=\"#d1d5db\"/>"
-    ));
-    for d in (t0 as i32)..=(t1 as i32) {
-        let px = x(10f64.powi(d));
-        s.line(None, (px, TOP), (px, TOP + H), "stroke=\"#f3f4f6\"");
-        s.text(
-            (px, TOP + H + 16.0),
-            &format!("1e{d} ns"),
-            "text-anchor=\"middle\" fill=\"#6b7280\" font-size=\"11\"",
-        );
-    }
+    s.frame((LEFT, TOP, W, H));
+    s.time_decades((t0, t1), x, (TOP, H));
     let step = (((e1 - e0) / 10.0).ceil() as usize).max(1);
     for d in ((e0 as i32)..=(e1 as i32)).step_by(step) {
         let py = y(10f64.powi(d));
@@ -173,23 +158,14 @@ pub fn history(setup: &Setup, run: &ContactRun) -> String {
     let yf = |v: f64| TOP + panel - v / f_hi * panel;
     let yd = |v: f64| TOP + panel + 40.0 + panel - (v - d_lo) / (d_hi - d_lo) * panel;
     let mut s = Svg::new(WIDTH, HEIGHT);
-    s.text(
-        (LEFT, 30.0),
+    s.heading(
+        LEFT,
         "Contact forces and overlaps",
-        "font-size=\"17\" font-weight=\"600\"",
-    );
-    s.text(
-        (LEFT, 46.0),
         &format!("collide contact, method {}: after every step", run.method),
-        "fill=\"#4b5563\" font-size=\"12\"",
     );
     let top2 = TOP + panel + 40.0;
     for top in [TOP, top2] {
-        s.raw(&format!(
-            "<rect x=\"{LEFT}\" y=\"{}\" width=\"{W}\" height=\"{}\" fill=\"none\" stroke=\"#d1d5db\"/>",
-            f(top),
-            f(panel)
-        ));
+        s.frame((LEFT, top, W, panel));
     }
     s.grid(
         (LEFT, top2, W, panel),
