@@ -37,27 +37,67 @@ pub struct Cli {
 #[allow(clippy::large_enum_variant)] // parsed once per run
 pub enum Command {
     /// Solve one collision given on the command line
+    #[command(
+        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'"
+    )]
     Solve(SolveArgs),
     /// Solve TOML scene files and check their [expect] numbers
+    #[command(
+        after_help = "Examples:\n  collide scene scenarios/fig-1-3-elastic.toml\n  collide scene scenarios/*.toml --format json"
+    )]
     Scene(SceneArgs),
     /// Error against run time: each method against exact arithmetic on seeded case families
+    #[command(
+        after_help = "Examples:\n  collide accuracy --cases 16\n  collide accuracy --plot accuracy.svg"
+    )]
     Accuracy(AccuracyArgs),
     /// The same collision in the standard Galilean frames (lecture Figs. 2.5 and 3.4)
+    #[command(
+        after_help = "Examples:\n  collide frames -m 6,1 -v 3,-4 --reverse\n  collide frames -m 4,1 -v 60,10 -e 2/3 --exact"
+    )]
     Frames(FramesArgs),
     /// A table of collisions over a grid of parameters (--vary), one row each
+    #[command(
+        after_help = "Examples:\n  collide sweep -m 4,1 -v 60,10 --vary e=0:1:11 --columns e,fin1,fin2,ke_fin,lost\n  collide sweep -m 1,1 -v 1,0 --vary m2=1e-3:1e3:7:log --format jsonl -o sweep.jsonl"
+    )]
     Sweep(SweepArgs),
     /// A table of collisions read from CSV or JSON Lines, one row each
+    #[command(
+        after_help = "Examples:\n  collide batch scenarios/cases.csv --columns m1,m2,e,fin1,fin2,lost --skip-bad\n  collide batch scenarios/cases.csv --skip-bad --format jsonl -o cases.jsonl"
+    )]
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
+    #[command(
+        after_help = "Examples:\n  collide track -m 1,10000 -x 1,2 -v 0,-1 --left-wall 0\n  collide track -m 1 -x 1 -v 0 --left-wall 0 --gravity 2 -e 0.5 --format json"
+    )]
     Track(TrackArgs),
     /// Collisions in time: contact forces (linear spring-dashpot, Hertz, Hunt-Crossley)
     /// integrated through each impact, with the error of each method against its run time
+    #[command(
+        after_help = "Examples:\n  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2\n  collide contact -m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz\n  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --damping 0.4 --wall-stiffness 1e10 --wall-zeta 1 --work-precision --plot wpd.svg"
+    )]
     Contact(ContactArgs),
     /// Pi from collisions: the exact count for mass ratio 100^N (the first N + 1 digits of pi),
     /// simulated as well for N <= 10
+    #[command(after_help = "Examples:\n  collide pi 5\n  collide pi 20 --no-simulate")]
     Pi(PiArgs),
     /// Draw the collision: the velocity-velocity diagram, or Newton's or Minkowski's space-time
+    #[command(
+        after_help = "Examples:\n  collide plot -m 4,1 -v 60,10 -o case-a.svg\n  collide plot -m 4,1 -v 60,10 --kind minkowski -o world-lines.svg\n  collide plot -m 4,1 -v 60,10 --term"
+    )]
     Plot(PlotArgs),
+    /// Print a shell completion script (bash, zsh, fish, powershell, elvish)
+    #[command(after_help = "Examples:
+  collide completions bash > ~/.local/share/bash-completion/completions/collide
+  collide completions zsh > ~/.zfunc/_collide      # with fpath+=~/.zfunc before compinit
+  collide completions fish > ~/.config/fish/completions/collide.fish")]
+    Completions {
+        /// The shell
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff): collide man | man -l -
+    Man,
 }
 
 #[derive(Args, Debug)]
@@ -406,7 +446,7 @@ pub struct SolveArgs {
 #[derive(Args, Debug)]
 pub struct SceneArgs {
     /// Scene files (TOML)
-    #[arg(required = true, value_name = "FILE")]
+    #[arg(required = true, value_name = "FILE.toml", value_hint = clap::ValueHint::FilePath)]
     pub files: Vec<PathBuf>,
 
     /// Output format

@@ -9,6 +9,7 @@ mod frames;
 mod pi;
 mod plot;
 mod scene;
+mod shell;
 mod solve;
 mod table;
 mod track;
@@ -46,6 +47,8 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Pi(args) => pi::run(args),
         Command::Contact(args) => contact::run(args),
         Command::Plot(args) => plot::run(args),
+        Command::Completions { shell } => shell::completions(shell),
+        Command::Man => shell::man(),
     }
 }
 
