@@ -4,6 +4,8 @@
 
 use std::fmt;
 
+use num_rational::BigRational;
+use num_traits::Signed;
 use serde_json::Value as Json;
 
 use crate::number::{Number, num};
@@ -14,7 +16,8 @@ pub const DEFAULT_REL: f64 = 1e-12;
 /// An expected number or (nested) array of numbers.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Expected {
-    Number(f64),
+    /// A number as written (a string keeps its decimal or fraction exactly).
+    Number(Number),
     /// A word, compared exactly (`"stop.reason" = "zeno"`).
     Text(String),
     Array(Vec<Expected>),
@@ -77,11 +80,17 @@ pub enum ExpectError {
 
 fn expected_of(v: toml::Value) -> Result<Expected, ExpectError> {
     match v {
-        toml::Value::Integer(i) => Ok(Expected::Number(i as f64)),
-        toml::Value::Float(f) if f.is_finite() => Ok(Expected::Number(f)),
+        toml::Value::Integer(i) => Ok(Expected::Number(
+            i.to_string()
+                .parse()
+                .map_err(|_| ExpectError::Type("integer"))?,
+        )),
+        toml::Value::Float(f) if f.is_finite() => Ok(Expected::Number(
+            Number::from_f64(f).map_err(|_| ExpectError::Type("float"))?,
+        )),
         // A string is a number ("4/3") if it reads as one, else a word compared exactly.
         toml::Value::String(s) => Ok(match s.parse::<Number>() {
-            Ok(n) => Expected::Number(n.value()),
+            Ok(n) => Expected::Number(n),
             Err(_) => Expected::Text(s),
         }),
         toml::Value::Array(a) => a
@@ -165,13 +174,16 @@ impl Expectation {
 fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
     match (e, a) {
         (Expected::Number(x), Json::Number(y)) => {
-            let y = y.as_f64().unwrap_or(f64::NAN);
+            let (x, y) = (x.value(), y.as_f64().unwrap_or(f64::NAN));
             (y - x).abs() <= tol.abs + tol.rel * x.abs()
         }
-        // Exact mode: "4/3", or 20 significant digits of an irrational value.
-        (Expected::Number(x), Json::String(y)) => y
-            .parse::<Number>()
-            .is_ok_and(|y| (y.value() - x).abs() <= tol.abs + tol.rel * x.abs()),
+        // Exact mode: "35/3", or 20 significant digits of an irrational value, compared as
+        // the rationals they are (a decimal expectation is the decimal it is).
+        (Expected::Number(x), Json::String(y)) => y.parse::<Number>().is_ok_and(|y| {
+            let x = x.exact();
+            let bound = |t: f64| BigRational::from_float(t).unwrap_or_default();
+            (y.exact() - &x).abs() <= bound(tol.abs) + bound(tol.rel) * x.abs()
+        }),
         (Expected::Text(x), Json::String(y)) => x == y,
         (Expected::Array(xs), Json::Array(ys)) => {
             xs.len() == ys.len() && xs.iter().zip(ys).all(|(x, y)| matches(x, y, tol))
@@ -182,7 +194,10 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
 
 fn show_expected(e: &Expected) -> String {
     match e {
-        Expected::Number(x) => num(*x),
+        Expected::Number(x) => match x.text() {
+            std::borrow::Cow::Borrowed(typed) => typed.to_string(),
+            std::borrow::Cow::Owned(_) => num(x.value()),
+        },
         Expected::Text(t) => t.clone(),
         Expected::Array(a) => {
             format!(

@@ -33,8 +33,14 @@ impl Restitution {
         Restitution(Number::from_f64(1.0).expect("1 is a number"))
     }
 
+    /// Checked on the value as typed: `1.0000000000000001` is refused although its nearest
+    /// binary64 is 1, so binary64 and exact modes accept the same inputs.
     pub fn new(n: Number) -> Result<Restitution, RestitutionError> {
-        if (0.0..=1.0).contains(&n.value()) {
+        let v = n.value();
+        let inside = (0.0..=1.0).contains(&v)
+            && (v != 1.0 || n.exact() <= num_rational::BigRational::from_integer(1.into()))
+            && (v != 0.0 || n.exact() >= num_rational::BigRational::from_integer(0.into()));
+        if inside {
             Ok(Restitution(n))
         } else {
             Err(RestitutionError::OutOfRange(n.to_string()))
@@ -49,12 +55,14 @@ impl Restitution {
         &self.0
     }
 
+    /// Exactly 1 as typed (`0.99999999999999999999999` is not, though it rounds to 1).
     pub fn is_elastic(&self) -> bool {
-        self.value() == 1.0
+        self.value() == 1.0 && self.0.exact() == num_rational::BigRational::from_integer(1.into())
     }
 
+    /// Exactly 0 as typed.
     pub fn is_totally_inelastic(&self) -> bool {
-        self.value() == 0.0
+        self.value() == 0.0 && self.0.exact() == num_rational::BigRational::from_integer(0.into())
     }
 
     /// The lecture's name for the collision.

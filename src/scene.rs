@@ -44,10 +44,10 @@ use crate::unknowns::Solved;
 struct SceneFile {
     title: Option<String>,
     source: Option<String>,
-    masses: Option<Spanned<[Typed; 2]>>,
-    inertia: Option<Spanned<[[Number; 2]; 2]>>,
-    velocities: Spanned<[Typed; 2]>,
-    fin: Option<Spanned<[Typed; 2]>>,
+    masses: Option<Spanned<Two<Typed>>>,
+    inertia: Option<Spanned<Two<Two<Number>>>>,
+    velocities: Spanned<Two<Typed>>,
+    fin: Option<Spanned<Two<Typed>>>,
     restitution: Option<Spanned<Typed>>,
     si: Option<bool>,
     show: Option<Vec<Section>>,
@@ -116,8 +116,22 @@ impl<'de> Deserialize<'de> for Typed {
     }
 }
 
-fn pair(v: &[Typed; 2], dimension: Dimension, what: &str) -> Result<Pair, PairError> {
+fn pair(Two(v): &Two<Typed>, dimension: Dimension, what: &str) -> Result<Pair, PairError> {
     parse_pair(&format!("{},{}", v[0].0, v[1].0), dimension, what)
+}
+
+/// Exactly two values (`[60, 10]`): a longer or shorter array is an error at its line.
+#[derive(Clone, Debug)]
+struct Two<T>([T; 2]);
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for Two<T> {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Two<T>, D::Error> {
+        let v = Vec::<T>::deserialize(d)?;
+        let n = v.len();
+        <[T; 2]>::try_from(v)
+            .map(Two)
+            .map_err(|_| serde::de::Error::invalid_length(n, &"exactly 2 values"))
+    }
 }
 
 /// What every scene has besides its physics: where it is, what it is called, and the numbers it
@@ -280,8 +294,11 @@ impl Scene {
         };
         let inertia = match &file.inertia {
             Some(t) => Some(
-                InertiaTensor::general(t.get_ref().clone())
-                    .map_err(|e| err(Some(t.span()), format!("inertia: {e}")))?,
+                InertiaTensor::general({
+                    let Two([Two(a), Two(b)]) = t.get_ref().clone();
+                    [a, b]
+                })
+                .map_err(|e| err(Some(t.span()), format!("inertia: {e}")))?,
             ),
             None => None,
         };

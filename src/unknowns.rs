@@ -75,6 +75,11 @@ impl Solved {
     pub fn get(&self, v: Var) -> &Q {
         &self.values[v as usize]
     }
+
+    /// Whether a law checked rather than used misses (the given data contradict each other).
+    pub fn inconsistent(&self) -> bool {
+        self.checks.iter().any(|(_, residual)| !residual.is_zero())
+    }
 }
 
 fn momentum(x: &[Q; 7]) -> Q {

@@ -89,8 +89,17 @@ fn one_unknown_is_a_consistency_check() {
         text.contains("Solved: f2 = 90\nCheck: restitution holds exactly"),
         "{text}"
     );
-    // With e = 1/2 momentum still gives f2 = 90, but restitution misses: 90 - 40 - 25 = 25.
-    let j = json(&["-m", "4,1", "-v", "60,10", "--fin", "40,?", "-e", "1/2"]);
+    // With e = 1/2 momentum still gives f2 = 90, but restitution misses: 90 - 40 - 25 = 25,
+    // and the run fails like a failed [expect] (exit 1), still printing its JSON.
+    let out = collide()
+        .args([
+            "solve", "-m", "4,1", "-v", "60,10", "--fin", "40,?", "-e", "1/2",
+        ])
+        .args(["--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let j: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(j["check"]["restitution"], 25.0);
     // Nothing unknown: both laws checked.
     let j = json(&["-m", "4,1", "-v", "60,10", "--fin", "40,90", "-e", "1"]);

@@ -74,7 +74,9 @@ fn solve(scene: Scene) -> Result<Checked> {
     }
     let mut json = result.json();
     solved::annotate(&mut json, &scene.case, scene.solved.as_ref(), scene.exact);
-    check(scene.about, text, json)
+    let mut checked = check(scene.about, text, json)?;
+    checked.inconsistent = scene.solved.as_ref().is_some_and(|s| s.inconsistent());
+    Ok(checked)
 }
 
 fn solve_track(scene: TrackScene) -> Result<Checked> {
@@ -118,5 +120,6 @@ fn check(about: About, text: String, json: serde_json::Value) -> Result<Checked>
         text,
         json,
         checks,
+        inconsistent: false,
     })
 }

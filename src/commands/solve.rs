@@ -8,6 +8,12 @@ use super::{Outcome, plot};
 use crate::cli::{Format, SolveArgs};
 
 pub fn run(args: SolveArgs) -> Result<Outcome> {
+    if args.format == Format::Json && args.plot.as_deref() == Some(std::path::Path::new("term")) {
+        anyhow::bail!(
+            "--plot term draws text, which would break the JSON on stdout: with --format json \
+             use --plot FILE.svg"
+        );
+    }
     let (case, unknowns) = args
         .case
         .problem(args.fin.as_ref())
@@ -34,5 +40,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
             target,
         )?);
     }
-    Ok(Outcome::print(stdout))
+    // Given data that contradict a checked law fail like a failed [expect] (exit 1).
+    let status = u8::from(unknowns.as_ref().is_some_and(|s| s.inconsistent()));
+    Ok(Outcome { stdout, status })
 }

@@ -16,6 +16,8 @@ pub struct Checked {
     pub text: String,
     pub json: serde_json::Value,
     pub checks: Vec<Check>,
+    /// The given data contradict a law checked rather than used (`Check: ... does NOT hold`).
+    pub inconsistent: bool,
 }
 
 impl Checked {
@@ -24,7 +26,7 @@ impl Checked {
     }
 
     pub fn failed(&self) -> bool {
-        self.failures().next().is_some()
+        self.inconsistent || self.failures().next().is_some()
     }
 }
 

@@ -1,0 +1,171 @@
+//! Issue 13's regressions fixed so far, each as the issue's command: labels from the exact
+//! values, the same inputs in both modes, JSON that stays JSON, failed consistency checks,
+//! exact expectations, and two-value arrays.
+
+mod common;
+
+use common::collide;
+
+/// Runs `collide args`; gives (exit code, stdout, stderr).
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = collide().args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn scratch(name: &str, text: &str) -> std::path::PathBuf {
+    let path = std::env::temp_dir().join(format!("collide-hostile-{}-{name}", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn a_restitution_above_1_as_typed_is_refused_in_both_modes() {
+    for exact in [false, true] {
+        let mut args = vec![
+            "solve",
+            "-m",
+            "6,1",
+            "-v",
+            "3,-4",
+            "-e",
+            "1.0000000000000001",
+        ];
+        if exact {
+            args.push("--exact");
+        }
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "exact = {exact}: {out}");
+        assert!(out.is_empty());
+        assert!(
+            err.contains("'1.0000000000000001' is outside [0, 1]"),
+            "{err}"
+        );
+    }
+    // Just below 0 as typed, though it rounds to -0.
+    let (code, _, err) = run(&["solve", "-m", "6,1", "-v", "3,-4", "-e", "-1e-400"]);
+    assert_eq!(code, 2, "{err}");
+}
+
+#[test]
+fn labels_follow_the_exact_values() {
+    let (code, out, _) = run(&[
+        "solve",
+        "-m",
+        "6,1",
+        "-v",
+        "3,-4",
+        "-e",
+        "0.99999999999999999999999",
+        "--exact",
+        "--show",
+        "energy",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        !out.contains("elastic") && !out.contains("conserved"),
+        "{out}"
+    );
+    // lost = (1 - e^2) crunch = (2e-23 - 1e-46) 21, shown to 20 digits.
+    assert!(
+        out.contains("lost = (1 - e^2) crunch") && out.contains("4.1999999999999999999e-22"),
+        "{out}"
+    );
+    // Exactly 1 is elastic, in either spelling.
+    for e in ["1", "1.000", "elastic", "3/3"] {
+        let (_, out, _) = run(&[
+            "solve", "-m", "6,1", "-v", "3,-4", "-e", e, "--exact", "--show", "energy",
+        ]);
+        assert!(out.contains("elastic: energy is conserved"), "{e}: {out}");
+    }
+}
+
+#[test]
+fn json_with_a_terminal_plot_is_refused() {
+    let (code, out, err) = run(&[
+        "solve", "-m", "4,1", "-v", "60,10", "--format", "json", "--plot", "term",
+    ]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(
+        err.contains("--plot term") && err.contains("--plot FILE.svg"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_failed_consistency_check_exits_1() {
+    let (code, out, _) = run(&[
+        "solve", "-m", "4,1", "-v", "60,10", "--fin", "40,90", "-e", "0.5",
+    ]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("restitution does NOT hold"));
+    let (code, out, _) = run(&[
+        "solve", "-m", "4,1", "-v", "60,10", "--fin", "40,90", "-e", "1",
+    ]);
+    assert_eq!(code, 0, "{out}");
+    // In a scene as well.
+    let scene = scratch(
+        "inconsistent.toml",
+        "masses = [4, 1]\nvelocities = [60, 10]\nfin = [40, 90]\nrestitution = 0.5\n",
+    );
+    let (code, out, _) = run(&["scene", scene.to_str().unwrap()]);
+    assert_eq!(code, 1, "{out}");
+    std::fs::remove_file(scene).unwrap();
+}
+
+#[test]
+fn exact_scenes_compare_exact_values_as_fractions() {
+    let base = std::fs::read_to_string("scenarios/fig-2-3-ka-whump-exact.toml").unwrap();
+    assert!(base.contains("\n\"energy.lost\" = \"35/3\"\n"));
+    for (expectation, pass) in [
+        ("{ value = \"11.6666666666666666\", rel = 0 }", false),
+        ("{ value = \"35/3\", rel = 0 }", true),
+        ("{ value = \"11.6666666666666666\", rel = 1e-17 }", true),
+        ("{ value = \"70/6\", abs = 0 }", true),
+    ] {
+        let text = base.replace(
+            "\n\"energy.lost\" = \"35/3\"\n",
+            &format!("\n\"energy.lost\" = {expectation}\n"),
+        );
+        let scene = scratch("exact.toml", &text);
+        let (code, out, err) = run(&["scene", scene.to_str().unwrap()]);
+        assert_eq!(code, if pass { 0 } else { 1 }, "{expectation}: {out}{err}");
+        std::fs::remove_file(scene).unwrap();
+    }
+}
+
+#[test]
+fn two_value_arrays_take_exactly_two() {
+    for (text, at) in [
+        (
+            "masses = [4, 1]\nvelocities = [60, 10, 99, \"garbage\"]\n",
+            ":2:14: invalid length 4",
+        ),
+        (
+            "masses = [4]\nvelocities = [60, 10]\n",
+            ":1:10: invalid length 1",
+        ),
+        (
+            "masses = [4, 1]\nvelocities = [60, 10]\nfin = [1, 2, 3]\n",
+            ":3:7: invalid length 3",
+        ),
+        (
+            "inertia = [[4, 0.5, 1], [0.5, 1]]\nvelocities = [60, 10]\n",
+            "invalid length 3",
+        ),
+    ] {
+        let scene = scratch("two.toml", text);
+        let (code, out, err) = run(&["scene", scene.to_str().unwrap()]);
+        assert_eq!(code, 2, "{text}");
+        assert!(out.is_empty());
+        assert!(
+            err.contains(at) && err.contains("expected exactly 2 values"),
+            "{err}"
+        );
+        std::fs::remove_file(scene).unwrap();
+    }
+}
