@@ -7,9 +7,22 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
+use collide::output::diagnostic;
 
 fn main() -> ExitCode {
-    let cli = cli::Cli::parse();
+    let cli = match cli::Cli::try_parse() {
+        Ok(cli) => cli,
+        // Usage errors on stderr (cut to a sane length), --help and --version on stdout; a
+        // closed stream is no reason to panic.
+        Err(e) if e.use_stderr() => {
+            diagnostic(format_args!("{}", e.render().to_string().trim_end()));
+            return ExitCode::from(2);
+        }
+        Err(e) => {
+            let _ = write!(std::io::stdout().lock(), "{}", e.render());
+            return ExitCode::SUCCESS;
+        }
+    };
     match commands::run(cli.command) {
         Ok(outcome) => {
             let mut out = std::io::stdout().lock();
@@ -20,7 +33,7 @@ fn main() -> ExitCode {
                 // `collide ... | head`: the reader left; that is not an error.
                 Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
                 Err(e) => {
-                    eprintln!("error: cannot write output: {e}");
+                    diagnostic(format_args!("error: cannot write output: {e}"));
                     ExitCode::from(2)
                 }
                 Ok(()) => ExitCode::from(outcome.status),
@@ -29,7 +42,7 @@ fn main() -> ExitCode {
         // A table streamed into `collide ... | head`: the reader left; that is not an error.
         Err(e) if broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            diagnostic(format_args!("error: {e:#}"));
             ExitCode::from(2)
         }
     }

@@ -157,3 +157,24 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
     out.write_all(bytes).map_err(named)?;
     out.commit().map_err(named)
 }
+
+/// Writes a diagnostic line to stderr, cut to [`MESSAGE_CHARS`] characters; a closed or full
+/// stderr is ignored, never a panic (`eprintln!` panics there).
+pub fn diagnostic(line: std::fmt::Arguments) {
+    let line = line.to_string();
+    let _ = writeln!(io::stderr().lock(), "{}", cut(&line));
+}
+
+/// Longest diagnostic printed whole; a longer one keeps its start and end.
+pub const MESSAGE_CHARS: usize = 2000;
+
+/// `text`, or its first 1,500 and last 400 characters with how many were cut between.
+pub fn cut(text: &str) -> std::borrow::Cow<'_, str> {
+    let n = text.chars().count();
+    if n <= MESSAGE_CHARS {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let head: String = text.chars().take(1500).collect();
+    let tail: String = text.chars().skip(n - 400).collect();
+    std::borrow::Cow::Owned(format!("{head}[... {} characters cut ...]{tail}", n - 1900))
+}

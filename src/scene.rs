@@ -144,6 +144,20 @@ pub struct About {
     pub expect: Vec<Expectation>,
 }
 
+/// Text with its control characters escaped (`\u{1b}`): a shared scene cannot send escape
+/// sequences to a terminal.
+fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
 /// `[expect]` as written: JSON paths of the report, each with its value and place.
 type ExpectTable = BTreeMap<String, Spanned<toml::Value>>;
 
@@ -173,8 +187,8 @@ impl About {
         }
         Ok(About {
             path: path.to_path_buf(),
-            title,
-            source,
+            title: title.as_deref().map(printable),
+            source: source.as_deref().map(printable),
             expect,
         })
     }

@@ -247,17 +247,19 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
         Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.into()),
         Err(_) => {}
     }
-    // The longest prefix that is a number, followed by a unit name.
+    // The longest prefix that is a number, followed by a unit name. Only the places where a
+    // unit could start are tried (before a space or a letter), so a long text costs one parse
+    // per such place, not one per character.
     let cut = (1..=t.len())
         .rev()
-        .filter(|&i| t.is_char_boundary(i))
-        .find(|&i| {
-            t[..i].parse::<Number>().is_ok()
+        .filter(|&i| {
+            t.is_char_boundary(i)
                 && t[i..]
                     .chars()
                     .next()
                     .is_none_or(|c| c.is_whitespace() || c.is_alphabetic())
-        });
+        })
+        .find(|&i| t[..i].parse::<Number>().is_ok());
     let Some(i) = cut else {
         // No number at all: the number parser says why.
         return Err(t

@@ -169,3 +169,86 @@ fn two_value_arrays_take_exactly_two() {
         std::fs::remove_file(scene).unwrap();
     }
 }
+
+#[test]
+fn a_closed_stderr_is_no_panic() {
+    // The command: bad rows reported to a stderr whose reader has gone.
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    let script = format!(
+        "{} batch scenarios/cases.csv --skip-bad -o /dev/null 2>&1 | head -c 0; echo \"${{PIPESTATUS[0]}}\"",
+        bin.display()
+    );
+    let out = std::process::Command::new("bash")
+        .args(["-c", &script])
+        .output()
+        .unwrap();
+    let status = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        status.trim() == "0" || status.trim() == "141",
+        "exit {status}"
+    );
+}
+
+#[test]
+fn long_arguments_give_short_messages_at_once() {
+    let long = format!("4,{}x", "1".repeat(100_000));
+    let start = std::time::Instant::now();
+    let (code, out, err) = run(&["solve", "-m", &long, "-v", "1,2"]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(
+        err.len() < 3000 && err.contains("characters cut"),
+        "{} bytes",
+        err.len()
+    );
+    assert!(err.contains("is not a number"), "{err}");
+    // Not a timing assertion on the machine: a quadratic parse took over a minute here.
+    assert!(start.elapsed().as_secs() < 30);
+}
+
+#[test]
+fn write_errors_name_the_path() {
+    if !std::path::Path::new("/dev/full").exists() {
+        return;
+    }
+    let (code, _, err) = run(&[
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "e=0:1:11",
+        "-o",
+        "/dev/full",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("cannot write /dev/full: "), "{err}");
+}
+
+#[test]
+fn frames_are_for_the_velocity_diagram() {
+    for kind in ["newton", "minkowski"] {
+        let (code, out, err) = run(&[
+            "plot", "-m", "4,1", "-v", "60,10", "--kind", kind, "--frames",
+        ]);
+        assert_eq!(code, 2, "{kind}");
+        assert!(out.is_empty());
+        assert!(err.contains("--frames overlays"), "{err}");
+    }
+}
+
+#[test]
+fn scene_titles_cannot_send_escape_sequences() {
+    let scene = scratch(
+        "title.toml",
+        "title = \"a\\u001b[31mred\"\nmasses = [4, 1]\nvelocities = [60, 10]\n",
+    );
+    let (code, out, _) = run(&["scene", scene.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(
+        !out.contains('\u{1b}') && out.starts_with("a\\u{1b}[31mred"),
+        "{out}"
+    );
+    std::fs::remove_file(scene).unwrap();
+}

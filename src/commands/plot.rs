@@ -15,6 +15,13 @@ use super::Outcome;
 use crate::cli::PlotArgs;
 
 pub fn run(args: PlotArgs) -> Result<Outcome> {
+    if args.frames && args.kind != Kind::Velocity {
+        anyhow::bail!(
+            "--frames overlays the standard frames on the velocity diagram; --kind {} draws \
+             world lines in one frame (choose it with --frame)",
+            format!("{:?}", args.kind).to_lowercase()
+        );
+    }
     let case = args.case.into_case()?;
     check_drawable(&case, &args.frame)?;
     let stdout = match (&args.output, args.term) {

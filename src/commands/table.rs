@@ -70,11 +70,15 @@ fn open(table: &TableArgs) -> Result<Output> {
 }
 
 fn output_error(table: &TableArgs, e: std::io::Error) -> anyhow::Error {
-    let path = table
+    anyhow::Error::new(e).context(format!("cannot write {}", target(table)))
+}
+
+/// `-o`'s path, or stdout.
+fn target(table: &TableArgs) -> String {
+    table
         .output
         .as_ref()
-        .map_or("stdout".into(), |p| p.display().to_string());
-    anyhow::anyhow!("cannot write {path}: {e}")
+        .map_or("stdout".into(), |p| p.display().to_string())
 }
 
 /// Ends a table run: commits the output when complete (a bad row leaves no file behind), and
@@ -97,14 +101,17 @@ fn finish(
             };
             return Err(anyhow::anyhow!("{e}{hint}"));
         }
-        Err(RowsError::Io(e)) => return Err(e.into()),
+        // Named by path; the io::Error stays in the chain (a closed stdout is no error).
+        Err(RowsError::Io(e)) => {
+            return Err(output_error(table, e));
+        }
     };
     out.commit().map_err(|e| output_error(table, e))?;
     if summary.skipped > 0 {
-        eprintln!(
+        collide::output::diagnostic(format_args!(
             "{} rows written, {} bad rows skipped",
             summary.rows, summary.skipped
-        );
+        ));
     }
     Ok(Outcome::print(String::new()))
 }

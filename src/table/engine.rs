@@ -132,7 +132,7 @@ pub fn write_chunks<C: Send>(
             summary.rows += c.rows;
             progress.advance(c.rows + c.skipped.len() as u64);
             for s in &c.skipped {
-                eprintln!("skipped {s}");
+                crate::output::diagnostic(format_args!("skipped {s}"));
             }
             summary.skipped += c.skipped.len() as u64;
             if let Some(stop) = c.stop {
