@@ -22,7 +22,8 @@ pub enum Output {
 
 impl Output {
     pub fn open(path: Option<&Path>) -> io::Result<Output> {
-        let Some(path) = path else {
+        // `-o -` is stdout, as for most tools.
+        let Some(path) = path.filter(|p| *p != Path::new("-")) else {
             return Ok(Output::Stdout(io::stdout().lock()));
         };
         // Follow a symlink to the file it names, so the rename replaces that file, not the link.

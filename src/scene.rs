@@ -144,6 +144,31 @@ pub struct About {
     pub expect: Vec<Expectation>,
 }
 
+/// Largest scene file read (`/dev/zero` or a stray binary is refused, not read forever).
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// A scene file's text, at most [`MAX_SCENE_BYTES`].
+fn read_capped(path: &Path) -> Result<String, String> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot read scene file: {e}"))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_SCENE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read scene file: {e}"))?;
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(format!(
+            "the scene file is larger than {} bytes (1 MiB): a scene is a short TOML file",
+            MAX_SCENE_BYTES
+        ));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "the scene file is not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        )
+    })
+}
+
 /// Text with its control characters escaped (`\u{1b}`): a shared scene cannot send escape
 /// sequences to a terminal.
 fn printable(text: &str) -> String {
@@ -269,10 +294,10 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 impl Scene {
     /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]` or a `[contact]`.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+        let text = read_capped(path).map_err(|message| SceneError {
             path: path.to_path_buf(),
             at: None,
-            message: format!("cannot read scene file: {e}"),
+            message,
         })?;
         if has_table(&text, "contact") {
             ContactScene::parse(path, &text).map(AnyScene::Contact)

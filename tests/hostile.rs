@@ -252,3 +252,83 @@ fn scene_titles_cannot_send_escape_sequences() {
     );
     std::fs::remove_file(scene).unwrap();
 }
+
+#[test]
+fn scene_files_are_read_with_a_size_cap() {
+    if !std::path::Path::new("/dev/zero").exists() {
+        return;
+    }
+    let (code, out, err) = run(&["scene", "/dev/zero"]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(
+        err.contains("/dev/zero: the scene file is larger than 1048576 bytes"),
+        "{err}"
+    );
+    let binary = scratch("binary.toml", "");
+    std::fs::write(&binary, b"title = \"\xff\"\n").unwrap();
+    let (code, _, err) = run(&["scene", binary.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("not UTF-8"), "{err}");
+    std::fs::remove_file(binary).unwrap();
+}
+
+#[test]
+fn dash_o_dash_is_stdout() {
+    let (code, out, _) = run(&[
+        "sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3", "-o", "-",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(out.lines().count(), 4, "{out}");
+    assert!(!std::path::Path::new("-").exists());
+}
+
+#[test]
+fn one_bad_scene_among_several_does_not_stop_the_others() {
+    let bad = scratch("bad-among.toml", "masses = [4]\nvelocities = [60, 10]\n");
+    let bad = bad.to_str().unwrap();
+    let (code, out, err) = run(&[
+        "scene",
+        "scenarios/fig-1-3-elastic.toml",
+        bad,
+        "scenarios/superball-2.toml",
+    ]);
+    assert_eq!(code, 2, "the worst status");
+    assert!(
+        out.contains("2 scenes: 2 pass, 0 fail")
+            && out.contains("1 scene file could not be solved"),
+        "{out}"
+    );
+    assert!(
+        err.contains(&format!("{bad}:1:10: invalid length 1")),
+        "{err}"
+    );
+    let (code, out, _) = run(&["scene", bad, bad]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    std::fs::remove_file(bad).unwrap();
+}
+
+#[test]
+fn a_sweep_too_large_is_refused_before_anything_is_computed() {
+    let start = std::time::Instant::now();
+    let (code, out, err) = run(&[
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "v1=1e-30:1e30:4000000",
+        "--max-rows",
+        "1",
+    ]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(
+        err.contains("4.000e6 rows, more than --max-rows 1"),
+        "{err}"
+    );
+    // Generous: it took over 60 s when the 4 M values were computed first.
+    assert!(start.elapsed().as_secs() < 20);
+}

@@ -28,25 +28,46 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
         };
         return table::run_sweep(&scene.case, &sw.grid, Shard::WHOLE, &table);
     }
-    // Load and solve every scene first: a bad file is an error before anything is printed.
+    // Load and solve every scene first. With several files a bad one is reported on stderr by
+    // name and the others still run; the exit status is the worst (2 for a bad file).
     let mut listed = Vec::new();
     let mut checked = Vec::new();
+    let mut bad = 0usize;
     for p in &args.files {
-        match Scene::load_any(p)? {
-            // Among several files a [sweep] scene is listed, not written.
-            AnyScene::Case(Scene {
-                sweep: Some(sw),
-                about,
-                ..
-            }) => listed.push(Listed {
-                path: about.path,
-                rows: sw.grid.total,
-                title: about.title,
-            }),
-            AnyScene::Case(scene) => checked.push(solve(scene)?),
-            AnyScene::Track(scene) => checked.push(solve_track(scene)?),
-            AnyScene::Contact(scene) => checked.push(solve_contact(scene)?),
+        let mut one = || -> Result<Option<Checked>> {
+            Ok(match Scene::load_any(p)? {
+                // Among several files a [sweep] scene is listed, not written.
+                AnyScene::Case(Scene {
+                    sweep: Some(sw),
+                    about,
+                    ..
+                }) => {
+                    listed.push(Listed {
+                        path: about.path,
+                        rows: sw.grid.total,
+                        title: about.title,
+                    });
+                    None
+                }
+                AnyScene::Case(scene) => Some(solve(scene)?),
+                AnyScene::Track(scene) => Some(solve_track(scene)?),
+                AnyScene::Contact(scene) => Some(solve_contact(scene)?),
+            })
+        };
+        match one() {
+            Ok(c) => checked.extend(c),
+            Err(e) if args.files.len() == 1 => return Err(e),
+            Err(e) => {
+                bad += 1;
+                collide::output::diagnostic(format_args!("error: {e:#}"));
+            }
         }
+    }
+    if bad > 0 && checked.is_empty() && listed.is_empty() {
+        anyhow::bail!(
+            "none of the {} scene files could be solved",
+            args.files.len()
+        );
     }
     let failed = checked.iter().any(Checked::failed);
     let stdout = match args.format {
@@ -54,9 +75,21 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
         Format::Text if checked.len() == 1 => report::text(&checked[0]),
         Format::Text => report::summary(&checked, &listed),
     };
+    let stdout = if bad > 0 && args.format == Format::Text && checked.len() != 1 {
+        let files = if bad == 1 { "file" } else { "files" };
+        stdout + &format!("{bad} scene {files} could not be solved (see stderr)\n")
+    } else {
+        stdout
+    };
     Ok(Outcome {
         stdout,
-        status: if failed { 1 } else { 0 },
+        status: if bad > 0 {
+            2
+        } else if failed {
+            1
+        } else {
+            0
+        },
     })
 }
 

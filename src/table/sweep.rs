@@ -75,8 +75,9 @@ pub enum VaryError {
     EmptyList(String),
 }
 
-/// Values more numerous than this are computed when needed instead of stored.
-const STORED: u64 = 1 << 22;
+/// Values more numerous than this are computed when needed instead of stored (a huge --vary is
+/// refused by --max-rows before any value is computed).
+const STORED: u64 = 1 << 16;
 
 /// The values of one `--vary`.
 #[derive(Clone, Debug, PartialEq)]
