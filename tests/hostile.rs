@@ -332,3 +332,34 @@ fn a_sweep_too_large_is_refused_before_anything_is_computed() {
     // Generous: it took over 60 s when the 4 M values were computed first.
     assert!(start.elapsed().as_secs() < 20);
 }
+
+#[test]
+fn a_jsonl_line_that_is_not_utf8_is_one_bad_row() {
+    let input = scratch("bad.jsonl", "");
+    std::fs::write(
+        &input,
+        b"\xff\xfe{\"m1\":1}\n{\"m1\":4,\"m2\":1,\"v1\":60,\"v2\":10}\r\n\n{\"m1\":6,\"m2\":1,\"v1\":3,\"v2\":-4}\n",
+    )
+    .unwrap();
+    let path = input.to_str().unwrap();
+    let (code, out, err) = run(&[
+        "batch",
+        path,
+        "--input-format",
+        "jsonl",
+        "--skip-bad",
+        "--columns",
+        "fin1,fin2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, "fin1,fin2\n40.0,90.0\n1.0,8.0\n");
+    assert!(
+        err.contains("skipped line 1: cannot read: the line is not valid UTF-8"),
+        "{err}"
+    );
+    assert!(err.contains("2 rows written, 1 bad rows skipped"), "{err}");
+    // Without --skip-bad the bad line stops the run.
+    let (code, _, err) = run(&["batch", path, "--input-format", "jsonl"]);
+    assert_eq!(code, 2, "{err}");
+    std::fs::remove_file(input).unwrap();
+}

@@ -233,21 +233,39 @@ fn jsonl_rows(
     name: &str,
     default_e: f64,
 ) -> Result<Batch, BatchError> {
-    let mut lines = reader.lines().enumerate().peekable();
-    // The first object decides the layout; every object must have the same keys.
+    // Lines as bytes, each decoded on its own: a line that is not UTF-8 is a bad row at its
+    // line, not the end of the input.
+    let mut lines = reader.split(b'\n').enumerate().map(|(i, bytes)| {
+        let line = bytes.map_err(|e| e.to_string()).and_then(|mut b| {
+            if b.last() == Some(&b'\r') {
+                b.pop();
+            }
+            String::from_utf8(b).map_err(|e| {
+                format!(
+                    "the line is not valid UTF-8 (bad byte at column {})",
+                    e.utf8_error().valid_up_to() + 1
+                )
+            })
+        });
+        (i, line)
+    });
+    // The first readable object decides the layout; every object must have the same keys.
     let mut layout: Option<Layout> = None;
     let mut general = false;
-    while let Some((i, Ok(l))) = lines.peek() {
-        if l.trim().is_empty() {
-            lines.next();
-            continue;
-        }
+    let mut head = Vec::new();
+    for (i, l) in lines.by_ref() {
+        let first = match &l {
+            Ok(text) if !text.trim().is_empty() => Some(text.clone()),
+            _ => None,
+        };
+        head.push((i, l));
+        let Some(first) = first else { continue };
         let at = |problem: RowProblem| BatchError::Layout {
             name: name.to_string(),
             place: format!("line {}", i + 1),
             problem,
         };
-        let keys = object(l)
+        let keys = object(&first)
             .map(|o| o.into_keys().collect::<Vec<_>>())
             .map_err(at)?;
         let l = Layout::of(&keys).map_err(|e| at(e.into()))?;
@@ -255,6 +273,7 @@ fn jsonl_rows(
         layout = Some(l);
         break;
     }
+    let lines = head.into_iter().chain(lines);
     let rows = lines.filter_map(move |(i, l)| {
         let line = i as u64 + 1;
         let err = |problem: RowProblem| RowError {
@@ -263,7 +282,7 @@ fn jsonl_rows(
         };
         let l = match l {
             Ok(l) => l,
-            Err(e) => return Some(Err(err(RowProblem::Read(e.to_string())))),
+            Err(e) => return Some(Err(err(RowProblem::Read(e)))),
         };
         if l.trim().is_empty() {
             return None;
