@@ -363,3 +363,28 @@ fn a_jsonl_line_that_is_not_utf8_is_one_bad_row() {
     assert_eq!(code, 2, "{err}");
     std::fs::remove_file(input).unwrap();
 }
+
+#[test]
+fn log_steps_from_the_subnormal_range_do_not_overflow() {
+    // 1e-310 to 1e300 in 7 log steps: 10^(-310 + 610 i / 6), all representable. Expected to 15
+    // digits: 10^(2/3) = 4.64158883361278, 10^(1/3) = 2.15443469003188.
+    let (code, out, err) = run(&[
+        "sweep",
+        "-m",
+        "1,1",
+        "-v",
+        "1,1e-300",
+        "--vary",
+        "v2=1e-310:1e300:7:log",
+        "--skip-bad",
+        "--columns",
+        "v2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("skipped"), "{err}");
+    assert_eq!(
+        out,
+        "v2\n1e-310\n4.64158883361278e-209\n2.15443469003188e-107\n0.00001\n\
+         4.64158883361278e96\n2.15443469003188e198\n1e300\n"
+    );
+}

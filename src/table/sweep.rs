@@ -210,8 +210,44 @@ fn log(from: &BigRational, to: &BigRational, decades: Option<i64>, count: u64, i
         ));
         return f(&if j >= 0 { from * p } else { from / p });
     }
+    if let Some(k) = decades {
+        // 10^(i k / steps) = 10^whole 10^r: the whole decades exactly, only 10^r (0 <= r < 1)
+        // in binary64, so no ratio over- or underflows (1e-310 to 1e300) and the error stays
+        // an ulp or two.
+        let n = i as i64 * k;
+        let (whole, rem) = (n.div_euclid(steps), n.rem_euclid(steps));
+        let a = f(from);
+        let base = if whole.abs() <= 22 && a.is_normal() {
+            // 10^whole is exact in binary64 here: one rounding, no big numbers.
+            if whole >= 0 {
+                a * 10f64.powi(whole as i32)
+            } else {
+                a / 10f64.powi(-whole as i32)
+            }
+        } else {
+            let p = BigRational::from_integer(num_traits::pow(
+                num_bigint::BigInt::from(10),
+                whole.unsigned_abs() as usize,
+            ));
+            f(&if whole >= 0 { from * p } else { from / p })
+        };
+        let x = base * 10f64.powf(rem as f64 / steps as f64);
+        return format!("{x:.14e}").parse().unwrap_or(x);
+    }
     let t = i as f64 / steps as f64;
-    let x = f(from) * (f(to) / f(from)).powf(t);
+    let (a, b) = (f(from), f(to));
+    let ratio = b / a;
+    let x = if ratio.is_normal() && a.is_normal() {
+        a * ratio.powf(t)
+    } else {
+        // The ratio over- or underflows (1e-310 to 1e300): interpolate the exponents instead.
+        // Whole decades apart from the fraction, so no power is taken of a large number.
+        let (la, lb) = (a.log10(), b.log10());
+        let e = la + t * (lb - la);
+        let n = e.floor();
+        let m = 10f64.powf(e - n);
+        format!("{m:.16}e{n}").parse().unwrap_or(f64::NAN)
+    };
     format!("{x:.14e}").parse().unwrap_or(x)
 }
 
