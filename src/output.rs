@@ -26,21 +26,38 @@ impl Output {
         let Some(path) = path.filter(|p| *p != Path::new("-")) else {
             return Ok(Output::Stdout(io::stdout().lock()));
         };
-        // Follow a symlink to the file it names, so the rename replaces that file, not the link.
-        let path = match std::fs::metadata(path) {
+        // Follow symlinks (a dangling one too) to the file they name, so the rename replaces
+        // that file, not the link.
+        let path = through_links(path)?;
+        let mut keep = None;
+        let path = match std::fs::metadata(&path) {
             Ok(m) if !m.is_file() => {
-                let file = std::fs::OpenOptions::new().write(true).open(path)?;
+                let file = std::fs::OpenOptions::new().write(true).open(&path)?;
                 return Ok(Output::Direct(BufWriter::with_capacity(1 << 20, file)));
             }
-            Ok(_) => std::fs::canonicalize(path)?,
-            Err(_) => path.to_path_buf(),
+            Ok(m) => {
+                // Refuse where the shell's `>` would (a file we may not write), and give the
+                // new file the old one's permission bits.
+                std::fs::OpenOptions::new().write(true).open(&path)?;
+                keep = Some(m.permissions());
+                std::fs::canonicalize(&path)?
+            }
+            Err(_) => path,
         };
-        let name = path
+        // `.NAME.PID.partial`, with NAME cut so that a legal 255-byte name still has room.
+        let mut name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
+        while name.len() > 200 {
+            name.pop();
+        }
         let tmp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
-        let file = BufWriter::with_capacity(1 << 20, File::create(&tmp)?);
+        let created = File::create(&tmp)?;
+        if let Some(permissions) = keep {
+            created.set_permissions(permissions)?;
+        }
+        let file = BufWriter::with_capacity(1 << 20, created);
         Ok(Output::File {
             tmp,
             path,
@@ -100,6 +117,25 @@ impl Drop for Output {
             let _ = std::fs::remove_file(tmp);
         }
     }
+}
+
+/// `path`, or the file its chain of symlinks names (relative links read from their folder),
+/// whether or not that file exists yet.
+fn through_links(path: &Path) -> io::Result<PathBuf> {
+    let mut path = path.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&path) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let target = std::fs::read_link(&path)?;
+                path = match path.parent() {
+                    Some(dir) if target.is_relative() => dir.join(target),
+                    _ => target,
+                };
+            }
+            _ => return Ok(path),
+        }
+    }
+    Err(io::Error::other("too many levels of symbolic links"))
 }
 
 /// A progress bar on stderr for runs longer than about a second, only on a terminal (never in

@@ -388,3 +388,55 @@ fn log_steps_from_the_subnormal_range_do_not_overflow() {
          4.64158883361278e96\n2.15443469003188e198\n1e300\n"
     );
 }
+
+#[test]
+fn dash_o_treats_files_as_the_shell_does() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = std::env::temp_dir().join(format!("collide-hostile-o-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let sweep = |out: &std::path::Path| {
+        let (code, _, err) = run(&[
+            "sweep",
+            "-m",
+            "4,1",
+            "-v",
+            "60,10",
+            "--vary",
+            "e=0:1:3",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 0, "{err}");
+    };
+    // A dangling symlink: its target is created, the link stays a link.
+    let link = dir.join("link.csv");
+    std::os::unix::fs::symlink("real.csv", &link).unwrap();
+    sweep(&link);
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("real.csv"))
+            .unwrap()
+            .lines()
+            .count(),
+        4
+    );
+    // An existing file keeps its permission bits.
+    let kept = dir.join("kept.csv");
+    std::fs::write(&kept, "old\n").unwrap();
+    std::fs::set_permissions(&kept, std::fs::Permissions::from_mode(0o640)).unwrap();
+    sweep(&kept);
+    assert_eq!(
+        std::fs::metadata(&kept).unwrap().permissions().mode() & 0o777,
+        0o640
+    );
+    // A legal 254-byte name (the temporary file's name must fit too).
+    let long = dir.join(format!("{}.csv", "a".repeat(250)));
+    sweep(&long);
+    assert!(long.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
