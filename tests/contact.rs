@@ -575,3 +575,49 @@ fn contact_scenes_pass_and_bad_ones_are_located() {
         std::fs::remove_file(&path).unwrap();
     }
 }
+
+#[test]
+fn odd_layouts_are_refused_or_handled() {
+    // Points cannot overlap without passing through each other.
+    refused(&args("-m 1,1 -x 0,1 -v 1,0"), "body 1 has size 0");
+    // Contacts far too short for binary64 stepping are refused at once, not run to the cap.
+    refused(
+        &args("-m 1e300,1e-300 -x 0,1 --sizes 1,1 -v 1,0"),
+        "too short to integrate",
+    );
+    // A light body (contact time 3e-12, under diffsol's default 1e-13 floor on steps):
+    // elastic, so v2 = 2 m1 / (m1 + m2) = 2 to 1e-8.
+    let j = run(&args("-m 1,1e-24 -x 0,1 --sizes 1,1 -v 1,0"));
+    assert!((floats(&j["v"])[1] - 2.0).abs() < 1e-8, "{}", j["v"]);
+    // --until 0 with a contact under way at the start: the state at 0.
+    let j = run(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --until 0"));
+    assert_eq!(floats(&j["v"]), vec![1.0, 0.0]);
+    assert_eq!(j["stop"], "until");
+    // Huge values in messages are short.
+    refused(
+        &args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --method rk4 --dt 1e300"),
+        "--dt 1e300 is unstable",
+    );
+}
+
+#[test]
+fn a_large_common_velocity_does_not_swamp_the_contact() {
+    // Case: zeta = 0.2 between equal bodies, relative speed 1, both moving at about 1e8. The
+    // loss is mu u^2 (1 - e^2) / 2 = (1 - e^2) / 4 whatever the common velocity (it was printed
+    // as 0 when the lab energies, 1e16, were subtracted).
+    let e = linear_closed(1.0, 0.5, 0.2, 1.0).1;
+    let j = run(&args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 100000001,100000000 --zeta 0.2 --tol 1e-12",
+    ));
+    rel(
+        f(&j["energy"]["dissipated"]),
+        (1.0 - e * e) / 4.0,
+        1e-9,
+        "dissipated",
+    );
+    rel(f(&j["contacts"][0]["restitution"]), e, 1e-9, "e");
+    let v = floats(&j["v"]);
+    // Each velocity to the binary64 resolution of 1e8 (1.5e-8) and the 1e-9 contact accuracy.
+    assert!((v[0] - (1e8 + 1.0 - (1.0 + e) / 2.0)).abs() < 3e-8, "{v:?}");
+    assert!((v[1] - (1e8 + (1.0 + e) / 2.0)).abs() < 3e-8, "{v:?}");
+}
