@@ -56,7 +56,7 @@ fn main() -> anyhow::Result<()> {
             "  KE_IN = {}, KE_FIN = {}, KE_COM = {}",
             en.ke_in, en.fin, en.com
         );
-        println!("  crunch = {}, lost = {}", en.crunch, en.lost);
+        println!("  crunch = {}, lost = {}", en.crunch, en.lost_signed());
         println!("  IN ellipse a = {:.2}, b = {:.2}", el.e_in.a, el.e_in.b);
         println!("  COM ellipse a = {:.2}, b = {:.2}", el.com.a, el.com.b);
     }

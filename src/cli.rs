@@ -184,11 +184,12 @@ pub struct TrackArgs {
     pub layout: LayoutArgs,
 
     /// Restitution between bodies: a number in [0, 1], 'elastic' or 'inelastic'
-    #[arg(short = 'e', long, value_name = "E", default_value = "elastic")]
+    #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
+          value_parser = Restitution::parse_dissipative)]
     pub restitution: Restitution,
 
     /// Restitution at the walls [default: the same as between bodies]
-    #[arg(long, value_name = "E")]
+    #[arg(long, value_name = "E", value_parser = Restitution::parse_dissipative)]
     pub wall_restitution: Option<Restitution>,
 
     /// Uniform acceleration toward the left (the left wall is a floor, positions are heights)
@@ -389,7 +390,7 @@ pub struct CaseArgs {
           allow_hyphen_values = true)]
     pub velocities: Pair,
 
-    /// Coefficient of restitution in [0, 1], 'elastic' (1) or 'inelastic' (0), or '?' (solve)
+    /// Coefficient of restitution e >= 0: 'elastic' (1), 'inelastic' (0), above 1 superelastic (energy released), or '?' (solve)
     /// [default: elastic; unknown when --fin is given]
     #[arg(short = 'e', long, value_name = "E", allow_hyphen_values = true,
           value_parser = |s: &str| Given::parse(s, str::parse::<Restitution>))]
@@ -427,6 +428,11 @@ pub struct SolveArgs {
     /// Also print the time-reversed collision (IN' = -FIN, FIN' = -IN)
     #[arg(long)]
     pub reverse: bool,
+
+    /// How long the bodies touch, e.g. '2 ms' or 0.01 (seconds; units s, ms, us): the changes
+    /// section then gives the average force dp / T on each body
+    #[arg(long, value_name = "T", value_parser = |s: &str| collide::units::seconds(s))]
+    pub contact_time: Option<num_rational::BigRational>,
 
     /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
     /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest

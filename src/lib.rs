@@ -32,10 +32,12 @@ pub mod quantity;
 pub mod units;
 
 // 2. two-body physics
+pub mod changes;
 pub mod collision;
 pub mod ellipse;
 pub mod inertia;
 pub mod restitution;
+pub mod separation;
 
 // 3. what the user asked
 pub mod case;

@@ -9,6 +9,7 @@ use crate::case::Case;
 use crate::inertia::{InertiaError, InertiaTensor, Mass, MassError};
 use crate::number::{Given, Number, NumberError};
 use crate::restitution::{Restitution, RestitutionError};
+use crate::separation::Separation;
 use crate::units::{Pair, ResolveError, Units, resolve};
 use crate::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
 
@@ -24,6 +25,17 @@ pub struct Problem {
     pub restitution: Option<Given<Restitution>>,
     /// Convert to kg and m/s.
     pub si: bool,
+}
+
+/// What a solved problem describes.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)] // one per run
+pub enum Posed {
+    /// A collision (with what was solved, when the problem had unknowns or gave FIN).
+    Collision(Case, Option<Solved>),
+    /// Bodies that start together and are pushed apart: `e` is undefined (an explosion, a
+    /// recoil, a released spring).
+    Separation(Separation, Solved),
 }
 
 /// Why a problem cannot be solved.
@@ -71,15 +83,15 @@ impl Problem {
         if self.has_unknowns() {
             return Err(ProblemError::UnknownsOnlyInSolve);
         }
-        Ok(self.solve(inertia)?.0)
+        match self.solve(inertia)? {
+            Posed::Collision(case, _) => Ok(case),
+            Posed::Separation(..) => Err(ProblemError::UnknownsOnlyInSolve),
+        }
     }
 
     /// Resolves units and solves any unknowns; returns the case, and what was solved when the
-    /// problem had unknowns or gave FIN.
-    pub fn solve(
-        &self,
-        inertia: Option<InertiaTensor>,
-    ) -> Result<(Case, Option<Solved>), ProblemError> {
+    /// problem had unknowns or gave FIN (or the separation, when the bodies start together).
+    pub fn solve(&self, inertia: Option<InertiaTensor>) -> Result<Posed, ProblemError> {
         let masses: Vec<_> = self.masses.as_ref().map_or(Vec::new(), |p| p.0.to_vec());
         if masses.is_empty() && inertia.is_none() {
             return Err(ProblemError::NoMasses);
@@ -96,7 +108,7 @@ impl Problem {
         };
         if !(self.fin.is_some() || self.has_unknowns()) {
             let case = build(&m, &v, e, inertia, units)?;
-            return Ok((case, None));
+            return Ok(Posed::Collision(case, None));
         }
         if inertia.is_some() || m.is_empty() {
             return Err(ProblemError::UnknownsNeedMasses);
@@ -116,16 +128,39 @@ impl Problem {
         let exact: [Option<BigRational>; 7] =
             std::array::from_fn(|i| known[i].known().map(Number::exact));
         let solved = solve_unknowns(exact)?;
+        // A value as typed when it was given (the header repeats it), else its solved fraction.
         let number = |var: Var| -> Result<Given<Number>, ProblemError> {
-            let text = crate::quantity::fraction(solved.get(var));
+            if let Some(n) = known[var as usize].known() {
+                return Ok(Given::Known(n.clone()));
+            }
+            // A terminating decimal when there is one (`1.16`, not `29/25`); exact either way.
+            let q = solved.get(var);
+            let text = crate::quantity::terminating_decimal(q)
+                .filter(|t| t.len() <= 40)
+                .unwrap_or_else(|| crate::quantity::fraction(q));
             text.parse::<Number>()
                 .map(Given::Known)
                 .map_err(|error| ProblemError::Solved { var, text, error })
         };
         let m = vec![number(Var::M1)?, number(Var::M2)?];
         let v = vec![number(Var::V1)?, number(Var::V2)?];
+        if solved.separation {
+            let need =
+                |x: Given<Number>| x.known().cloned().ok_or(ProblemError::UnknownsOnlyInSolve);
+            let [m1, m2] = [
+                Mass::new(need(m[0].clone())?)?,
+                Mass::new(need(m[1].clone())?)?,
+            ];
+            let separation = Separation {
+                masses: [m1.number().clone(), m2.number().clone()],
+                velocities: [need(v[0].clone())?, need(v[1].clone())?],
+                fin: [solved.get(Var::F1).clone(), solved.get(Var::F2).clone()],
+                units,
+            };
+            return Ok(Posed::Separation(separation, solved));
+        }
         let case = build(&m, &v, number(Var::E)?, None, units)?;
-        Ok((case, Some(solved)))
+        Ok(Posed::Collision(case, Some(solved)))
     }
 }
 

@@ -26,6 +26,9 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     fn neg(&self) -> Self;
     /// `1/x`, `None` for 0.
     fn recip(&self) -> Option<Self>;
+    /// An exact rational in this arithmetic: rounded once to binary64 (not representable: NaN,
+    /// reported by name), or kept exact.
+    fn of_rational(q: &BigRational) -> Self;
 }
 
 impl Scalar for f64 {
@@ -43,6 +46,9 @@ impl Scalar for f64 {
     }
     fn recip(&self) -> Option<f64> {
         (*self != 0.0).then(|| 1.0 / self)
+    }
+    fn of_rational(q: &BigRational) -> f64 {
+        to_f64(q).unwrap_or(f64::NAN)
     }
 }
 
@@ -106,6 +112,9 @@ impl Scalar for Exact {
     }
     fn recip(&self) -> Option<Exact> {
         (!self.rational().is_zero()).then(|| self.with(self.rational().recip()))
+    }
+    fn of_rational(q: &BigRational) -> Exact {
+        Exact::Rational(q.clone())
     }
 }
 

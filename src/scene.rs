@@ -28,9 +28,10 @@ use crate::expect::{ExpectError, Expectation};
 use crate::frame::Frame;
 use crate::inertia::InertiaTensor;
 use crate::number::{Given, Number};
-use crate::problem::Problem;
+use crate::problem::{Posed, Problem};
 use crate::report::{Section, Sections};
-use crate::restitution::Restitution;
+use crate::restitution::{Restitution, RestitutionError};
+use crate::separation::Separation;
 use crate::table::columns::Column;
 use crate::table::sweep::{DEFAULT_MAX_ROWS, Grid};
 use crate::table::writer::RowFormat;
@@ -51,6 +52,7 @@ struct SceneFile {
     restitution: Option<Spanned<Typed>>,
     si: Option<bool>,
     show: Option<Vec<Section>>,
+    contact_time: Option<Spanned<String>>,
     exact: Option<bool>,
     frame: Option<Frame>,
     sweep: Option<Spanned<SweepTable>>,
@@ -252,11 +254,22 @@ pub struct Scene {
     pub solved: Option<Solved>,
 }
 
+/// A two-body scene whose bodies start together and are pushed apart (`e` undefined).
+#[derive(Clone, Debug)]
+pub struct SeparationScene {
+    pub about: About,
+    pub separation: Separation,
+    pub solved: Solved,
+    pub show: Sections,
+    pub exact: bool,
+}
+
 /// A scene file of either kind.
 #[derive(Clone, Debug)]
 #[allow(clippy::large_enum_variant)] // one per file, loaded once
 pub enum AnyScene {
     Case(Scene),
+    Separation(SeparationScene),
     Track(TrackScene),
     Contact(ContactScene),
 }
@@ -304,12 +317,25 @@ impl Scene {
         } else if has_table(&text, "track") {
             TrackScene::parse(path, &text).map(AnyScene::Track)
         } else {
-            Scene::parse(path, &text).map(AnyScene::Case)
+            Scene::parse_any(path, &text)
         }
     }
 
-    /// Parses scene text; `path` names it in errors.
+    /// Parses the text of a two-body scene (a collision); `path` names it in errors.
     pub fn parse(path: &Path, text: &str) -> Result<Scene, SceneError> {
+        match Scene::parse_any(path, text)? {
+            AnyScene::Case(scene) => Ok(scene),
+            _ => Err(located(
+                path,
+                text,
+                None,
+                "the bodies start together and come apart: a separation, not a collision".into(),
+            )),
+        }
+    }
+
+    /// Parses the text of a two-body scene: a collision, or a separation.
+    fn parse_any(path: &Path, text: &str) -> Result<AnyScene, SceneError> {
         let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
         let file: SceneFile = from_toml(path, text)?;
         let masses = match (&file.masses, &file.inertia) {
@@ -370,9 +396,54 @@ impl Scene {
             .as_ref()
             .map(|m| m.span())
             .or(file.inertia.as_ref().map(|t| t.span()));
-        let (case, solved) = problem
+        let posed = problem
             .solve(inertia)
             .map_err(|e| err(span, format!("{e:#}")))?;
+        let contact_time = match &file.contact_time {
+            None => None,
+            Some(t) => Some(
+                crate::units::seconds(t.get_ref())
+                    .map_err(|e| err(Some(t.span()), format!("contact_time: {e}")))?,
+            ),
+        };
+        let mut show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
+        show.contact_time = contact_time;
+        let (case, solved) = match posed {
+            Posed::Collision(case, solved) => (case, solved),
+            Posed::Separation(separation, solved) => {
+                let extra = [
+                    file.sweep.as_ref().map(|_| "[sweep]"),
+                    file.plot.as_ref().map(|_| "[plot]"),
+                    file.frame
+                        .as_ref()
+                        .filter(|f| **f != Frame::Lab)
+                        .map(|_| "frame"),
+                ];
+                if let Some(key) = extra.into_iter().flatten().next() {
+                    return Err(err(
+                        None,
+                        format!(
+                            "{key}: the bodies start together and are pushed apart (a separation, \
+                             e undefined), which has no {key}"
+                        ),
+                    ));
+                }
+                let about = About::new(
+                    (path, text),
+                    file.title,
+                    file.source,
+                    file.expect,
+                    separation_key,
+                )?;
+                return Ok(AnyScene::Separation(SeparationScene {
+                    about,
+                    separation,
+                    solved,
+                    show,
+                    exact: file.exact.unwrap_or(false),
+                }));
+            }
+        };
         let sweep = match file.sweep {
             None => None,
             Some(t) => {
@@ -407,7 +478,6 @@ impl Scene {
                 })
             }
         };
-        let show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         let about = About::new(
             (path, text),
             file.title,
@@ -415,7 +485,7 @@ impl Scene {
             file.expect,
             report_key,
         )?;
-        Ok(Scene {
+        Ok(AnyScene::Case(Scene {
             about,
             case,
             show,
@@ -424,7 +494,7 @@ impl Scene {
             sweep,
             plot: file.plot,
             solved,
-        })
+        }))
     }
 
     /// Sections to compute: the shown ones and those the expectations read.
@@ -442,7 +512,27 @@ impl Scene {
 
 /// The quantities an `[expect]` key of a two-body scene may name.
 const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, momentum.*, forms.*, \
-                         energy.*, ellipses.*, products.*, diagnostics.*, solved.*, check.*, units.*";
+                         energy.*, ellipses.*, products.*, changes.*, diagnostics.*, solved.*, \
+                         check.*, units.*";
+
+/// The quantities an `[expect]` key of a separation scene may name.
+const SEPARATION_KEYS: [&str; 11] = [
+    "masses", "in", "com", "fin", "v_com", "momentum", "energy", "changes", "solved", "check",
+    "units",
+];
+
+/// Checks that `top` names a quantity of a separation's report.
+fn separation_key(top: &str) -> Result<(), ExpectError> {
+    if !SEPARATION_KEYS.contains(&top) {
+        return Err(ExpectError::UnknownQuantity {
+            top: top.to_string(),
+            expected: "masses, in, com, fin, v_com, momentum.*, energy.*, changes.*, solved.*, \
+                       check.*, units.* (a separation has no restitution, forms or ellipses)"
+                .to_string(),
+        });
+    }
+    Ok(())
+}
 
 /// Checks that `top`, the first part of an `[expect]` key, names a quantity of a two-body report.
 fn report_key(top: &str) -> Result<(), ExpectError> {
@@ -507,8 +597,8 @@ mod tests {
         assert!(e.message.contains("'x' is not a number"), "{e}");
         let e = parse("masses = [4, 1]\nvelocities = [60]\n").unwrap_err();
         assert_eq!(e.at.map(|a| a.0), Some(2), "{e}");
-        let e = parse("masses = [4, 1]\nvelocities = [60, 1]\nrestitution = 2\n").unwrap_err();
-        assert!(e.message.contains("[0, 1]"), "{e}");
+        let e = parse("masses = [4, 1]\nvelocities = [60, 1]\nrestitution = -2\n").unwrap_err();
+        assert!(e.message.contains("negative"), "{e}");
         let e = parse("masses = [4, 1]\nvelocities = [60, 1]\nshow = [\"vectorz\"]\n").unwrap_err();
         assert!(e.message.contains("vectorz"), "{e}");
         let e = parse("masses = \"4,1\"\nvelocities = [60, 1]\n").unwrap_err();
@@ -541,12 +631,10 @@ mod tests {
             sw.columns,
             crate::table::columns::by_names(&["e", "lost"]).unwrap()
         );
-        let e = parse("masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"e=0:2:3\"]\n")
+        let e = parse("masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"e=-1:1:3\"]\n")
             .unwrap_err();
         assert!(
-            e.message.contains("[sweep]")
-                && e.message.contains("outside [0, 1]")
-                && e.at.unwrap().0 == 3,
+            e.message.contains("[sweep]") && e.message.contains("negative") && e.at.unwrap().0 == 3,
             "{e}"
         );
         let e = parse(
@@ -637,6 +725,12 @@ impl TrackScene {
             [&t.masses, &t.positions, &t.velocities],
             t.sizes.as_ref(),
         )?;
+        for r in [&t.restitution, &t.wall_restitution].into_iter().flatten() {
+            if r.is_superelastic() {
+                let e = RestitutionError::Superelastic(r.to_string());
+                return Err(err(None, format!("[track] {e}")));
+            }
+        }
         let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
         let track = Track {
             bodies,

@@ -12,6 +12,7 @@ use crate::number::{FieldsError, Given, Number, NumberError, split_fields};
 pub enum Dimension {
     Mass,
     Velocity,
+    Time,
 }
 
 impl Dimension {
@@ -20,6 +21,7 @@ impl Dimension {
         match self {
             Dimension::Mass => "mass",
             Dimension::Velocity => "velocity",
+            Dimension::Time => "time",
         }
     }
 }
@@ -113,7 +115,35 @@ pub const UNITS: &[Unit] = &[
         names: &["cm/s"],
         si: "0.01",
     },
+    Unit {
+        dimension: Dimension::Time,
+        names: &["s"],
+        si: "1",
+    },
+    Unit {
+        dimension: Dimension::Time,
+        names: &["ms"],
+        si: "0.001",
+    },
+    Unit {
+        dimension: Dimension::Time,
+        names: &["us", "µs"],
+        si: "0.000001",
+    },
 ];
+
+/// A duration in seconds, exactly: `2 ms`, `0.5 s`, or a bare number of seconds; it must be
+/// above 0 (`--contact-time`).
+pub fn seconds(text: &str) -> Result<BigRational, QuantityError> {
+    let q = parse(text, Dimension::Time)?;
+    let s = q.number.exact()
+        * q.unit
+            .map_or_else(|| BigRational::from_integer(1.into()), Unit::si);
+    if s <= BigRational::from_integer(0.into()) {
+        return Err(QuantityError::NotPositive(text.trim().to_string()));
+    }
+    Ok(s)
+}
 
 /// Names that could mean several things, with how to be explicit.
 const AMBIGUOUS: &[(&str, &str)] = &[
@@ -235,6 +265,8 @@ pub enum QuantityError {
     Number(#[from] NumberError),
     #[error(transparent)]
     Unit(#[from] UnitError),
+    #[error("contact time '{0}' must be above 0 (a duration such as '2 ms' or '0.01 s')")]
+    NotPositive(String),
 }
 
 /// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
@@ -299,6 +331,27 @@ impl Units {
             (Some(m), None) => format!("{m} x (velocity unit)^2"),
             (None, Some(v)) => format!("(mass unit) {v}^2"),
             (None, None) => "mass unit x velocity unit^2".into(),
+        }
+    }
+}
+
+impl Units {
+    /// "N" for kg and m/s, else the impulse unit per second.
+    pub fn force(&self) -> String {
+        if self.mass == Some("kg") && self.velocity == Some("m/s") {
+            "N".into()
+        } else {
+            format!("{} per second", self.impulse())
+        }
+    }
+
+    /// "kg m/s" (momentum, impulse), or the generic description.
+    pub fn impulse(&self) -> String {
+        match (self.mass, self.velocity) {
+            (Some(m), Some(v)) => format!("{m} {v}"),
+            (Some(m), None) => format!("{m} x velocity unit"),
+            (None, Some(v)) => format!("mass unit x {v}"),
+            (None, None) => "mass unit x velocity unit".into(),
         }
     }
 }

@@ -69,9 +69,17 @@ pub struct Solved {
     pub unknowns: Vec<Var>,
     /// `(law, residual)` for each law that was checked rather than used.
     pub checks: Vec<(&'static str, Q)>,
+    /// The bodies start together (`V1 = V2`) and come apart (`f1 != f2`): an explosion or a
+    /// recoil, where `e` is undefined and only momentum holds (`values[E]` means nothing).
+    pub separation: bool,
 }
 
 impl Solved {
+    /// Whether `e` is among the values that mean something (not for a separation).
+    pub fn has(&self, v: Var) -> bool {
+        !(self.separation && v == Var::E)
+    }
+
     pub fn get(&self, v: Var) -> &Q {
         &self.values[v as usize]
     }
@@ -132,6 +140,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
     let set = |x: &mut [Q; 7], v: Var, q: Q| x[v as usize] = q;
     let many = |why: String| Err(UnknownError::Many(why));
     let mut checks = Vec::new();
+    let mut separation = false;
     match unknowns.as_slice() {
         [] => {}
         [u] => {
@@ -141,16 +150,16 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
             } else {
                 (momentum, restitution, "momentum", "restitution")
             };
-            match solve_one(law, &x, *u, lname)? {
-                Some(q) => set(&mut x, *u, q),
-                None if *u == Var::E => {
-                    return many(
-                        "V1 = V2 and f1 = f2: the bodies never meet, so e is not determined".into(),
-                    );
+            if *u == Var::E && starts_together(&x) {
+                separation = apart(&x, "e")?;
+                checks.push(("momentum", momentum(&x)));
+            } else {
+                match solve_one(law, &x, *u, lname)? {
+                    Some(q) => set(&mut x, *u, q),
+                    None => return many(format!("{lname} holds for any {u}")),
                 }
-                None => return many(format!("{lname} holds for any {u}")),
+                checks.push((oname, other(&x)));
             }
-            checks.push((oname, other(&x)));
         }
         [a, b] if *a == Var::E || *b == Var::E => {
             let other = if *a == Var::E { *b } else { *a };
@@ -158,13 +167,10 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
                 Some(q) => set(&mut x, other, q),
                 None => return many(format!("momentum holds for any {other}")),
             }
-            match solve_one(restitution, &x, Var::E, "restitution")? {
-                Some(q) => set(&mut x, Var::E, q),
-                None => {
-                    return many(
-                        "V1 = V2 and f1 = f2: the bodies never meet, so e is not determined".into(),
-                    );
-                }
+            if starts_together(&x) {
+                separation = apart(&x, "e")?;
+            } else if let Some(q) = solve_one(restitution, &x, Var::E, "restitution")? {
+                set(&mut x, Var::E, q);
             }
         }
         [a, b] if a.is_mass() && b.is_mass() => {
@@ -229,7 +235,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         checks.push(("momentum", momentum(&x)));
         checks.push(("restitution", restitution(&x)));
     }
-    // Physical: positive masses, e in [0, 1].
+    // Physical: positive masses, e >= 0 (above 1: superelastic, energy released).
     for m in [Var::M1, Var::M2] {
         if !x[m as usize].is_positive() {
             return Err(UnknownError::Unphysical(format!(
@@ -245,17 +251,36 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
             crate::quantity::fraction(e)
         )));
     }
-    if e > &Q::one() {
-        return Err(UnknownError::Unphysical(format!(
-            "e = {} > 1: the collision would create energy",
-            crate::quantity::fraction(e)
-        )));
-    }
     Ok(Solved {
         values: x,
         unknowns,
         checks,
+        separation,
     })
+}
+
+/// `V1 = V2`: no relative velocity at IN, so restitution cannot say anything about FIN.
+fn starts_together(x: &[Q; 7]) -> bool {
+    x[Var::V1 as usize] == x[Var::V2 as usize]
+}
+
+/// With `V1 = V2`, whether the bodies come apart (`f1 != f2`): an explosion or recoil, where
+/// `e` is undefined; if they stay together nothing happened and `e` is not determined.
+fn apart(x: &[Q; 7], what: &str) -> Result<bool, UnknownError> {
+    if x[Var::F1 as usize] == x[Var::F2 as usize] {
+        return Err(UnknownError::Many(format!(
+            "V1 = V2 and f1 = f2: the bodies never meet or push apart, so {what} is not determined"
+        )));
+    }
+    if x[Var::F1 as usize] > x[Var::F2 as usize] {
+        return Err(UnknownError::Unphysical(format!(
+            "f1 = {} > f2 = {} after starting together: body 1 (on the left) would pass through \
+             body 2",
+            crate::quantity::fraction(&x[Var::F1 as usize]),
+            crate::quantity::fraction(&x[Var::F2 as usize])
+        )));
+    }
+    Ok(true)
 }
 
 #[cfg(test)]
@@ -343,8 +368,12 @@ mod tests {
             "{e}"
         );
         // Bodies passing through each other: f1 > f2 after an approach.
-        let e = run(["4", "1", "60", "10", "?", "?", "1.5"]).unwrap_err();
-        assert!(e.to_string().contains("create energy"), "{e}");
+        // e = 3/2 is superelastic, not refused: FIN (35, 110) releases energy.
+        let s = run(["4", "1", "60", "10", "?", "?", "1.5"]).unwrap();
+        assert_eq!(
+            (show(&s, Var::F1), show(&s, Var::F2)),
+            ("35".into(), "110".into())
+        );
         let e = run(["4", "1", "60", "10", "55", "30", "?"]).unwrap_err();
         assert!(e.to_string().contains("pass through each other"), "{e}");
         // e = 0 with a mass and an IN velocity unknown: restitution cannot fix the velocity.

@@ -167,7 +167,13 @@ fn measure(f: &Family, worst: &mut Worst) {
         worst.add("KE_FIN", en.fin, &xe.fin, mag(&xe.fin), &label);
         worst.add("KE_COM", en.com, &xe.com, mag(&xe.com), &label);
         worst.add("crunch", en.crunch, &xe.crunch, mag(&xe.crunch), &label);
-        worst.add("lost", en.lost, &xe.lost, mag(&xe.lost), &label);
+        worst.add(
+            "lost",
+            en.lost_signed(),
+            &xe.lost_signed(),
+            mag(&xe.lost_signed()),
+            &label,
+        );
 
         let (el, xl) = (r.ellipses.as_ref().unwrap(), x.ellipses.as_ref().unwrap());
         for (a, b) in [(&el.e_in, &xl.e_in), (&el.fin, &xl.fin), (&el.com, &xl.com)] {

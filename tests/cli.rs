@@ -63,12 +63,13 @@ fn bad_velocities_and_restitution() {
         &["'x'", "not a number"],
     );
     refused(
-        &["solve", "-m", "4,1", "-v", "1,2", "-e", "1.5"],
-        &["'1.5'", "[0, 1]"],
-    );
-    refused(
         &["solve", "-m", "4,1", "-v", "1,2", "-e", "-0.5"],
-        &["'-0.5'", "[0, 1]"],
+        &["'-0.5'", "negative", ">= 0"],
+    );
+    // Above 1 is superelastic in solve, but collide track keeps e in [0, 1].
+    refused(
+        &["track", "-m", "1,1", "-x", "0,1", "-v", "1,0", "-e", "1.5"],
+        &["'1.5'", "[0, 1]"],
     );
     refused(
         &["solve", "-m", "4,1", "-v", "1,2", "-e", "bouncy"],
@@ -270,9 +271,14 @@ fn json_keeps_every_key_of_each_requested_section() {
             "forms",
             "energy",
             "ellipses",
-            "products"
+            "products",
+            "changes"
         ]
     );
+    // A general tensor: impulses, but no per-body energies (the cross term belongs to no body).
+    let changes = v["changes"].as_object().unwrap();
+    let keys: Vec<&str> = changes.keys().map(String::as_str).collect();
+    assert_eq!(keys, ["dv", "impulse", "lost_fraction"]);
     for e in ["in", "fin", "com"] {
         assert!(
             v["ellipses"][e]["axes"].is_array(),

@@ -127,8 +127,8 @@ fn no_many_and_unphysical_answers_say_which_and_why() {
         &["unphysical", "pass through each other"],
     );
     refused(
-        &["-m", "4,1", "-v", "60,10", "--fin", "?,?", "-e", "3/2"],
-        &["[0, 1]"],
+        &["-m", "4,1", "-v", "60,10", "--fin", "?,?", "-e", "-3/2"],
+        &["negative"],
     );
     // Equal IN velocities: they never meet, e is not determined.
     refused(

@@ -23,8 +23,15 @@ fn scratch(name: &str, text: &str) -> std::path::PathBuf {
 }
 
 #[test]
-fn a_restitution_above_1_as_typed_is_refused_in_both_modes() {
-    for exact in [false, true] {
+fn a_restitution_above_1_as_typed_is_superelastic_in_both_modes() {
+    // Issue 13 asked that binary64 and --exact accept the same inputs and label them from the
+    // typed value; issue 15 made e > 1 superelastic rather than refused. 1.0000000000000001
+    // rounds to 1 in binary64, but it releases (e^2 - 1) crunch = (2e-16 + 1e-32) 21
+    // = 4.2e-15 + 2.1e-31 (binary64: the exact factor rounded once, times 21).
+    for (exact, released) in [
+        (false, "4.2000000000000004e-15"),
+        (true, "0.00000000000000420000000000000021"),
+    ] {
         let mut args = vec![
             "solve",
             "-m",
@@ -33,17 +40,18 @@ fn a_restitution_above_1_as_typed_is_refused_in_both_modes() {
             "3,-4",
             "-e",
             "1.0000000000000001",
+            "--show",
+            "energy",
         ];
         if exact {
             args.push("--exact");
         }
         let (code, out, err) = run(&args);
-        assert_eq!(code, 2, "exact = {exact}: {out}");
-        assert!(out.is_empty());
-        assert!(
-            err.contains("'1.0000000000000001' is outside [0, 1]"),
-            "{err}"
-        );
+        assert_eq!(code, 0, "exact = {exact}: {err}");
+        assert!(out.contains("(superelastic: energy released)"), "{out}");
+        assert!(!out.contains("conserved") && !out.contains("lost"), "{out}");
+        let line = out.lines().find(|l| l.contains("released =")).unwrap();
+        assert!(line.contains(&format!(" {released} ")), "{line}");
     }
     // Just below 0 as typed, though it rounds to -0.
     let (code, _, err) = run(&["solve", "-m", "6,1", "-v", "3,-4", "-e", "-1e-400"]);

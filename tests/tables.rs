@@ -143,7 +143,7 @@ fn shards_concatenate_to_the_whole() {
 fn sweeps_refuse_what_makes_no_sense() {
     for (vary, needle) in [
         ("e=0:1:0", "empty"),
-        ("e=0:2:3", "outside [0, 1]"),
+        ("e=-1:1:3", "negative"),
         ("m1=-1:1:3", "greater than 0"),
         ("x=0:1:3", "'x' is not a parameter"),
     ] {

@@ -2,9 +2,13 @@
 //! `[sweep]` scene run alone, its table written).
 
 use anyhow::{Context, Result};
+use collide::report::Section;
 use collide::report::scene::{self as report, Checked, Listed};
+use collide::report::separation::AnySeparation;
 use collide::report::{AnyReport, contact as contact_report, json, solved, track as track_report};
-use collide::scene::{About, AnyScene, ContactScene, Scene, SceneError, TrackScene};
+use collide::scene::{
+    About, AnyScene, ContactScene, Scene, SceneError, SeparationScene, TrackScene,
+};
 use collide::table::sweep::Shard;
 use collide::track::TrackReport;
 
@@ -50,6 +54,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                     None
                 }
                 AnyScene::Case(scene) => Some(solve(scene)?),
+                AnyScene::Separation(scene) => Some(solve_separation(scene)?),
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
             })
@@ -106,9 +111,35 @@ fn solve(scene: Scene) -> Result<Checked> {
         text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
     }
     let mut json = result.json();
-    solved::annotate(&mut json, &scene.case, scene.solved.as_ref(), scene.exact);
+    solved::annotate(
+        &mut json,
+        &scene.case.units,
+        scene.solved.as_ref(),
+        scene.exact,
+    );
     let mut checked = check(scene.about, text, json)?;
     checked.inconsistent = scene.solved.as_ref().is_some_and(|s| s.inconsistent());
+    Ok(checked)
+}
+
+fn solve_separation(scene: SeparationScene) -> Result<Checked> {
+    let at = || format!("{}", scene.about.path.display());
+    let mut sections = scene.show.clone();
+    for s in Section::EVERY {
+        sections.insert(s);
+    }
+    let result = AnySeparation::new(&scene.separation, &sections, scene.exact).with_context(at)?;
+    let text =
+        solved::text(&scene.solved, scene.exact) + &result.text(&scene.separation, &scene.show);
+    let mut json = result.json();
+    solved::annotate(
+        &mut json,
+        &scene.separation.units,
+        Some(&scene.solved),
+        scene.exact,
+    );
+    let mut checked = check(scene.about, text, json)?;
+    checked.inconsistent = scene.solved.inconsistent();
     Ok(checked)
 }
 

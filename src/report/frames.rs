@@ -98,7 +98,7 @@ where
             .unwrap_or_else(|| solver.restitution());
         let inv = Invariants {
             crunch: energy.crunch.clone(),
-            lost: energy.lost.clone(),
+            lost: energy.lost_signed(),
             relative_velocity: solver.relative_velocity(),
             restitution: row_e,
         };
@@ -189,7 +189,7 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
                 en.fin.show(),
                 en.com.show(),
                 en.crunch.show(),
-                en.lost.show(),
+                en.lost_signed().show(),
             ]);
         }
         if let Some(same) = r.reverse_equals_original {

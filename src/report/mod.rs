@@ -8,15 +8,18 @@ pub mod frames;
 pub mod json;
 pub mod pi;
 pub mod scene;
+pub mod separation;
 pub mod solved;
 pub mod text;
 pub mod track;
 
 use std::collections::BTreeSet;
 
+use num_rational::BigRational;
 use serde::{Deserialize, Serialize};
 
 use crate::case::Case;
+use crate::changes::Changes;
 use crate::ellipse::Ellipse;
 use crate::frame::Frame;
 use crate::quantity::{Exact, Scalar};
@@ -41,6 +44,8 @@ pub enum Section {
     Ellipses,
     /// Plain dot product V_FIN.V_IN and outer product V_IN (x) V_FIN
     Products,
+    /// Per body: dv, impulse, KE before and after; fraction of KE lost or transferred; average force (--contact-time)
+    Changes,
     /// Self-check: residuals of momentum and energy conservation, and the solve's run time
     Diagnostics,
     /// Every physics section (not diagnostics, whose timing varies run to run)
@@ -48,13 +53,14 @@ pub enum Section {
 }
 
 impl Section {
-    pub const EVERY: [Section; 6] = [
+    pub const EVERY: [Section; 7] = [
         Section::Vectors,
         Section::Momentum,
         Section::Forms,
         Section::Energy,
         Section::Ellipses,
         Section::Products,
+        Section::Changes,
     ];
     /// The design card's default: IN/COM/FIN vectors, quadratic forms and the crunch energy.
     pub const DEFAULT: [Section; 3] = [Section::Vectors, Section::Forms, Section::Energy];
@@ -68,6 +74,7 @@ impl Section {
             Section::Energy => &["energy"],
             Section::Ellipses => &["ellipses"],
             Section::Products => &["products"],
+            Section::Changes => &["changes"],
             Section::Diagnostics => &["diagnostics"],
             Section::All => &[],
         }
@@ -82,9 +89,13 @@ impl Section {
     }
 }
 
-/// A set of sections, with `all` expanded.
+/// A set of sections, with `all` expanded, and what the sections need beyond the case.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Sections(BTreeSet<Section>);
+pub struct Sections {
+    set: BTreeSet<Section>,
+    /// The contact time in seconds, for the average forces of `changes` (`--contact-time`).
+    pub contact_time: Option<BigRational>,
+}
 
 impl Sections {
     pub fn new(list: impl IntoIterator<Item = Section>) -> Sections {
@@ -96,13 +107,16 @@ impl Sections {
                 set.insert(s);
             }
         }
-        Sections(set)
+        Sections {
+            set,
+            contact_time: None,
+        }
     }
     pub fn contains(&self, s: Section) -> bool {
-        self.0.contains(&s)
+        self.set.contains(&s)
     }
     pub fn insert(&mut self, s: Section) {
-        self.0.extend(Sections::new([s]).0);
+        self.set.extend(Sections::new([s]).set);
     }
 }
 
@@ -139,6 +153,8 @@ pub struct Report<N = f64> {
     pub ellipses: Option<Ellipses<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub products: Option<Products<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub changes: Option<ChangeReport<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub diagnostics: Option<Diagnostics>,
     /// The time-reversed collision (`--reverse`).
@@ -191,7 +207,23 @@ pub struct Energy<N = f64> {
     pub fin: N,
     pub com: N,
     pub crunch: N,
-    pub lost: N,
+    /// `(1 - e^2) crunch`, for `e <= 1`.
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub lost: Option<N>,
+    /// `(e^2 - 1) crunch`, for a superelastic `e > 1` (or, for a separation, `1/2 mu (f1 - f2)^2`).
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub released: Option<N>,
+}
+
+impl<N: Scalar> Energy<N> {
+    /// `(1 - e^2) crunch` with its sign: negative when energy is released.
+    pub fn lost_signed(&self) -> N {
+        match (&self.lost, &self.released) {
+            (Some(l), _) => l.clone(),
+            (None, Some(r)) => r.neg(),
+            (None, None) => N::default(),
+        }
+    }
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
@@ -207,6 +239,46 @@ pub struct Ellipses<N = f64> {
 pub struct Products<N = f64> {
     pub dot_fin_in: N,
     pub outer_in_fin: [[N; 2]; 2],
+}
+
+/// What the event changed for each body (`--show changes`, see `changes`); a key is absent
+/// when it means nothing for the case (per-body energies with a general tensor, the fraction
+/// transferred unless one body was at rest, forces without `--contact-time`).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(bound(deserialize = "N: Deserialize<'de> + Default"))]
+pub struct ChangeReport<N = f64> {
+    pub dv: [N; 2],
+    pub impulse: [N; 2],
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub ke_in: Option<[N; 2]>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub ke_fin: Option<[N; 2]>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub dke: Option<[N; 2]>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub lost_fraction: Option<N>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub transferred_fraction: Option<N>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub average_force: Option<[N; 2]>,
+}
+
+impl<N: Scalar> ChangeReport<N> {
+    /// The exact changes in this report's arithmetic (each rounded once in binary64).
+    pub fn of(c: &Changes) -> ChangeReport<N> {
+        let one = |q: &BigRational| N::of_rational(q);
+        let two = |p: &[BigRational; 2]| [one(&p[0]), one(&p[1])];
+        ChangeReport {
+            dv: two(&c.dv),
+            impulse: two(&c.impulse),
+            ke_in: c.ke_in.as_ref().map(two),
+            ke_fin: c.ke_fin.as_ref().map(two),
+            dke: c.dke.as_ref().map(two),
+            lost_fraction: c.lost_fraction.as_ref().map(one),
+            transferred_fraction: c.transferred_fraction.as_ref().map(one),
+            average_force: c.average_force.as_ref().map(two),
+        }
+    }
 }
 
 /// A solve's own error beside its own run time (`--show diagnostics`).
@@ -355,7 +427,8 @@ impl<N: Scalar> Report<N> {
             fin: c.ke_fin(),
             com: c.ke_com(),
             crunch: c.crunch(),
-            lost: c.lost(),
+            lost: (!c.superelastic()).then(|| c.lost()),
+            released: c.superelastic().then(|| c.lost().neg()),
         });
         let report = Report {
             restitution: c.restitution(),
@@ -401,6 +474,8 @@ impl<N: Scalar> Report<N> {
                 outer_in_fin: c.outer(&v_in, &fin()),
             }),
             energy: energy.filter(|_| has(Section::Energy)),
+            changes: has(Section::Changes)
+                .then(|| ChangeReport::of(&c.exact().changes(sections.contact_time.as_ref()))),
             diagnostics: has(Section::Diagnostics).then(|| {
                 let (momentum_residual, energy_residual) = c.residuals();
                 let (solve_ns, repetitions) = time_solves(c);
@@ -439,6 +514,7 @@ impl<N: Scalar> Report<N> {
         r.energy = r.energy.filter(|_| keep(Section::Energy));
         r.ellipses = r.ellipses.filter(|_| keep(Section::Ellipses));
         r.products = r.products.filter(|_| keep(Section::Products));
+        r.changes = r.changes.filter(|_| keep(Section::Changes));
         r.diagnostics = r.diagnostics.filter(|_| keep(Section::Diagnostics));
         r
     }

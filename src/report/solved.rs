@@ -5,7 +5,6 @@ use num_rational::BigRational;
 use num_traits::Zero;
 use serde_json::{Map, Value};
 
-use crate::case::Case;
 use crate::number::num;
 use crate::quantity::{Exact, Scalar, fraction, to_f64};
 use crate::units::Units;
@@ -22,11 +21,15 @@ pub fn text(s: &Solved, exact: bool) -> String {
     };
     let mut out = String::new();
     if !s.unknowns.is_empty() {
-        let parts: Vec<String> = s
+        let mut parts: Vec<String> = s
             .unknowns
             .iter()
+            .filter(|v| s.has(**v))
             .map(|v| format!("{v} = {}", show(s.get(*v))))
             .collect();
+        if s.separation {
+            parts.push("e undefined (the bodies start together)".into());
+        }
         out.push_str(&format!("Solved: {}\n", parts.join(", ")));
     }
     for (law, residual) in &s.checks {
@@ -45,12 +48,12 @@ pub fn text(s: &Solved, exact: bool) -> String {
 
 /// Adds `units` (when given), `solved` and `check` (when unknowns were solved) to a report's
 /// JSON object.
-pub fn annotate(json: &mut Value, case: &Case, solved: Option<&Solved>, exact: bool) {
+pub fn annotate(json: &mut Value, units: &Units, solved: Option<&Solved>, exact: bool) {
     let Some(o) = json.as_object_mut() else {
         return;
     };
-    if case.units != Units::default() {
-        let u = &case.units;
+    if *units != Units::default() {
+        let u = units;
         // Only the units given ("as given" values have none).
         let mut units = Map::new();
         if let Some(m) = u.mass {
@@ -75,6 +78,7 @@ pub fn annotate(json: &mut Value, case: &Case, solved: Option<&Solved>, exact: b
     let solved: Map<String, Value> = s
         .unknowns
         .iter()
+        .filter(|v| s.has(**v))
         .map(|v| (v.name().to_string(), value(s.get(*v))))
         .collect();
     o.insert("solved".into(), Value::Object(solved));

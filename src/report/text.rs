@@ -5,7 +5,8 @@
 use std::fmt::Write;
 
 use super::{
-    Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Reverse, Vectors,
+    ChangeReport, Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Reverse,
+    Vectors,
 };
 use crate::case::Case;
 use crate::ellipse::Ellipse;
@@ -120,17 +121,22 @@ pub fn header(case: &Case) -> String {
         e,
         e.kind()
     );
-    let u = &case.units;
-    if u.mass.is_some() || u.velocity.is_some() {
-        let given = |unit: Option<&str>| unit.map_or("as given".to_string(), |n| format!("in {n}"));
-        out.push_str(&format!(
-            "Units: masses {}, velocities {}, energies in {}\n",
-            given(u.mass),
-            given(u.velocity),
-            u.energy()
-        ));
-    }
+    out.push_str(&header_units(&case.units));
     out
+}
+
+/// `Units: masses in kg, velocities in m/s, energies in J`, when units were given.
+pub fn header_units(u: &crate::units::Units) -> String {
+    if u.mass.is_none() && u.velocity.is_none() {
+        return String::new();
+    }
+    let given = |unit: Option<&str>| unit.map_or("as given".to_string(), |n| format!("in {n}"));
+    format!(
+        "Units: masses {}, velocities {}, energies in {}\n",
+        given(u.mass),
+        given(u.velocity),
+        u.energy()
+    )
 }
 
 /// Renders the report of `case` as text.
@@ -162,6 +168,9 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
     }
     if let Some(p) = &report.products {
         products(p).render(&mut out);
+    }
+    if let Some(c) = &report.changes {
+        changes(c, &case.units).render(&mut out);
     }
     if let Some(d) = &report.diagnostics {
         diagnostics(d).render(&mut out);
@@ -356,16 +365,68 @@ fn energy<N: Scalar>(case: &Case, en: &Energy<N>, notes: &Notes<N>) -> Block {
             notes.relative_velocity.show()
         ),
     );
+    let lost = en.lost.clone().unwrap_or_default();
     if e.is_totally_inelastic() {
         b.row(
             "lost = crunch",
-            en.lost.show(),
+            lost.show(),
             "all of the crunch energy turns into heat",
         );
+    } else if let Some(released) = &en.released {
+        b.row(
+            "released = (e^2 - 1) crunch",
+            released.show(),
+            format!("superelastic, e = {e}: energy stored in the bodies is released"),
+        );
     } else if !e.is_elastic() {
-        b.row("lost = (1 - e^2) crunch", en.lost.show(), "");
+        b.row("lost = (1 - e^2) crunch", lost.show(), "");
     }
     b
+}
+
+/// `--show changes`: per body, then the fractions and forces (a collision or a separation).
+pub fn changes<N: Scalar>(c: &ChangeReport<N>, units: &crate::units::Units) -> Block {
+    let mut b = Block::new(format!(
+        "Changes (body 1, body 2; impulse in {}, energies in {})",
+        units.impulse(),
+        units.energy()
+    ));
+    b.row("dv = FIN - IN", pair(&c.dv), "");
+    b.row("impulse dp = M.dv", pair(&c.impulse), "equal and opposite");
+    if let (Some(i), Some(f), Some(d)) = (&c.ke_in, &c.ke_fin, &c.dke) {
+        b.row("KE_IN  1/2 m v^2", pair(i), "");
+        b.row("KE_FIN 1/2 m f^2", pair(f), "");
+        b.row("dKE = 1/2 m dv (f + v)", pair(d), "");
+    }
+    if let Some(l) = &c.lost_fraction {
+        b.row("lost / KE_IN", l.show(), percent(l));
+    }
+    if let Some(t) = &c.transferred_fraction {
+        b.row(
+            "transferred",
+            t.show(),
+            format!(
+                "{}: KE_FIN of the body at rest / KE_IN of the other",
+                percent(t)
+            ),
+        );
+    }
+    if let Some(f) = &c.average_force {
+        b.row(
+            "average force dp / T",
+            pair(f),
+            format!("in {}", units.force()),
+        );
+    }
+    b
+}
+
+/// `= 12.5 %`, from the printed value.
+fn percent<N: Scalar>(x: &N) -> String {
+    x.show()
+        .parse::<f64>()
+        .map(|v| format!("= {} %", crate::number::num(v * 100.0)))
+        .unwrap_or_default()
 }
 
 fn ellipses<N: Scalar>(case: &Case, el: &Ellipses<N>) -> Block {

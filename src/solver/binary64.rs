@@ -170,6 +170,15 @@ impl Solver for Binary64<'_> {
     /// `(1 - e^2) crunch` with `1 - e^2 = (1 - e)(1 + e)`.
     fn lost(&self) -> f64 {
         let e = self.lab.restitution.value();
+        if e == 1.0 && !self.lab.restitution.is_elastic() {
+            // A typed e within half an ulp of 1 but not 1 (0.99999999999999999999999): the
+            // factor 1 - e^2 exactly from the typed value, rounded once, so the energy printed
+            // agrees with the label.
+            let x = self.lab.restitution.number().exact();
+            let factor = num_rational::BigRational::from_integer(1.into()) - &x * &x;
+            let factor = crate::quantity::to_f64(&factor).unwrap_or(0.0);
+            return (Dd::new(factor) * self.crunch_dd()).value();
+        }
         let lost = Dd::sum(1.0, -e) * Dd::sum(1.0, e) * self.crunch_dd();
         unless_underflow(lost.value(), e != 1.0 && self.moving())
     }
@@ -221,6 +230,14 @@ impl Solver for Binary64<'_> {
             ke_rule.abs()
         };
         (momentum, energy)
+    }
+    /// The binary64 inputs exactly, seen by the observer at `w` (a double-double, exact too).
+    fn superelastic(&self) -> bool {
+        self.lab.restitution.is_superelastic()
+    }
+    fn exact(&self) -> ExactCollision {
+        let w = crate::quantity::from_f64(self.w.hi) + crate::quantity::from_f64(self.w.lo);
+        ExactCollision::from_binary64(self.lab).observed(&w)
     }
     fn momentum_line(&self) -> (f64, f64, Option<f64>) {
         let m = self.lab.inertia.matrix();

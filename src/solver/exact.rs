@@ -127,6 +127,18 @@ impl ExactCollision {
     pub fn lost_q(&self) -> Q {
         (Q::one() - &self.e * &self.e) * self.crunch_q()
     }
+    /// What the collision changes for each body (`changes`).
+    pub fn changes(&self, contact_time: Option<&Q>) -> crate::changes::Changes {
+        let fin = self.v_fin_q();
+        crate::changes::Changes::of(
+            &crate::changes::Event {
+                tensor: [[&self.a, &self.c], [&self.c, &self.b]],
+                v_in: &self.v,
+                fin: &fin,
+            },
+            contact_time,
+        )
+    }
     pub fn det(&self) -> Q {
         &self.a * &self.b - &self.c * &self.c
     }
@@ -256,6 +268,12 @@ impl Solver for ExactCollision {
             crate::quantity::to_f64(&momentum).unwrap_or(f64::MAX),
             crate::quantity::to_f64(&energy).unwrap_or(f64::MAX),
         )
+    }
+    fn superelastic(&self) -> bool {
+        self.e > Q::one()
+    }
+    fn exact(&self) -> ExactCollision {
+        self.clone()
     }
     fn momentum_line(&self) -> (Exact, Exact, Option<Exact>) {
         let (k1, k2) = (&self.a + &self.c, &self.c + &self.b);

@@ -16,6 +16,8 @@ pub type Pair<N> = [N; 2];
 pub trait Solver {
     type N: Scalar;
     fn restitution(&self) -> Self::N;
+    /// `e > 1` as typed: energy is released (`lost` is negative).
+    fn superelastic(&self) -> bool;
     fn inertia(&self) -> [Pair<Self::N>; 2];
     fn v_in(&self) -> Pair<Self::N>;
     /// `V_COM = P_total / M_total`.
@@ -55,6 +57,9 @@ pub trait Solver {
     /// The momentum line `k1 V1 + k2 V2 = P_total`: `(k1, k2, slope = -k1/k2)`, with no slope
     /// when the line is vertical (`k2 = 0`, possible for a general tensor).
     fn momentum_line(&self) -> (Self::N, Self::N, Option<Self::N>);
+    /// This frame's collision in exact rationals (of the values this solver computes with), for
+    /// the quantities that are cheap enough to give exactly and round once (`changes`).
+    fn exact(&self) -> exact::ExactCollision;
 }
 
 /// A lab collision in one arithmetic, from which the collision seen from any frame is made: the

@@ -526,7 +526,7 @@ mod tests {
         let err = |s: &str| s.parse::<Vary>().unwrap_err().to_string();
         assert!(err("e=0:1:0").contains("empty"));
         assert!(err("e=0:1:x").contains("COUNT 'x'"));
-        assert!(err("e=0:2:3").contains("'2' is outside [0, 1]"));
+        assert!(err("e=-1:1:3").contains("'-1' is negative"));
         assert!(err("m1=0:2:3").contains("'0' must be greater than 0"));
         assert!(err("m1=1:1:5").contains("FROM equals TO"));
         assert!(err("v3=0:1:2").contains("'v3' is not a parameter"));

@@ -307,7 +307,7 @@ impl Track {
             return Err(TrackError::RightOfWall(self.bodies.len(), r));
         }
         for e in [self.e, self.e_wall] {
-            Restitution::new(Number::from_f64(e).map_err(RestitutionError::from)?)?;
+            Restitution::dissipative(Number::from_f64(e).map_err(RestitutionError::from)?)?;
         }
         if self.gravity.is_nan() || self.gravity < 0.0 || !self.gravity.is_finite() {
             return Err(TrackError::Gravity(self.gravity));

@@ -1,0 +1,174 @@
+//! The report of a separation (bodies that start together and are pushed apart: `separation`):
+//! the sections that mean something for it, in the same JSON keys as a collision's (`in`, `com`,
+//! `fin`, `v_com`, `momentum`, `energy`, `changes`), with `energy.released` and no restitution,
+//! forms, ellipses or products (`e` is undefined; the rest would describe a collision).
+
+use serde::Serialize;
+
+use super::text::{Block, changes, header_units, pair};
+use super::{ChangeReport, Section, Sections};
+use crate::quantity::{Exact, Scalar};
+use crate::separation::Separation;
+
+/// A separation's numbers. Field names are the JSON schema.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SeparationReport<N> {
+    /// Always `"separation"`: `e` is undefined.
+    pub event: &'static str,
+    pub masses: [N; 2],
+    #[serde(rename = "in")]
+    pub v_in: [N; 2],
+    pub com: [N; 2],
+    pub fin: [N; 2],
+    pub v_com: N,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub momentum: Option<SeparationMomentum<N>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy: Option<SeparationEnergy<N>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub changes: Option<ChangeReport<N>>,
+}
+
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SeparationMomentum<N> {
+    #[serde(rename = "in")]
+    pub p_in: [N; 2],
+    pub fin: [N; 2],
+    pub total: N,
+}
+
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SeparationEnergy<N> {
+    #[serde(rename = "in")]
+    pub ke_in: N,
+    pub fin: N,
+    pub com: N,
+    /// `1/2 mu (f1 - f2)^2`.
+    pub released: N,
+    /// `mu = m1 m2 / (m1 + m2)`.
+    pub reduced_mass: N,
+}
+
+impl<N: Scalar> SeparationReport<N> {
+    /// The sections of `sections` that mean something for a separation; each value exact, and
+    /// rounded once in binary64.
+    pub fn new(s: &Separation, sections: &Sections) -> SeparationReport<N> {
+        let one = |q: &num_rational::BigRational| N::of_rational(q);
+        let two = |p: &[num_rational::BigRational; 2]| [one(&p[0]), one(&p[1])];
+        let has = |x| sections.contains(x);
+        let v = one(&s.v());
+        SeparationReport {
+            event: "separation",
+            masses: two(&s.m()),
+            v_in: [v.clone(), v.clone()],
+            com: [v.clone(), v.clone()],
+            fin: two(&s.fin),
+            v_com: v,
+            momentum: has(Section::Momentum).then(|| SeparationMomentum {
+                p_in: two(&s.momentum(&s.v_in())),
+                fin: two(&s.momentum(&s.fin)),
+                total: one(&s.total_momentum()),
+            }),
+            energy: has(Section::Energy).then(|| SeparationEnergy {
+                ke_in: one(&s.ke_in()),
+                fin: one(&s.ke_fin()),
+                com: one(&s.ke_in()),
+                released: one(&s.released()),
+                reduced_mass: one(&s.reduced_mass()),
+            }),
+            changes: has(Section::Changes)
+                .then(|| ChangeReport::of(&s.changes(sections.contact_time.as_ref()))),
+        }
+    }
+
+    /// The first value that is not a binary64 number, by JSON path.
+    pub fn unrepresentable(&self) -> Option<String> {
+        super::first_unrepresentable(&serde_json::to_value(self).expect("a report serializes"))
+    }
+
+    /// Text for people.
+    pub fn text(&self, s: &Separation, sections: &Sections) -> String {
+        let mut out = format!(
+            "M = diag({}, {})   V_IN = ({}, {})   e undefined (separation: the bodies start \
+             together and are pushed apart)\n",
+            s.masses[0], s.masses[1], s.velocities[0], s.velocities[1]
+        );
+        out.push_str(&header_units(&s.units));
+        if sections.contains(Section::Vectors) {
+            let mut b = Block::new("Vectors (V1, V2)");
+            b.row("IN   V_IN", pair(&self.v_in), "V1 = V2: together");
+            b.row(
+                "COM  V_COM u",
+                pair(&self.com),
+                format!("V_COM = {} (unchanged)", self.v_com.show()),
+            );
+            b.row("FIN  V_FIN", pair(&self.fin), "as given or solved");
+            b.render(&mut out);
+        }
+        let shown = |x| sections.contains(x);
+        if let Some(p) = self.momentum.as_ref().filter(|_| shown(Section::Momentum)) {
+            let mut b = Block::new("Momentum (P = M.V)");
+            b.row("P_IN   M.V_IN", pair(&p.p_in), "");
+            b.row("P_FIN  M.V_FIN", pair(&p.fin), "");
+            b.row("P_total  u.M.V", p.total.show(), "conserved");
+            b.render(&mut out);
+        }
+        if let Some(e) = self.energy.as_ref().filter(|_| shown(Section::Energy)) {
+            let mut b = Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", s.units.energy()));
+            b.row("KE_IN = KE_COM", e.ke_in.show(), "");
+            b.row("KE_FIN", e.fin.show(), "");
+            b.row(
+                "released = 1/2 mu (f1 - f2)^2",
+                e.released.show(),
+                format!(
+                    "mu = M1 M2 / (M1 + M2) = {}: energy stored in the bodies (a spring, an \
+                     explosive) is released",
+                    e.reduced_mass.show()
+                ),
+            );
+            b.render(&mut out);
+        }
+        if let Some(c) = self.changes.as_ref().filter(|_| shown(Section::Changes)) {
+            changes(c, &s.units).render(&mut out);
+        }
+        out
+    }
+}
+
+/// A separation's report in binary64 or exact arithmetic.
+pub enum AnySeparation {
+    Binary64(Box<SeparationReport<f64>>),
+    Exact(Box<SeparationReport<Exact>>),
+}
+
+impl AnySeparation {
+    pub fn new(
+        s: &Separation,
+        sections: &Sections,
+        exact: bool,
+    ) -> Result<AnySeparation, super::Unrepresentable> {
+        if exact {
+            return Ok(AnySeparation::Exact(Box::new(SeparationReport::new(
+                s, sections,
+            ))));
+        }
+        let r = SeparationReport::new(s, sections);
+        match r.unrepresentable() {
+            Some(quantity) => Err(super::Unrepresentable { quantity }),
+            None => Ok(AnySeparation::Binary64(Box::new(r))),
+        }
+    }
+    pub fn json(&self) -> serde_json::Value {
+        match self {
+            AnySeparation::Binary64(r) => serde_json::to_value(r),
+            AnySeparation::Exact(r) => serde_json::to_value(r),
+        }
+        .expect("reports serialize")
+    }
+    pub fn text(&self, s: &Separation, sections: &Sections) -> String {
+        match self {
+            AnySeparation::Binary64(r) => r.text(s, sections),
+            AnySeparation::Exact(r) => r.text(s, sections),
+        }
+    }
+}

@@ -1,0 +1,246 @@
+//! Published homework problems end to end (issue 15): explosions, recoil and e > 1; answers in
+//! the shape a problem asks (changes of velocity, impulses, energies per body, fractions, average
+//! forces). Every expected value is exact, derived by hand in the comments; binary64 results are
+//! held to `REL` (4 ulps) of them, `--exact` results to the fraction itself.
+
+mod common;
+
+use common::{REL, assert_close, collide};
+use serde_json::Value;
+
+/// `collide solve ARGS --format json` (any exit code), with the code.
+fn json(args: &str) -> (i32, Value) {
+    let mut a: Vec<&str> = vec!["solve"];
+    a.extend(args.split_whitespace());
+    a.extend(["--format", "json"]);
+    let out = collide().args(&a).output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let v = serde_json::from_str(&text).unwrap_or(Value::Null);
+    (out.status.code().unwrap_or(-1), v)
+}
+
+/// `collide solve` with arguments (quoted ones kept whole): code, stdout, stderr.
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = collide().arg("solve").args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+#[test]
+fn a_spring_between_carts_releases_energy_and_is_solved() {
+    // OpenStax: m = (1, 5), V = (3.6, -2.4), f2 = -0.24. Momentum: 3.6 - 12 = f1 - 1.2, so
+    // f1 = -7.2; e = (f2 - f1)/(V1 - V2) = 6.96/6 = 29/25; released = (e^2 - 1) crunch with
+    // crunch = 1/2 (5/6) 36 = 15: (841/625 - 1) 15 = 648/125 = 5.184.
+    let (code, j) = json("-m 1,5 -v 3.6,-2.4 --fin ?,-0.24 --show energy --exact");
+    assert_eq!(code, 0);
+    assert_eq!(
+        j["solved"],
+        serde_json::json!({"f1": "-36/5", "e": "29/25"})
+    );
+    assert_eq!(j["energy"]["released"], "648/125");
+    assert!(j["energy"].get("lost").is_none(), "{j}");
+    let (code, j) = json("-m 1,5 -v 3.6,-2.4 --fin ?,-0.24 --show vectors,energy");
+    assert_eq!(code, 0);
+    assert_close(f(&j["fin"][0]), -7.2, REL, "f1");
+    assert_close(f(&j["energy"]["released"]), 5.184, 8.0 * REL, "released");
+    let (_, text, _) = run(&["-m", "1,5", "-v", "3.6,-2.4", "--fin", "?,-0.24"]);
+    assert!(
+        text.contains("e = 1.16 (superelastic: energy released)"),
+        "{text}"
+    );
+}
+
+#[test]
+fn carts_with_units_released_energy_in_joules() {
+    // m = (0.35, 0.5) kg, V = (2, -0.5) m/s, f1 = -4: 0.7 - 0.25 = -1.4 + 0.5 f2, f2 = 3.7 m/s.
+    // KE: 0.7 + 0.0625 -> 2.8 + 3.4225, released 5.46 J = 273/50.
+    let (code, out, err) = run(&[
+        "-m",
+        "0.350 kg,0.500 kg",
+        "-v",
+        "2.00 m/s,-0.500 m/s",
+        "--fin",
+        "-4.00 m/s,?",
+        "--exact",
+        "--show",
+        "energy,changes",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["solved"]["f2"], "37/10");
+    assert_eq!(j["energy"]["released"], "273/50");
+    assert_eq!(
+        j["changes"]["ke_fin"],
+        serde_json::json!(["14/5", "1369/400"])
+    );
+    assert_eq!(
+        j["changes"]["impulse"],
+        serde_json::json!(["-21/10", "21/10"])
+    );
+    assert_eq!(j["units"]["energy"], "J");
+}
+
+#[test]
+fn recoil_from_rest_is_a_separation() {
+    // A clown (80 kg) pushes off a barbell: -0.5 and 10 m/s from rest. Momentum: 0 = -40 + 10 m2,
+    // m2 = 4 kg; released = 1/2 80 0.25 + 1/2 4 100 = 10 + 200 = 210 J
+    // (= 1/2 mu (f1 - f2)^2 = 1/2 (320/84) 110.25 = 210).
+    let args = [
+        "-m",
+        "80.0 kg,?",
+        "-v",
+        "0,0",
+        "--fin",
+        "-0.500 m/s,10.0 m/s",
+        "--show",
+        "all",
+        "--contact-time",
+        "2 ms",
+    ];
+    let (code, out, err) = run(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["event"], "separation");
+    assert!(
+        j.get("restitution").is_none() && j.get("forms").is_none(),
+        "{j}"
+    );
+    assert_eq!(f(&j["solved"]["m2"]), 4.0);
+    assert_eq!(f(&j["energy"]["released"]), 210.0);
+    assert_eq!(f(&j["energy"]["fin"]), 210.0);
+    assert_eq!(j["changes"]["impulse"], serde_json::json!([-40.0, 40.0]));
+    // 40 kg m/s over 2 ms: 20 kN.
+    assert_eq!(
+        j["changes"]["average_force"],
+        serde_json::json!([-20000.0, 20000.0])
+    );
+    let (code, out, _) = run(&args);
+    assert_eq!(code, 0);
+    assert!(out.starts_with("Solved: m2 = 4, e undefined"), "{out}");
+    assert!(out.contains("released = 1/2 mu (f1 - f2)^2  210"), "{out}");
+    assert!(out.contains("in N"), "{out}");
+    // The same in exact arithmetic.
+    let (_, out, _) = run(&[&args[..], &["--exact", "--format", "json"]].concat());
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["energy"]["released"], "210");
+}
+
+#[test]
+fn the_workaround_e_1_no_longer_prints_another_collision() {
+    // With -e 1 the data contradict restitution (f2 - f1 = 10.5 but e (V1 - V2) = 0): exit 1,
+    // the check says so, and no recomputed FIN is printed.
+    let (code, out, _) = run(&[
+        "-m",
+        "80.0 kg,?",
+        "-v",
+        "0,0",
+        "--fin",
+        "-0.500 m/s,10.0 m/s",
+        "-e",
+        "1",
+    ]);
+    assert_eq!(code, 1);
+    assert!(out.contains("restitution does NOT hold"), "{out}");
+    assert!(!out.contains("V_FIN") && !out.contains("-6.4"), "{out}");
+    // The same for a collision: FIN (40, 90) with e = 1/2 misses restitution by 25.
+    let (code, j) = json("-m 4,1 -v 60,10 --fin 40,90 -e 0.5");
+    assert_eq!(code, 1);
+    assert_eq!(j["consistent"], false);
+    assert_eq!(f(&j["check"]["restitution"]), 25.0);
+    assert!(j.get("fin").is_none(), "{j}");
+}
+
+#[test]
+fn a_typed_e_above_1_is_superelastic() {
+    // m = (4, 1), V = (60, 10), e = 3/2: V_COM = 50, FIN = (5/2) 50 - (3/2) V = (35, 110);
+    // crunch = 1000, released = (9/4 - 1) 1000 = 1250; KE_FIN = 7250 + 1250 = 8500.
+    let (code, j) = json("-m 4,1 -v 60,10 -e 3/2 --show vectors,energy --exact");
+    assert_eq!(code, 0);
+    assert_eq!(j["fin"], serde_json::json!(["35", "110"]));
+    assert_eq!(j["energy"]["released"], "1250");
+    assert_eq!(j["energy"]["fin"], "8500");
+    let (code, j) = json("-m 4,1 -v 60,10 -e 1.5 --show vectors,energy");
+    assert_eq!(code, 0);
+    assert_eq!(j["fin"], serde_json::json!([35.0, 110.0]));
+    assert_eq!(f(&j["energy"]["released"]), 1250.0);
+    // Negative e is still refused, by value.
+    let (code, _, err) = run(&["-m", "4,1", "-v", "60,10", "-e", "-0.5"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("'-0.5' is negative"), "{err}");
+}
+
+#[test]
+fn changes_fractions_and_forces_by_hand() {
+    // Fig. 1.3 elastic: dv = (-20, 80), dp = (-80, 80), KE (7200, 50) -> (3200, 4050), nothing
+    // lost; over 10 ms the average forces are -/+ 8000.
+    let (_, j) = json("-m 4,1 -v 60,10 --show changes --contact-time 10ms");
+    let c = &j["changes"];
+    assert_eq!(c["dv"], serde_json::json!([-20.0, 80.0]));
+    assert_eq!(c["impulse"], serde_json::json!([-80.0, 80.0]));
+    assert_eq!(c["ke_in"], serde_json::json!([7200.0, 50.0]));
+    assert_eq!(c["ke_fin"], serde_json::json!([3200.0, 4050.0]));
+    assert_eq!(c["dke"], serde_json::json!([-4000.0, 4000.0]));
+    assert_eq!(c["lost_fraction"], 0.0);
+    assert_eq!(c["average_force"], serde_json::json!([-8000.0, 8000.0]));
+    assert!(
+        c.get("transferred_fraction").is_none(),
+        "neither was at rest"
+    );
+    // Fig. 2.3 ka-whump, e = 2/3: lost = (5/9) 21 = 35/3 of KE_IN = 35: a third.
+    let (_, j) = json("-m 6,1 -v 3,-4 -e 2/3 --show changes --exact");
+    assert_eq!(j["changes"]["lost_fraction"], "1/3");
+    assert_eq!(j["changes"]["dv"], serde_json::json!(["-5/3", "10"]));
+    // Equal masses, one at rest, elastic: all of the energy is transferred.
+    let (_, j) = json("-m 1,1 -v 3,0 --show changes");
+    assert_eq!(j["changes"]["transferred_fraction"], 1.0);
+    // A car that stops a truck half as heavy, e = 0: m = (1, 2), V = (3, 0) -> 1 each;
+    // transferred 1 / 4.5 = 2/9, lost 3/4.5 = 2/3.
+    let (_, j) = json("-m 1,2 -v 3,0 -e 0 --show changes --exact");
+    assert_eq!(j["changes"]["transferred_fraction"], "2/9");
+    assert_eq!(j["changes"]["lost_fraction"], "2/3");
+}
+
+#[test]
+fn changes_are_exact_under_a_huge_common_velocity() {
+    // m = (3, 1), V = (1e20 + 16384, 1e20) (one ulp apart), elastic: dv1 = 2 (1/4) (-16384)
+    // = -8192 exactly, dv2 = 2 (3/4) 16384 = 24576. FIN1 = 1e20 + 8192 is not representable, so
+    // FIN - IN in binary64 would be 0 or -16384: the change is computed exactly, rounded once.
+    let (_, j) = json("-m 3,1 -v 100000000000000016384,1e20 --show changes");
+    assert_eq!(j["changes"]["dv"], serde_json::json!([-8192.0, 24576.0]));
+    assert_eq!(
+        j["changes"]["impulse"],
+        serde_json::json!([-24576.0, 24576.0])
+    );
+}
+
+#[test]
+fn what_cannot_be_is_refused() {
+    // Starting together, body 1 (on the left) cannot end up faster to the right than body 2.
+    let (code, _, err) = run(&["-m", "1,1", "-v", "0,0", "--fin", "2,?"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("pass through"), "{err}");
+    // A separation has no frame, time reverse or velocity diagram.
+    for flag in [["--frame", "com"], ["--reverse", "--exact"]] {
+        let (code, out, err) =
+            run(&[&["-m", "80,?", "-v", "0,0", "--fin", "-0.5,10"], &flag[..]].concat());
+        assert_eq!(code, 2, "{flag:?}");
+        assert!(out.is_empty() && err.contains(flag[0]), "{err}");
+    }
+    for bad in ["0", "-2 ms", "2 kg", "soon"] {
+        let (code, out, err) = run(&["-m", "4,1", "-v", "60,10", "--contact-time", bad]);
+        assert_eq!(code, 2, "{bad}");
+        assert!(
+            out.is_empty() && err.contains(bad.split(' ').next().unwrap()),
+            "{err}"
+        );
+    }
+}
