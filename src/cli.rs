@@ -399,6 +399,11 @@ pub struct CaseArgs {
     /// Convert every value with a unit to kg, m/s and J
     #[arg(long)]
     pub si: bool,
+
+    /// g in m/s^2 for velocities typed as heights ('height 2 m': the speed sqrt(2 g h) of a fall
+    /// from rest through 2 m) and for --show heights [default: 9.80665, standard gravity]
+    #[arg(long, value_name = "G")]
+    pub gravity: Option<Number>,
 }
 
 #[derive(Args, Debug)]

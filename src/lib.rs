@@ -44,6 +44,7 @@ pub mod case;
 pub mod frame;
 pub mod problem;
 pub mod unknowns;
+pub mod wall;
 
 // 4. how it is computed
 pub mod solver;

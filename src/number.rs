@@ -263,11 +263,13 @@ pub fn num(x: f64) -> String {
     }
 }
 
-/// A value a problem gives, or `?` for one it asks for.
+/// A value a problem gives, or `?` for one it asks for, or (for a mass) a wall.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Given<T> {
     Known(T),
     Unknown,
+    /// An immovable body (`wall`, `inf`): a mass too large to be moved by anything.
+    Wall,
 }
 
 impl<T> Given<T> {
@@ -280,11 +282,28 @@ impl<T> Given<T> {
         }
     }
 
+    /// Parses `wall`, `inf`, `infinity` or `∞` as an immovable body, else as `parse`.
+    pub fn parse_mass<E>(
+        text: &str,
+        parse: impl FnOnce(&str) -> Result<T, E>,
+    ) -> Result<Given<T>, E> {
+        let t = text.trim().to_ascii_lowercase();
+        if ["wall", "inf", "infinity", "∞", "floor"].contains(&t.as_str()) {
+            Ok(Given::Wall)
+        } else {
+            Given::parse(text, parse)
+        }
+    }
+
     pub fn known(&self) -> Option<&T> {
         match self {
             Given::Known(t) => Some(t),
-            Given::Unknown => None,
+            Given::Unknown | Given::Wall => None,
         }
+    }
+
+    pub fn is_wall(&self) -> bool {
+        matches!(self, Given::Wall)
     }
 
     pub fn is_unknown(&self) -> bool {
@@ -295,6 +314,7 @@ impl<T> Given<T> {
         match self {
             Given::Known(t) => Given::Known(f(t)),
             Given::Unknown => Given::Unknown,
+            Given::Wall => Given::Wall,
         }
     }
 }

@@ -12,6 +12,7 @@ use crate::restitution::{Restitution, RestitutionError};
 use crate::separation::Separation;
 use crate::units::{Pair, ResolveError, Units, resolve};
 use crate::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
+use crate::wall::{WallCase, WallProblem};
 
 /// The typed values of a problem.
 #[derive(Clone, Debug)]
@@ -25,6 +26,8 @@ pub struct Problem {
     pub restitution: Option<Given<Restitution>>,
     /// Convert to kg and m/s.
     pub si: bool,
+    /// `g` for velocities typed as heights (default 9.80665 m/s^2).
+    pub gravity: Option<Number>,
 }
 
 /// What a solved problem describes.
@@ -36,6 +39,8 @@ pub enum Posed {
     /// Bodies that start together and are pushed apart: `e` is undefined (an explosion, a
     /// recoil, a released spring).
     Separation(Separation, Solved),
+    /// A body against a wall (an immovable body), with what was solved.
+    Wall(WallCase, Option<Solved>),
 }
 
 /// Why a problem cannot be solved.
@@ -49,6 +54,16 @@ pub enum ProblemError {
         "'?' marks an unknown: `collide solve` solves for unknowns (with --fin for final velocities)"
     )]
     UnknownsOnlyInSolve,
+    #[error("a wall (an immovable body) is for `collide solve` (and `collide track --left-wall`)")]
+    WallOnlyInSolve,
+    #[error("two walls: at most one body can be immovable")]
+    TwoWalls,
+    #[error("a wall needs --masses M1,wall (not --inertia)")]
+    WallNeedsMasses,
+    #[error("the ball's mass against a wall: give it (a wall problem does not fix it)")]
+    WallBallMass,
+    #[error("gravity {0}: expected a number > 0 in m/s^2 (9.80665 standard, 9.8 or 9.81)")]
+    Gravity(String),
     #[error("{var} = {text}: {error}")]
     Solved {
         var: Var,
@@ -86,6 +101,7 @@ impl Problem {
         match self.solve(inertia)? {
             Posed::Collision(case, _) => Ok(case),
             Posed::Separation(..) => Err(ProblemError::UnknownsOnlyInSolve),
+            Posed::Wall(..) => Err(ProblemError::WallOnlyInSolve),
         }
     }
 
@@ -100,7 +116,30 @@ impl Problem {
         if let Some(f) = &self.fin {
             velocities.extend(f.0.iter().cloned());
         }
+        // Heights become speeds with g (exact), before units are resolved.
+        let g = match &self.gravity {
+            Some(g) if g.value() > 0.0 => g.exact(),
+            Some(g) => return Err(ProblemError::Gravity(g.to_string())),
+            None => crate::units::STANDARD_GRAVITY
+                .parse::<Number>()
+                .map(|n| n.exact())
+                .unwrap_or_default(),
+        };
+        let velocities = velocities
+            .into_iter()
+            .map(|q| match q {
+                Given::Known(q) => Ok(Given::Known(q.with_gravity(&g)?)),
+                other => Ok(other),
+            })
+            .collect::<Result<Vec<_>, NumberError>>()
+            .map_err(|e| ProblemError::Resolve(e.into()))?;
         let (m, v, units) = resolve(&masses, &velocities, self.si)?;
+        if let Some(wall) = m.iter().position(Given::is_wall) {
+            if inertia.is_some() {
+                return Err(ProblemError::WallNeedsMasses);
+            }
+            return self.solve_wall(wall, &m, &v, units);
+        }
         let e = match &self.restitution {
             Some(r) => r.clone().map(|r| r.number().clone()),
             None if self.fin.is_some() => Given::Unknown,
@@ -161,6 +200,100 @@ impl Problem {
         }
         let case = build(&m, &v, number(Var::E)?, None, units)?;
         Ok(Posed::Collision(case, Some(solved)))
+    }
+}
+
+impl Problem {
+    /// A ball against a wall (body `wall`): restitution alone, exact.
+    fn solve_wall(
+        &self,
+        wall: usize,
+        m: &[Given<Number>],
+        v: &[Given<Number>],
+        units: Units,
+    ) -> Result<Posed, ProblemError> {
+        let ball = 1 - wall;
+        if m[ball].is_wall() {
+            return Err(ProblemError::TwoWalls);
+        }
+        let mass = m[ball].known().cloned().ok_or(ProblemError::WallBallMass)?;
+        let mass = Mass::new(mass)?;
+        let q = |x: Option<&Given<Number>>| x.and_then(Given::known).map(Number::exact);
+        let e = match &self.restitution {
+            Some(r) => r.known().map(|r| r.number().exact()),
+            None if self.fin.is_some() => None,
+            None => Some(BigRational::from_integer(1.into())),
+        };
+        let given_fin = self.fin.is_some();
+        let fin = |i: usize| if given_fin { q(v.get(2 + i)) } else { None };
+        let problem = WallProblem {
+            ball: (q(v.get(ball)), fin(ball)),
+            wall: (q(v.get(wall)), fin(wall)),
+            e: e.clone(),
+        };
+        let s = crate::wall::solve(problem)?;
+        let number =
+            |x: &BigRational, typed: Option<&Given<Number>>| -> Result<Number, ProblemError> {
+                if let Some(n) = typed.and_then(Given::known) {
+                    return Ok(n.clone());
+                }
+                let text = crate::quantity::terminating_decimal(x)
+                    .filter(|t| t.len() <= 40)
+                    .unwrap_or_else(|| crate::quantity::fraction(x));
+                text.parse::<Number>()
+                    .map_err(|error| ProblemError::Solved {
+                        var: Var::E,
+                        text,
+                        error,
+                    })
+            };
+        let mut velocities = [number(&s.w, v.get(wall))?, number(&s.w, v.get(wall))?];
+        velocities[ball] = number(&s.v, v.get(ball))?;
+        let typed_e = self.restitution.as_ref().and_then(Given::known);
+        let restitution = match typed_e {
+            Some(r) => r.clone(),
+            None => Restitution::new(number(&s.e, None)?)?,
+        };
+        let case = WallCase {
+            wall,
+            mass: mass.number().clone(),
+            velocities,
+            restitution,
+            units,
+        };
+        if !(given_fin || self.has_unknowns()) {
+            return Ok(Posed::Wall(case, None));
+        }
+        // What was solved, in the two-body variables (the wall's mass means nothing).
+        let ((bv, bf), (wv, wf)) = crate::wall::vars(wall);
+        let mut values: [BigRational; 7] = Default::default();
+        values[if ball == 0 { 0 } else { 1 }] = mass.number().exact();
+        values[bv as usize] = s.v.clone();
+        values[bf as usize] = s.f.clone();
+        values[wv as usize] = s.w.clone();
+        values[wf as usize] = s.w.clone();
+        values[Var::E as usize] = s.e.clone();
+        let was_unknown = |var: Var| match var {
+            Var::E => e.is_none(),
+            _ if var == bv => q(v.get(ball)).is_none(),
+            _ if var == bf => fin(ball).is_none(),
+            _ if var == wv => q(v.get(wall)).is_none(),
+            _ if var == wf => fin(wall).is_none() && given_fin,
+            _ => false,
+        };
+        let unknowns = Var::ALL.into_iter().filter(|x| was_unknown(*x)).collect();
+        let checks = s
+            .residual
+            .map(|r| vec![("restitution", r)])
+            .unwrap_or_default();
+        let solved = Solved {
+            values,
+            unknowns,
+            checks,
+            separation: false,
+            wall: Some(wall),
+        };
+        Ok(Posed::Wall(case, Some(solved)))
     }
 }
 

@@ -29,6 +29,7 @@ use crate::frame::Frame;
 use crate::inertia::InertiaTensor;
 use crate::number::{Given, Number};
 use crate::problem::{Posed, Problem};
+use crate::report::special::Special;
 use crate::report::{Section, Sections};
 use crate::restitution::{Restitution, RestitutionError};
 use crate::separation::Separation;
@@ -38,6 +39,7 @@ use crate::table::writer::RowFormat;
 use crate::track::{Limits, Track};
 use crate::units::{Dimension, Pair, PairError, parse_pair};
 use crate::unknowns::Solved;
+use crate::wall::WallCase;
 
 /// The file as written. Field names are the scene format.
 #[derive(Deserialize)]
@@ -51,6 +53,7 @@ struct SceneFile {
     fin: Option<Spanned<Two<Typed>>>,
     restitution: Option<Spanned<Typed>>,
     si: Option<bool>,
+    gravity: Option<Number>,
     show: Option<Vec<Section>>,
     contact_time: Option<Spanned<String>>,
     exact: Option<bool>,
@@ -254,14 +257,31 @@ pub struct Scene {
     pub solved: Option<Solved>,
 }
 
-/// A two-body scene whose bodies start together and are pushed apart (`e` undefined).
+/// A two-body scene that is not a collision of two movable bodies: a separation (the bodies
+/// start together and are pushed apart, `e` undefined) or a ball against a wall.
 #[derive(Clone, Debug)]
-pub struct SeparationScene {
+pub struct SpecialScene {
     pub about: About,
-    pub separation: Separation,
-    pub solved: Solved,
+    pub event: SpecialEvent,
+    pub solved: Option<Solved>,
     pub show: Sections,
     pub exact: bool,
+}
+
+/// The event of a `SpecialScene`.
+#[derive(Clone, Debug)]
+pub enum SpecialEvent {
+    Separation(Separation),
+    Wall(WallCase),
+}
+
+impl SpecialEvent {
+    pub fn special(&self) -> Special<'_> {
+        match self {
+            SpecialEvent::Separation(s) => Special::Separation(s),
+            SpecialEvent::Wall(w) => Special::Wall(w),
+        }
+    }
 }
 
 /// A scene file of either kind.
@@ -269,7 +289,7 @@ pub struct SeparationScene {
 #[allow(clippy::large_enum_variant)] // one per file, loaded once
 pub enum AnyScene {
     Case(Scene),
-    Separation(SeparationScene),
+    Special(SpecialScene),
     Track(TrackScene),
     Contact(ContactScene),
 }
@@ -390,6 +410,7 @@ impl Scene {
             fin,
             restitution,
             si: file.si.unwrap_or(false),
+            gravity: file.gravity.clone(),
         };
         let span = file
             .masses
@@ -408,9 +429,18 @@ impl Scene {
         };
         let mut show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         show.contact_time = contact_time;
+        let units = match &posed {
+            Posed::Collision(case, _) => case.units.clone(),
+            Posed::Separation(s, _) => s.units.clone(),
+            Posed::Wall(w, _) => w.units.clone(),
+        };
+        show.heights = Some(crate::units::HeightScale::new(
+            file.gravity.as_ref(),
+            &units,
+        ));
         let (case, solved) = match posed {
             Posed::Collision(case, solved) => (case, solved),
-            Posed::Separation(separation, solved) => {
+            Posed::Separation(..) | Posed::Wall(..) => {
                 let extra = [
                     file.sweep.as_ref().map(|_| "[sweep]"),
                     file.plot.as_ref().map(|_| "[plot]"),
@@ -423,21 +453,21 @@ impl Scene {
                     return Err(err(
                         None,
                         format!(
-                            "{key}: the bodies start together and are pushed apart (a separation, \
-                             e undefined), which has no {key}"
+                            "{key}: a separation (bodies starting together) or a wall has no {key}"
                         ),
                     ));
                 }
-                let about = About::new(
-                    (path, text),
-                    file.title,
-                    file.source,
-                    file.expect,
-                    separation_key,
-                )?;
-                return Ok(AnyScene::Separation(SeparationScene {
+                let (event, solved, keys): (_, _, KeyCheck) = match posed {
+                    Posed::Separation(s, solved) => {
+                        (SpecialEvent::Separation(s), Some(solved), separation_key)
+                    }
+                    Posed::Wall(w, solved) => (SpecialEvent::Wall(w), solved, wall_key),
+                    Posed::Collision(..) => unreachable!("matched above"),
+                };
+                let about = About::new((path, text), file.title, file.source, file.expect, keys)?;
+                return Ok(AnyScene::Special(SpecialScene {
                     about,
-                    separation,
+                    event,
                     solved,
                     show,
                     exact: file.exact.unwrap_or(false),
@@ -512,14 +542,45 @@ impl Scene {
 
 /// The quantities an `[expect]` key of a two-body scene may name.
 const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, momentum.*, forms.*, \
-                         energy.*, ellipses.*, products.*, changes.*, diagnostics.*, solved.*, \
-                         check.*, units.*";
+                         energy.*, ellipses.*, products.*, changes.*, heights.*, diagnostics.*, \
+                         solved.*, check.*, units.*";
 
 /// The quantities an `[expect]` key of a separation scene may name.
 const SEPARATION_KEYS: [&str; 11] = [
     "masses", "in", "com", "fin", "v_com", "momentum", "energy", "changes", "solved", "check",
     "units",
 ];
+
+/// A check of an `[expect]` key's first part.
+type KeyCheck = fn(&str) -> Result<(), ExpectError>;
+
+/// Checks that `top` names a quantity of a wall case's report.
+fn wall_key(top: &str) -> Result<(), ExpectError> {
+    let keys = [
+        "wall",
+        "restitution",
+        "mass",
+        "in",
+        "fin",
+        "approaching",
+        "momentum",
+        "energy",
+        "changes",
+        "heights",
+        "solved",
+        "check",
+        "units",
+    ];
+    if !keys.contains(&top) {
+        return Err(ExpectError::UnknownQuantity {
+            top: top.to_string(),
+            expected: "wall, restitution, mass, in, fin, approaching, momentum.*, energy.*, \
+                       changes.*, heights.*, solved.*, check.*, units.* (the ball's values)"
+                .to_string(),
+        });
+    }
+    Ok(())
+}
 
 /// Checks that `top` names a quantity of a separation's report.
 fn separation_key(top: &str) -> Result<(), ExpectError> {

@@ -13,6 +13,7 @@ pub enum Dimension {
     Mass,
     Velocity,
     Time,
+    Length,
 }
 
 impl Dimension {
@@ -22,6 +23,7 @@ impl Dimension {
             Dimension::Mass => "mass",
             Dimension::Velocity => "velocity",
             Dimension::Time => "time",
+            Dimension::Length => "length",
         }
     }
 }
@@ -121,6 +123,36 @@ pub const UNITS: &[Unit] = &[
         si: "1",
     },
     Unit {
+        dimension: Dimension::Length,
+        names: &["m"],
+        si: "1",
+    },
+    Unit {
+        dimension: Dimension::Length,
+        names: &["cm"],
+        si: "0.01",
+    },
+    Unit {
+        dimension: Dimension::Length,
+        names: &["mm"],
+        si: "0.001",
+    },
+    Unit {
+        dimension: Dimension::Length,
+        names: &["km"],
+        si: "1000",
+    },
+    Unit {
+        dimension: Dimension::Length,
+        names: &["ft", "feet", "foot"],
+        si: "0.3048",
+    },
+    Unit {
+        dimension: Dimension::Length,
+        names: &["in", "inch", "inches"],
+        si: "0.0254",
+    },
+    Unit {
         dimension: Dimension::Time,
         names: &["ms"],
         si: "0.001",
@@ -213,12 +245,12 @@ fn edit_distance(a: &str, b: &str) -> usize {
 
 /// The unit called `name` for `dimension`, or an error naming the nearest ones.
 pub fn lookup(name: &str, dimension: Dimension) -> Result<&'static Unit, UnitError> {
-    if let Some((_, why)) = AMBIGUOUS.iter().find(|(n, _)| *n == name) {
-        return Err(UnitError::Ambiguous(why));
-    }
     let fits: Vec<&Unit> = UNITS.iter().filter(|u| u.dimension == dimension).collect();
     if let Some(u) = fits.iter().find(|u| u.names.contains(&name)) {
         return Ok(u);
+    }
+    if let Some((_, why)) = AMBIGUOUS.iter().find(|(n, _)| *n == name) {
+        return Err(UnitError::Ambiguous(why));
     }
     if let Some(u) = UNITS.iter().find(|u| u.names.contains(&name)) {
         return Err(UnitError::WrongDimension {
@@ -256,6 +288,106 @@ pub fn lookup(name: &str, dimension: Dimension) -> Result<&'static Unit, UnitErr
 pub struct Quantity {
     pub number: Number,
     pub unit: Option<&'static Unit>,
+    /// A velocity typed as a height (`height 2 m`): `number` is the signed height in metres,
+    /// to become the speed `sqrt(2 g h)` once `g` is known (`with_gravity`).
+    pub height: bool,
+}
+
+/// The standard acceleration of gravity, 9.80665 m/s^2 (CGPM 1901), exact by definition.
+pub const STANDARD_GRAVITY: &str = "9.80665";
+
+impl Quantity {
+    /// A height as the speed of a fall from rest through it (or needed to rise it),
+    /// `sqrt(2 g h)` in m/s with the height's sign: `2 g h` exact, rounded once, then a correctly
+    /// rounded square root (within an ulp of the exact speed). Other quantities as they are.
+    pub fn with_gravity(&self, g: &BigRational) -> Result<Quantity, NumberError> {
+        if !self.height {
+            return Ok(self.clone());
+        }
+        let h = self.number.exact();
+        let two_gh = BigRational::from_integer(2.into()) * g * num_traits::Signed::abs(&h);
+        let speed = crate::quantity::to_f64(&two_gh)
+            .map(f64::sqrt)
+            .ok_or_else(|| NumberError::Syntax(format!("height {}", self.number)))?;
+        let speed = if h < BigRational::from_integer(0.into()) {
+            -speed
+        } else {
+            speed
+        };
+        Ok(Quantity {
+            number: Number::from_f64(speed)?,
+            unit: lookup("m/s", Dimension::Velocity).ok(),
+            height: false,
+        })
+    }
+}
+
+/// How speeds become heights, `h = v^2 / 2g` (`--show heights`): `g` in m/s^2 and the size of
+/// the case's velocity unit in m/s (1 when velocities have no unit: they are taken as m/s).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HeightScale {
+    pub g: BigRational,
+    pub velocity_si: BigRational,
+    /// Whether the velocities had no unit (so were taken as m/s).
+    pub assumed: bool,
+}
+
+impl HeightScale {
+    /// For a case in `units`, with `g` (default: standard gravity).
+    pub fn new(g: Option<&Number>, units: &Units) -> HeightScale {
+        let g = g.map_or_else(
+            || {
+                STANDARD_GRAVITY
+                    .parse::<Number>()
+                    .map(|n| n.exact())
+                    .unwrap_or_default()
+            },
+            Number::exact,
+        );
+        let unit = units
+            .velocity
+            .and_then(|n| lookup(n, Dimension::Velocity).ok());
+        HeightScale {
+            g,
+            velocity_si: unit.map_or_else(|| BigRational::from_integer(1.into()), Unit::si),
+            assumed: unit.is_none(),
+        }
+    }
+    /// `v^2 / 2g` in metres, exact.
+    pub fn height(&self, v: &BigRational) -> BigRational {
+        let v = v * &self.velocity_si;
+        &v * &v / (BigRational::from_integer(2.into()) * &self.g)
+    }
+    /// `g` as a decimal.
+    pub fn g_text(&self) -> String {
+        crate::quantity::terminating_decimal(&self.g)
+            .unwrap_or_else(|| crate::quantity::fraction(&self.g))
+    }
+}
+
+/// `height 2 m`, `-height 6 ft` (a speed from a height, signed): the height in metres, exact.
+fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
+    let (sign, rest) = match t.strip_prefix('-') {
+        Some(r) => ("-", r.trim_start()),
+        None => ("", t.strip_prefix('+').unwrap_or(t).trim_start()),
+    };
+    let rest = rest.strip_prefix("height")?;
+    Some((|| {
+        let q = parse(rest, Dimension::Length)?;
+        let unit = q
+            .unit
+            .map_or_else(|| BigRational::from_integer(1.into()), Unit::si);
+        let metres = q.number.exact() * unit;
+        if metres < BigRational::from_integer(0.into()) {
+            return Err(QuantityError::NegativeHeight(t.to_string()));
+        }
+        let text = format!("{sign}{}", crate::quantity::fraction(&metres));
+        Ok(Quantity {
+            number: text.parse()?,
+            unit: None,
+            height: true,
+        })
+    })())
 }
 
 /// Why a text is not a quantity.
@@ -267,15 +399,28 @@ pub enum QuantityError {
     Unit(#[from] UnitError),
     #[error("contact time '{0}' must be above 0 (a duration such as '2 ms' or '0.01 s')")]
     NotPositive(String),
+    #[error("'{0}': a height must be >= 0; give the direction as a sign: '-height 2 m' (down)")]
+    NegativeHeight(String),
 }
 
 /// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
 pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
     let t = text.trim();
+    if dimension == Dimension::Velocity
+        && let Some(height) = parse_height(t)
+    {
+        return height;
+    }
     // A whole number (or one that is out of range, or divides by zero) has no unit: its own
     // error is the one to report.
     match t.parse::<Number>() {
-        Ok(number) => return Ok(Quantity { number, unit: None }),
+        Ok(number) => {
+            return Ok(Quantity {
+                number,
+                unit: None,
+                height: false,
+            });
+        }
         Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.into()),
         Err(_) => {}
     }
@@ -307,7 +452,11 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
     } else {
         Some(lookup(rest, dimension)?)
     };
-    Ok(Quantity { number, unit })
+    Ok(Quantity {
+        number,
+        unit,
+        height: false,
+    })
 }
 
 /// How values are measured in a case: the units kept (when shared), or SI.
@@ -415,6 +564,7 @@ pub fn resolve(
         qs.iter()
             .map(|q| match q {
                 Given::Unknown => Ok(Given::Unknown),
+                Given::Wall => Ok(Given::Wall),
                 Given::Known(q) if convert => {
                     let si = q.number.exact()
                         * q.unit
@@ -472,8 +622,12 @@ fn value_message(dimension: Dimension, e: &QuantityError) -> String {
 pub fn parse_pair(text: &str, dimension: Dimension, what: &str) -> Result<Pair, PairError> {
     let [a, b] = split_fields::<2>(text, what)?;
     let one = |t: &str| {
-        Given::parse(t, |t| parse(t, dimension))
-            .map_err(|error| PairError::Value { dimension, error })
+        let parsed = if dimension == Dimension::Mass {
+            Given::parse_mass(t, |t| parse(t, dimension))
+        } else {
+            Given::parse(t, |t| parse(t, dimension))
+        };
+        parsed.map_err(|error| PairError::Value { dimension, error })
     };
     Ok(Pair([one(a)?, one(b)?]))
 }

@@ -72,12 +72,19 @@ pub struct Solved {
     /// The bodies start together (`V1 = V2`) and come apart (`f1 != f2`): an explosion or a
     /// recoil, where `e` is undefined and only momentum holds (`values[E]` means nothing).
     pub separation: bool,
+    /// The body that is a wall (0 or 1), whose mass means nothing.
+    pub wall: Option<usize>,
 }
 
 impl Solved {
     /// Whether `e` is among the values that mean something (not for a separation).
     pub fn has(&self, v: Var) -> bool {
-        !(self.separation && v == Var::E)
+        let wall_mass = match self.wall {
+            Some(0) => Some(Var::M1),
+            Some(_) => Some(Var::M2),
+            None => None,
+        };
+        !(self.separation && v == Var::E) && Some(v) != wall_mass
     }
 
     pub fn get(&self, v: Var) -> &Q {
@@ -256,6 +263,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         unknowns,
         checks,
         separation,
+        wall: None,
     })
 }
 

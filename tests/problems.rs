@@ -244,3 +244,131 @@ fn what_cannot_be_is_refused() {
         );
     }
 }
+
+#[test]
+fn a_drop_and_a_rebound_give_e() {
+    // Dropped from 2 m onto a floor, back up to 1.5 m: e = sqrt(1.5 / 2) = sqrt(3)/2
+    // = 0.86602540378443864676...; each speed is within an ulp, so e within 2 ulps (4 allowed).
+    let (code, out, err) = run(&[
+        "-m",
+        "wall,1",
+        "-v",
+        "0,-height 2 m",
+        "--fin",
+        "0,height 1.5 m",
+        "--show",
+        "vectors,energy,heights",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["event"], "wall");
+    assert_eq!(j["wall"], 1);
+    assert_close(f(&j["solved"]["e"]), 3f64.sqrt() / 2.0, REL, "e");
+    assert!(j["solved"].get("m1").is_none(), "a wall has no mass: {j}");
+    assert_close(f(&j["heights"]["in"]), 2.0, REL, "height in");
+    assert_close(f(&j["heights"]["fin"]), 1.5, REL, "height fin");
+    // Lost: 1/4 of the crunch (1 - e^2 = 1/4); crunch = 1/2 v^2 = g h = 19.6133.
+    assert_close(f(&j["energy"]["crunch"]), 19.6133, REL, "crunch");
+    assert_close(f(&j["energy"]["lost"]), 19.6133 / 4.0, 8.0 * REL, "lost");
+    // With g = 9.8 the speed is sqrt(39.2).
+    let (_, out, _) = run(&[
+        "-m",
+        "wall,1",
+        "-v",
+        "0,-height 2 m",
+        "--gravity",
+        "9.8",
+        "--format",
+        "json",
+    ]);
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_close(
+        f(&j["in"][1]),
+        -(39.2f64.sqrt()),
+        REL,
+        "speed from 2 m at g = 9.8",
+    );
+    assert_close(f(&j["fin"][1]), 39.2f64.sqrt(), REL, "elastic rebound");
+}
+
+#[test]
+fn a_ballistic_pendulum_gives_the_bullets_speed() {
+    // 10 g into 2 kg, they swing up 10 cm together: f = sqrt(2 g 0.1) = sqrt(1.96133), and
+    // momentum gives v1 = (0.01 + 2)/0.01 f = 201 f = 281.49545880884...
+    let (code, out, err) = run(&[
+        "-m",
+        "10 g,2 kg",
+        "-v",
+        "?,0",
+        "-e",
+        "0",
+        "--fin",
+        "height 10 cm,height 10 cm",
+        "--show",
+        "vectors,heights",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    let exact = 201.0 * 1.96133f64.sqrt();
+    assert_close(f(&j["solved"]["v1"]), exact, REL, "v1");
+    assert_close(f(&j["heights"]["fin"][0]), 0.1, REL, "swing");
+    assert_eq!(f(&j["heights"]["g"]), 9.80665);
+}
+
+#[test]
+fn walls_forward_moving_and_refused() {
+    // 0.24 kg at 5 m/s into a wall, e = 0.8: back at -4; crunch 1/2 0.24 25 = 3, lost 0.36 of
+    // it = 1.08 = 27/25; impulse 0.24 (-9) = -2.16.
+    let (code, j) = json("-m 0.24,wall -v 5,0 -e 0.8 --show all --exact");
+    assert_eq!(code, 0);
+    assert_eq!(j["fin"], serde_json::json!(["-4", "0"]));
+    assert_eq!(j["energy"]["lost"], "27/25");
+    assert_eq!(j["changes"]["impulse"], "-54/25");
+    assert!(j.get("com").is_none() && j.get("v_com").is_none(), "{j}");
+    let text = collide()
+        .args([
+            "solve", "-m", "0.24,inf", "-v", "5,0", "-e", "0.8", "--show", "all",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(text.stdout).unwrap();
+    let words: Vec<&str> = text.split(|c: char| !c.is_alphanumeric()).collect();
+    assert!(!words.contains(&"inf") && !words.contains(&"NaN"), "{text}");
+    // A wall moving at 1 into a ball at rest, elastic: the ball leaves at 2 (w - e (0 - w)).
+    let (_, j) = json("-m wall,2 -v 1,0 --show vectors");
+    assert_eq!(j["fin"], serde_json::json!([1.0, 2.0]));
+    // Moving apart: said, not hidden.
+    let (code, j) = json("-m wall,1 -v 0,5 --show vectors");
+    assert_eq!((code, &j["approaching"]), (0, &Value::Bool(false)));
+    let (_, out, _) = run(&["-m", "wall,1", "-v", "0,5"]);
+    assert!(out.contains("do not meet"), "{out}");
+    for (args, needle) in [
+        (vec!["-m", "wall,wall", "-v", "0,1"], "two walls"),
+        (vec!["-m", "wall,?", "-v", "0,-1", "--fin", "0,1"], "mass"),
+        (
+            vec!["-m", "wall,1", "-v", "0,-1", "--frame", "com"],
+            "--frame",
+        ),
+        (vec!["-m", "wall,1", "-v", "0,height -2 m"], "sign"),
+        (
+            vec!["-m", "wall,1", "-v", "0,-1", "--fin", "0,-2"],
+            "pass through the wall",
+        ),
+        (
+            vec!["-m", "wall,1", "-v", "0,-1", "--fin", "1,1"],
+            "does not move",
+        ),
+        (
+            vec!["-m", "1,1", "-v", "height 2 m,0", "--gravity", "0"],
+            "gravity",
+        ),
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {out}");
+        assert!(out.is_empty() && err.contains(needle), "{args:?}: {err}");
+    }
+}

@@ -672,7 +672,7 @@ mod random_layouts {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(150))]
+        #![proptest_config(common::proptest_config(150))]
         /// Random layouts (masses 1e-30..1e30 mixed, walls, sizes, e in [0, 1]), run with and
         /// without a log: the same result, bodies in order and inside the walls, momentum kept
         /// without walls, energy kept when elastic and never gained.
@@ -704,7 +704,9 @@ mod random_layouts {
                 e_wall: e,
                 gravity: 0.0,
             };
-            track.check().unwrap();
+            // Sizes and gaps added in binary64 can overlap by rounding: such layouts are refused
+            // by `check` (tested elsewhere), not run.
+            prop_assume!(track.check().is_ok());
             let limits = Limits { until, max_collisions: 20_000 };
             let plain = track.run(limits, None).unwrap();
             let mut n = 0u64;

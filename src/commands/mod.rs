@@ -61,6 +61,7 @@ impl CaseArgs {
             fin: fin.cloned(),
             restitution: self.restitution.clone(),
             si: self.si,
+            gravity: self.gravity.clone(),
         }
     }
 

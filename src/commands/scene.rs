@@ -4,11 +4,8 @@
 use anyhow::{Context, Result};
 use collide::report::Section;
 use collide::report::scene::{self as report, Checked, Listed};
-use collide::report::separation::AnySeparation;
 use collide::report::{AnyReport, contact as contact_report, json, solved, track as track_report};
-use collide::scene::{
-    About, AnyScene, ContactScene, Scene, SceneError, SeparationScene, TrackScene,
-};
+use collide::scene::{About, AnyScene, ContactScene, Scene, SceneError, SpecialScene, TrackScene};
 use collide::table::sweep::Shard;
 use collide::track::TrackReport;
 
@@ -54,7 +51,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                     None
                 }
                 AnyScene::Case(scene) => Some(solve(scene)?),
-                AnyScene::Separation(scene) => Some(solve_separation(scene)?),
+                AnyScene::Special(scene) => Some(solve_special(scene)?),
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
             })
@@ -122,24 +119,30 @@ fn solve(scene: Scene) -> Result<Checked> {
     Ok(checked)
 }
 
-fn solve_separation(scene: SeparationScene) -> Result<Checked> {
+fn solve_special(scene: SpecialScene) -> Result<Checked> {
     let at = || format!("{}", scene.about.path.display());
-    let mut sections = scene.show.clone();
-    for s in Section::EVERY {
-        sections.insert(s);
+    let mut compute = scene.show.clone();
+    for s in Section::EVERY.into_iter().chain([Section::Heights]) {
+        compute.insert(s);
     }
-    let result = AnySeparation::new(&scene.separation, &sections, scene.exact).with_context(at)?;
-    let text =
-        solved::text(&scene.solved, scene.exact) + &result.text(&scene.separation, &scene.show);
-    let mut json = result.json();
+    let event = scene.event.special();
+    let result = event
+        .render(&compute, &scene.show, scene.exact)
+        .with_context(at)?;
+    let head = scene
+        .solved
+        .as_ref()
+        .map(|s| solved::text(s, scene.exact))
+        .unwrap_or_default();
+    let mut json = result.json;
     solved::annotate(
         &mut json,
-        &scene.separation.units,
-        Some(&scene.solved),
+        &event.units(),
+        scene.solved.as_ref(),
         scene.exact,
     );
-    let mut checked = check(scene.about, text, json)?;
-    checked.inconsistent = scene.solved.inconsistent();
+    let mut checked = check(scene.about, head + &result.text, json)?;
+    checked.inconsistent = scene.solved.as_ref().is_some_and(|s| s.inconsistent());
     Ok(checked)
 }
 

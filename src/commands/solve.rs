@@ -3,7 +3,7 @@
 use anyhow::Result;
 use collide::plot::Kind;
 use collide::problem::Posed;
-use collide::report::separation::AnySeparation;
+use collide::report::special::Special;
 use collide::report::{AnyReport, Sections, json, solved};
 
 use super::{Outcome, plot};
@@ -22,51 +22,67 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         .solve(args.case.inertia.clone())?;
     let mut sections = Sections::new(args.show.clone());
     sections.contact_time = args.contact_time.clone();
+    let units = match &posed {
+        Posed::Collision(case, _) => case.units.clone(),
+        Posed::Separation(s, _) => s.units.clone(),
+        Posed::Wall(w, _) => w.units.clone(),
+    };
+    sections.heights = Some(collide::units::HeightScale::new(
+        args.case.gravity.as_ref(),
+        &units,
+    ));
     let (case, unknowns) = match posed {
         Posed::Collision(case, unknowns) => (case, unknowns),
-        Posed::Separation(separation, solved) => {
+        Posed::Separation(..) | Posed::Wall(..) => {
+            let (event, solved) = match &posed {
+                Posed::Separation(s, solved) => (Special::Separation(s), Some(solved)),
+                Posed::Wall(w, solved) => (Special::Wall(w), solved.as_ref()),
+                Posed::Collision(..) => unreachable!("matched above"),
+            };
             let extra = [
                 (args.frame != collide::frame::Frame::Lab).then_some("--frame"),
                 args.reverse.then_some("--reverse"),
                 args.plot.as_ref().map(|_| "--plot"),
             ];
             if let Some(flag) = extra.into_iter().flatten().next() {
-                anyhow::bail!(
-                    "{flag}: the bodies start together (V1 = V2) and are pushed apart, a \
-                     separation with e undefined; {flag} describes a collision"
-                );
+                let what = match event {
+                    Special::Separation(_) => {
+                        "the bodies start together (V1 = V2) and are pushed apart, a separation \
+                         with e undefined"
+                    }
+                    Special::Wall(_) => "one body is a wall (immovable)",
+                };
+                anyhow::bail!("{flag}: {what}; {flag} describes a collision of two movable bodies");
             }
-            let report = AnySeparation::new(&separation, &sections, args.exact)?;
+            let inconsistent = solved.is_some_and(|s| s.inconsistent());
+            let head = solved
+                .map(|s| solved::text(s, args.exact))
+                .unwrap_or_default();
+            if inconsistent {
+                return Ok(Outcome {
+                    stdout: inconsistent_report(solved.expect("checked"), &units, &args),
+                    status: 1,
+                });
+            }
+            let report = event.render(&sections, &sections, args.exact)?;
             let stdout = match args.format {
-                Format::Text => {
-                    solved::text(&solved, args.exact) + &report.text(&separation, &sections)
-                }
+                Format::Text => head + &report.text,
                 Format::Json => {
-                    let mut json = report.json();
-                    solved::annotate(&mut json, &separation.units, Some(&solved), args.exact);
+                    let mut json = report.json;
+                    solved::annotate(&mut json, &units, solved, args.exact);
                     json::render(&json)
                 }
             };
-            let status = u8::from(solved.inconsistent());
-            return Ok(Outcome { stdout, status });
+            return Ok(Outcome { stdout, status: 0 });
         }
     };
     // Given data that contradict a checked law fail like a failed [expect] (exit 1), and no
     // collision is printed: one recomputed from e would differ from the given FIN.
     if let Some(s) = unknowns.as_ref().filter(|s| s.inconsistent()) {
-        let stdout = match args.format {
-            Format::Text => {
-                solved::text(s, args.exact)
-                    + "The given values contradict each other, so no collision is printed: \
-                       check them, or mark one '?' to solve for it.\n"
-            }
-            Format::Json => {
-                let mut json = serde_json::json!({ "consistent": false });
-                solved::annotate(&mut json, &case.units, Some(s), args.exact);
-                json::render(&json)
-            }
-        };
-        return Ok(Outcome { stdout, status: 1 });
+        return Ok(Outcome {
+            stdout: inconsistent_report(s, &case.units, &args),
+            status: 1,
+        });
     }
     let report = AnyReport::of(&case, &args.frame, args.exact, &sections, args.reverse)?;
     let mut stdout = match args.format {
@@ -90,4 +106,25 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         )?);
     }
     Ok(Outcome { stdout, status: 0 })
+}
+
+/// Given values that contradict a checked law: what was checked, and no event (one recomputed
+/// from some of the values would differ from the others).
+fn inconsistent_report(
+    s: &collide::unknowns::Solved,
+    units: &collide::units::Units,
+    args: &SolveArgs,
+) -> String {
+    match args.format {
+        Format::Text => {
+            solved::text(s, args.exact)
+                + "The given values contradict each other, so no collision is printed: check \
+                   them, or mark one '?' to solve for it.\n"
+        }
+        Format::Json => {
+            let mut json = serde_json::json!({ "consistent": false });
+            solved::annotate(&mut json, units, Some(s), args.exact);
+            json::render(&json)
+        }
+    }
 }

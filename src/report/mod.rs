@@ -10,8 +10,10 @@ pub mod pi;
 pub mod scene;
 pub mod separation;
 pub mod solved;
+pub mod special;
 pub mod text;
 pub mod track;
+pub mod wall;
 
 use std::collections::BTreeSet;
 
@@ -46,6 +48,8 @@ pub enum Section {
     Products,
     /// Per body: dv, impulse, KE before and after; fraction of KE lost or transferred; average force (--contact-time)
     Changes,
+    /// The height each IN and FIN speed corresponds to, v^2 / 2g (how high a pendulum swings or a ball rebounds)
+    Heights,
     /// Self-check: residuals of momentum and energy conservation, and the solve's run time
     Diagnostics,
     /// Every physics section (not diagnostics, whose timing varies run to run)
@@ -75,6 +79,7 @@ impl Section {
             Section::Ellipses => &["ellipses"],
             Section::Products => &["products"],
             Section::Changes => &["changes"],
+            Section::Heights => &["heights"],
             Section::Diagnostics => &["diagnostics"],
             Section::All => &[],
         }
@@ -85,6 +90,7 @@ impl Section {
     pub fn of_json_key(key: &str) -> Option<Section> {
         Section::EVERY
             .into_iter()
+            .chain([Section::Heights, Section::Diagnostics])
             .find(|s| s.json_keys().contains(&key))
     }
 }
@@ -95,6 +101,8 @@ pub struct Sections {
     set: BTreeSet<Section>,
     /// The contact time in seconds, for the average forces of `changes` (`--contact-time`).
     pub contact_time: Option<BigRational>,
+    /// `g` and the velocity unit, for `heights`.
+    pub heights: Option<crate::units::HeightScale>,
 }
 
 impl Sections {
@@ -110,6 +118,7 @@ impl Sections {
         Sections {
             set,
             contact_time: None,
+            heights: None,
         }
     }
     pub fn contains(&self, s: Section) -> bool {
@@ -155,6 +164,8 @@ pub struct Report<N = f64> {
     pub products: Option<Products<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub changes: Option<ChangeReport<N>>,
+    #[serde(default = "none", skip_serializing_if = "Option::is_none")]
+    pub heights: Option<Heights<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub diagnostics: Option<Diagnostics>,
     /// The time-reversed collision (`--reverse`).
@@ -279,6 +290,16 @@ impl<N: Scalar> ChangeReport<N> {
             average_force: c.average_force.as_ref().map(two),
         }
     }
+}
+
+/// `--show heights`: `v^2 / 2g` of each body's IN and FIN speed, in metres.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Heights<N = f64> {
+    /// `g` in m/s^2.
+    pub g: N,
+    #[serde(rename = "in")]
+    pub at_in: [N; 2],
+    pub fin: [N; 2],
 }
 
 /// A solve's own error beside its own run time (`--show diagnostics`).
@@ -476,6 +497,20 @@ impl<N: Scalar> Report<N> {
             energy: energy.filter(|_| has(Section::Energy)),
             changes: has(Section::Changes)
                 .then(|| ChangeReport::of(&c.exact().changes(sections.contact_time.as_ref()))),
+            heights: sections
+                .heights
+                .as_ref()
+                .filter(|_| has(Section::Heights))
+                .map(|h| {
+                    let x = c.exact();
+                    let f = x.v_fin_q();
+                    let one = |v: &BigRational| N::of_rational(&h.height(v));
+                    Heights {
+                        g: N::of_rational(&h.g),
+                        at_in: [one(&x.v[0]), one(&x.v[1])],
+                        fin: [one(&f[0]), one(&f[1])],
+                    }
+                }),
             diagnostics: has(Section::Diagnostics).then(|| {
                 let (momentum_residual, energy_residual) = c.residuals();
                 let (solve_ns, repetitions) = time_solves(c);
@@ -515,6 +550,7 @@ impl<N: Scalar> Report<N> {
         r.ellipses = r.ellipses.filter(|_| keep(Section::Ellipses));
         r.products = r.products.filter(|_| keep(Section::Products));
         r.changes = r.changes.filter(|_| keep(Section::Changes));
+        r.heights = r.heights.filter(|_| keep(Section::Heights));
         r.diagnostics = r.diagnostics.filter(|_| keep(Section::Diagnostics));
         r
     }

@@ -5,9 +5,9 @@
 
 use serde::Serialize;
 
-use super::text::{Block, changes, header_units, pair};
+use super::text::{Block, changes, header_units, pair, typed};
 use super::{ChangeReport, Section, Sections};
-use crate::quantity::{Exact, Scalar};
+use crate::quantity::Scalar;
 use crate::separation::Separation;
 
 /// A separation's numbers. Field names are the JSON schema.
@@ -81,17 +81,15 @@ impl<N: Scalar> SeparationReport<N> {
         }
     }
 
-    /// The first value that is not a binary64 number, by JSON path.
-    pub fn unrepresentable(&self) -> Option<String> {
-        super::first_unrepresentable(&serde_json::to_value(self).expect("a report serializes"))
-    }
-
     /// Text for people.
     pub fn text(&self, s: &Separation, sections: &Sections) -> String {
         let mut out = format!(
             "M = diag({}, {})   V_IN = ({}, {})   e undefined (separation: the bodies start \
              together and are pushed apart)\n",
-            s.masses[0], s.masses[1], s.velocities[0], s.velocities[1]
+            typed(&s.masses[0]),
+            typed(&s.masses[1]),
+            typed(&s.velocities[0]),
+            typed(&s.velocities[1])
         );
         out.push_str(&header_units(&s.units));
         if sections.contains(Section::Vectors) {
@@ -132,43 +130,5 @@ impl<N: Scalar> SeparationReport<N> {
             changes(c, &s.units).render(&mut out);
         }
         out
-    }
-}
-
-/// A separation's report in binary64 or exact arithmetic.
-pub enum AnySeparation {
-    Binary64(Box<SeparationReport<f64>>),
-    Exact(Box<SeparationReport<Exact>>),
-}
-
-impl AnySeparation {
-    pub fn new(
-        s: &Separation,
-        sections: &Sections,
-        exact: bool,
-    ) -> Result<AnySeparation, super::Unrepresentable> {
-        if exact {
-            return Ok(AnySeparation::Exact(Box::new(SeparationReport::new(
-                s, sections,
-            ))));
-        }
-        let r = SeparationReport::new(s, sections);
-        match r.unrepresentable() {
-            Some(quantity) => Err(super::Unrepresentable { quantity }),
-            None => Ok(AnySeparation::Binary64(Box::new(r))),
-        }
-    }
-    pub fn json(&self) -> serde_json::Value {
-        match self {
-            AnySeparation::Binary64(r) => serde_json::to_value(r),
-            AnySeparation::Exact(r) => serde_json::to_value(r),
-        }
-        .expect("reports serialize")
-    }
-    pub fn text(&self, s: &Separation, sections: &Sections) -> String {
-        match self {
-            AnySeparation::Binary64(r) => r.text(s, sections),
-            AnySeparation::Exact(r) => r.text(s, sections),
-        }
     }
 }

@@ -110,15 +110,26 @@ impl Block {
     }
 }
 
+/// A value for the header: as typed, or (a solved value whose exact fraction is long, such as
+/// one derived from a height's binary64 speed) its nearest binary64, marked `≈`.
+pub fn typed(n: &crate::number::Number) -> String {
+    let text = n.to_string();
+    if text.contains('/') && text.len() > 24 {
+        format!("≈{}", crate::number::num(n.value()))
+    } else {
+        text
+    }
+}
+
 /// `M = diag(4, 1)   V_IN = (60, 10)   e = 1 (elastic: ka-bong)`, a line.
 pub fn header(case: &Case) -> String {
     let e = case.restitution();
     let mut out = format!(
         "M = {}   V_IN = ({}, {})   e = {} ({})\n",
         case.inertia().describe(),
-        case.velocities[0],
-        case.velocities[1],
-        e,
+        typed(&case.velocities[0]),
+        typed(&case.velocities[1]),
+        typed(e.number()),
         e.kind()
     );
     out.push_str(&header_units(&case.units));
@@ -171,6 +182,23 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
     }
     if let Some(c) = &report.changes {
         changes(c, &case.units).render(&mut out);
+    }
+    if let Some(h) = &report.heights {
+        let mut b = Block::new(format!(
+            "Heights (v^2 / 2g with g = {} m/s^2, in m)",
+            h.g.show()
+        ));
+        b.row(
+            "IN",
+            pair(&h.at_in),
+            "the height a fall from rest needs for each speed",
+        );
+        b.row(
+            "FIN",
+            pair(&h.fin),
+            "how high each body rises (a pendulum's swing)",
+        );
+        b.render(&mut out);
     }
     if let Some(d) = &report.diagnostics {
         diagnostics(d).render(&mut out);

@@ -1,0 +1,235 @@
+//! A body against a wall or floor: an immovable body (issue 15), the limit of the two-body
+//! collision as one mass grows without bound (lecture Sec. 1: the weights become 0 and 1, the
+//! reduced mass becomes the ball's mass `m`, and `V_COM` the wall's velocity `w`). Only
+//! restitution holds (the wall takes any momentum): the ball leaves at
+//! `f = w - e (v - w)`, and the wall keeps `w`. The crunch energy is `1/2 m (v - w)^2`, lost
+//! `(1 - e^2)` of it; the wall's kinetic energy and the centre of mass mean nothing, and are
+//! left out. Everything is exact from the typed values, rounded once when printed.
+
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+use crate::number::Number;
+use crate::restitution::Restitution;
+use crate::units::Units;
+use crate::unknowns::{UnknownError, Var};
+
+type Q = BigRational;
+
+/// A ball against a wall.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WallCase {
+    /// Which body is the wall: 0 (on the left) or 1 (on the right).
+    pub wall: usize,
+    /// The ball's mass as typed.
+    pub mass: Number,
+    pub velocities: [Number; 2],
+    pub restitution: Restitution,
+    pub units: Units,
+}
+
+fn half() -> Q {
+    Q::new(1.into(), 2.into())
+}
+
+impl WallCase {
+    pub fn ball(&self) -> usize {
+        1 - self.wall
+    }
+    pub fn m(&self) -> Q {
+        self.mass.exact()
+    }
+    pub fn e(&self) -> Q {
+        self.restitution.number().exact()
+    }
+    pub fn v(&self) -> [Q; 2] {
+        [self.velocities[0].exact(), self.velocities[1].exact()]
+    }
+    /// `(ball, wall)` initial velocities.
+    fn ball_wall(&self) -> (Q, Q) {
+        let v = self.v();
+        (v[self.ball()].clone(), v[self.wall].clone())
+    }
+    /// FIN: the ball at `w - e (v - w)`, the wall unchanged.
+    pub fn fin(&self) -> [Q; 2] {
+        let (v, w) = self.ball_wall();
+        let mut f = self.v();
+        f[self.ball()] = &w - self.e() * (&v - &w);
+        f
+    }
+    /// Whether the ball moves toward the wall (`V1 > V2`: body 1 on the left catches body 2).
+    pub fn approaching(&self) -> bool {
+        let v = self.v();
+        v[0] > v[1]
+    }
+    /// `1/2 m (v - w)^2`: the kinetic energy in the wall's frame.
+    pub fn crunch(&self) -> Q {
+        let (v, w) = self.ball_wall();
+        let d = v - w;
+        half() * self.m() * &d * &d
+    }
+    /// `(1 - e^2) crunch` (negative when superelastic).
+    pub fn lost(&self) -> Q {
+        let e = self.e();
+        (Q::one() - &e * &e) * self.crunch()
+    }
+    /// The ball's kinetic energy at a velocity.
+    pub fn ke(&self, v: &Q) -> Q {
+        half() * (self.m() * v) * v
+    }
+    /// The ball's momentum at a velocity.
+    pub fn p(&self, v: &Q) -> Q {
+        self.m() * v
+    }
+    /// The ball's change of velocity `f - v = -(1 + e)(v - w)`.
+    pub fn dv(&self) -> Q {
+        let (v, w) = self.ball_wall();
+        -(Q::one() + self.e()) * (v - w)
+    }
+}
+
+/// The values of a wall problem, `None` for `?`: the ball's initial and final velocity, the
+/// wall's, and `e`.
+pub struct WallProblem {
+    pub ball: (Option<Q>, Option<Q>),
+    pub wall: (Option<Q>, Option<Q>),
+    pub e: Option<Q>,
+}
+
+/// Solves a wall problem for its unknown (restitution is the one law, so at most one of the
+/// ball's velocities and `e`; the wall's final velocity is its initial one).
+pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
+    let (w0, w1) = p.wall;
+    let w = match (w0, w1) {
+        (Some(a), Some(b)) if a != b => {
+            return Err(UnknownError::Unphysical(format!(
+                "a wall does not move: its final velocity {} must be its initial {}",
+                crate::quantity::fraction(&b),
+                crate::quantity::fraction(&a)
+            )));
+        }
+        (Some(a), _) | (None, Some(a)) => a,
+        (None, None) => {
+            return Err(UnknownError::TooMany(
+                2,
+                "the wall's initial and final velocity".into(),
+            ));
+        }
+    };
+    // Restitution with the wall on either side: f_ball - w = -e (v_ball - w).
+    let (v, f, e) = (p.ball.0, p.ball.1, p.e);
+    let names = |list: &[(bool, &str)]| -> Vec<String> {
+        list.iter()
+            .filter(|(unknown, _)| *unknown)
+            .map(|(_, n)| n.to_string())
+            .collect()
+    };
+    let unknown = names(&[(v.is_none(), "v"), (f.is_none(), "f"), (e.is_none(), "e")]);
+    if unknown.len() > 1 {
+        return Err(UnknownError::TooMany(
+            unknown.len(),
+            format!(
+                "{}: against a wall only restitution holds, so one can be solved for",
+                unknown.join(", ")
+            ),
+        ));
+    }
+    let mut residual = None;
+    let (v, f, e) = match (v, f, e) {
+        (Some(v), Some(f), Some(e)) => {
+            residual = Some(&f - &w + &e * (&v - &w));
+            (v, f, e)
+        }
+        (Some(v), None, Some(e)) => {
+            let f = &w - &e * (&v - &w);
+            (v, f, e)
+        }
+        (None, Some(f), Some(e)) => {
+            if e.is_zero() {
+                return Err(UnknownError::Many(
+                    "with e = 0 the ball leaves with the wall whatever its speed".into(),
+                ));
+            }
+            let v = &w - (&f - &w) / &e;
+            (v, f, e)
+        }
+        (Some(v), Some(f), None) => {
+            if v == w {
+                return Err(UnknownError::Many(
+                    "the ball moves with the wall, never meets it, so e is not determined".into(),
+                ));
+            }
+            let e = -(&f - &w) / (&v - &w);
+            (v, f, e)
+        }
+        _ => unreachable!("more than one unknown was refused above"),
+    };
+    if e.is_negative() {
+        return Err(UnknownError::Unphysical(format!(
+            "e = {} < 0: the ball would pass through the wall",
+            crate::quantity::fraction(&e)
+        )));
+    }
+    Ok(WallSolution {
+        v,
+        f,
+        w,
+        e,
+        residual,
+    })
+}
+
+/// A solved wall problem.
+pub struct WallSolution {
+    pub v: Q,
+    pub f: Q,
+    pub w: Q,
+    pub e: Q,
+    /// Restitution's residual when every value was given (a consistency check).
+    pub residual: Option<Q>,
+}
+
+/// The `Var`s of the ball and the wall when the wall is body `wall` (0 or 1).
+pub fn vars(wall: usize) -> ((Var, Var), (Var, Var)) {
+    if wall == 0 {
+        ((Var::V2, Var::F2), (Var::V1, Var::F1))
+    } else {
+        ((Var::V1, Var::F1), (Var::V2, Var::F2))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(s: &str) -> Q {
+        s.parse::<Number>().unwrap().exact()
+    }
+
+    #[test]
+    fn a_drop_and_rebound_gives_e_and_the_forward_case_gives_fin() {
+        // Down at 4 onto a floor (wall first, at rest), up at 3: e = 3/4.
+        let s = solve(WallProblem {
+            ball: (Some(q("-4")), Some(q("3"))),
+            wall: (Some(q("0")), None),
+            e: None,
+        })
+        .unwrap();
+        assert_eq!(s.e, q("3/4"));
+        // A wall moving at 1 toward a ball at rest, e = 1: the ball leaves at 2 (w - e (0 - w)).
+        let s = solve(WallProblem {
+            ball: (Some(q("0")), None),
+            wall: (Some(q("1")), None),
+            e: Some(q("1")),
+        })
+        .unwrap();
+        assert_eq!(s.f, q("2"));
+        // Passing through the wall: refused.
+        let e = solve(WallProblem {
+            ball: (Some(q("-4")), Some(q("-3"))),
+            wall: (Some(q("0")), None),
+            e: None,
+        });
+        assert!(e.is_err());
+    }
+}
