@@ -31,6 +31,23 @@ use collide::units::{Dimension, Pair, parse_pair};
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+
+    /// Significant digits of numbers in text (1 to 17), or 'full' for the shortest form that
+    /// reads back as the same binary64 [default: 15]; JSON and tables always carry full values
+    #[arg(long, global = true, value_name = "N|full", value_parser = parse_sig)]
+    pub sig: Option<u8>,
+}
+
+/// `--sig`: 1..=17 digits, or `full` (0).
+fn parse_sig(s: &str) -> Result<u8, String> {
+    match s.trim() {
+        "full" => Ok(0),
+        t => t
+            .parse::<u8>()
+            .ok()
+            .filter(|d| (1..=17).contains(d))
+            .ok_or_else(|| format!("'{t}': expected a number of digits from 1 to 17, or 'full'")),
+    }
 }
 
 #[derive(Subcommand, Debug)]

@@ -163,9 +163,15 @@ impl InertiaTensor {
     pub fn describe(&self) -> String {
         let e = &self.entries;
         if self.is_diagonal() {
-            format!("diag({}, {})", e[0][0], e[1][1])
+            format!("diag({}, {})", e[0][0].brief(), e[1][1].brief())
         } else {
-            format!("[[{}, {}], [{}, {}]]", e[0][0], e[0][1], e[1][0], e[1][1])
+            format!(
+                "[[{}, {}], [{}, {}]]",
+                e[0][0].brief(),
+                e[0][1].brief(),
+                e[1][0].brief(),
+                e[1][1].brief()
+            )
         }
     }
 

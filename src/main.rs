@@ -23,6 +23,9 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
     };
+    if let Some(digits) = cli.sig {
+        collide::number::set_text_digits(digits);
+    }
     match commands::run(cli.command) {
         Ok(outcome) => {
             let mut out = std::io::stdout().lock();

@@ -169,6 +169,18 @@ impl Number {
         }
     }
 
+    /// For a header: the text as typed, or (a derived value whose exact fraction is long, such
+    /// as a unit conversion or one solved from a height's binary64 speed) its nearest binary64
+    /// in text digits, marked `≈`.
+    pub fn brief(&self) -> String {
+        let text = self.to_string();
+        if text.contains('/') && text.len() > 24 {
+            format!("≈{}", num(self.value))
+        } else {
+            text
+        }
+    }
+
     /// The same binary64 value without its typed text (so a clone allocates nothing).
     pub fn untyped(&self) -> Number {
         Number {
@@ -250,9 +262,10 @@ impl fmt::Display for Number {
     }
 }
 
-/// A binary64 as people read it: shortest round-trip digits, plain for `1e-5 <= |x| < 1e16` and
-/// in scientific notation outside.
+/// A binary64 as people read it: rounded to the text digits (`--sig`, 15 by default), then its
+/// shortest round-trip digits, plain for `1e-5 <= |x| < 1e16` and in scientific notation outside.
 pub fn num(x: f64) -> String {
+    let x = round_significant(x, TEXT_DIGITS.load(std::sync::atomic::Ordering::Relaxed));
     let a = x.abs();
     if x == 0.0 {
         "0".to_string()
@@ -261,6 +274,27 @@ pub fn num(x: f64) -> String {
     } else {
         format!("{x:e}")
     }
+}
+
+/// Significant digits of numbers in text for people (`--sig`): 15 by default, what spreadsheets
+/// show, so `0.6320687500000001` reads `0.63206875`; 0 means the shortest round-trip form
+/// (`--sig full`). JSON and tables always carry the full binary64 value.
+static TEXT_DIGITS: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(15);
+
+/// Sets the significant digits of text output (1..=17; 0 for the shortest round-trip form).
+pub fn set_text_digits(digits: u8) {
+    TEXT_DIGITS.store(digits.min(17), std::sync::atomic::Ordering::Relaxed);
+}
+
+/// `x` rounded to `digits` significant decimal digits (0: unchanged), as the nearest binary64
+/// of that decimal, so its shortest form has at most `digits` digits.
+pub fn round_significant(x: f64, digits: u8) -> f64 {
+    if digits == 0 || digits >= 17 || x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    format!("{:.*e}", usize::from(digits) - 1, x)
+        .parse()
+        .unwrap_or(x)
 }
 
 /// A value a problem gives, or `?` for one it asks for, or (for a mass) a wall.

@@ -29,7 +29,16 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     /// An exact rational in this arithmetic: rounded once to binary64 (not representable: NaN,
     /// reported by name), or kept exact.
     fn of_rational(q: &BigRational) -> Self;
+    /// `|x|`, as a binary64 (for choosing a scale).
+    fn magnitude(&self) -> f64;
+    /// In text, a binary64 below the error bound of its scale (`SNAP_ULPS` ulps of `scale`, the
+    /// largest velocity of its vector) is rounding noise of an exact 0 (a car that stops prints
+    /// `0`, not `-4.4e-16`); exact values are never changed.
+    fn snap(&self, scale: f64) -> Self;
 }
+
+/// The stated error bound of a binary64 velocity, in ulps of the largest velocity of its case.
+pub const SNAP_ULPS: f64 = 8.0;
 
 impl Scalar for f64 {
     fn show(&self) -> String {
@@ -49,6 +58,16 @@ impl Scalar for f64 {
     }
     fn of_rational(q: &BigRational) -> f64 {
         to_f64(q).unwrap_or(f64::NAN)
+    }
+    fn magnitude(&self) -> f64 {
+        self.abs()
+    }
+    fn snap(&self, scale: f64) -> f64 {
+        if self.abs() <= SNAP_ULPS * f64::EPSILON * scale.abs() {
+            0.0
+        } else {
+            *self
+        }
     }
 }
 
@@ -115,6 +134,12 @@ impl Scalar for Exact {
     }
     fn of_rational(q: &BigRational) -> Exact {
         Exact::Rational(q.clone())
+    }
+    fn magnitude(&self) -> f64 {
+        self.rational().abs().to_f64().unwrap_or(f64::INFINITY)
+    }
+    fn snap(&self, _scale: f64) -> Exact {
+        self.clone()
     }
 }
 

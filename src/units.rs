@@ -64,6 +64,23 @@ pub const UNITS: &[Unit] = &[
     },
     Unit {
         dimension: Dimension::Mass,
+        names: &["mg"],
+        si: "0.000001",
+    },
+    // The dalton (unified atomic mass unit), CODATA 2022.
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["u", "Da", "amu"],
+        si: "1.66053906892e-27",
+    },
+    // The slug: 1 lbf s^2/ft = 4.4482216152605 N / (0.3048 m/s^2), exact.
+    Unit {
+        dimension: Dimension::Mass,
+        names: &["slug", "slugs"],
+        si: "4.4482216152605/0.3048",
+    },
+    Unit {
+        dimension: Dimension::Mass,
         names: &["t", "tonne", "tonnes"],
         si: "1000",
     },
@@ -96,6 +113,11 @@ pub const UNITS: &[Unit] = &[
         dimension: Dimension::Velocity,
         names: &["km/h", "kph"],
         si: "1000/3600",
+    },
+    Unit {
+        dimension: Dimension::Velocity,
+        names: &["km/s"],
+        si: "1000",
     },
     Unit {
         dimension: Dimension::Velocity,
@@ -474,13 +496,22 @@ impl Units {
                 if m == "kg" && v == "m/s" {
                     "J".into()
                 } else {
-                    format!("{m} {v}^2")
+                    format!("{m} {}", squared(v))
                 }
             }
             (Some(m), None) => format!("{m} x (velocity unit)^2"),
-            (None, Some(v)) => format!("(mass unit) {v}^2"),
+            (None, Some(v)) => format!("(mass unit) {}", squared(v)),
             (None, None) => "mass unit x velocity unit^2".into(),
         }
+    }
+}
+
+/// `(m/s)^2` (an energy's velocity part; `m/s^2` would be an acceleration), `mph^2`.
+fn squared(v: &str) -> String {
+    if v.contains('/') {
+        format!("({v})^2")
+    } else {
+        format!("{v}^2")
     }
 }
 
@@ -732,7 +763,7 @@ mod tests {
         .unwrap();
         assert_eq!(
             (v[1].known().unwrap().value(), u.energy()),
-            (0.0, "kg km/h^2".to_string())
+            (0.0, "kg (km/h)^2".to_string())
         );
         let (_, _, u) = resolve(
             &[q("4", Mass), q("1", Mass)],

@@ -268,6 +268,7 @@ fn json_keeps_every_key_of_each_requested_section() {
             "com",
             "fin",
             "v_com",
+            "approaching",
             "momentum",
             "forms",
             "energy",

@@ -372,3 +372,74 @@ fn walls_forward_moving_and_refused() {
         assert!(out.is_empty() && err.contains(needle), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn text_rounds_to_15_digits_and_sig_says_otherwise() {
+    // f1 = -7.2 exactly; binary64 arithmetic gives -7.199999999999999, which text shows to 15
+    // significant digits as -7.2 (JSON keeps the binary64 value).
+    let args = [
+        "-m", "1,5", "-v", "3.6,-2.4", "--fin", "?,-0.24", "--show", "vectors",
+    ];
+    let (_, out, _) = run(&args);
+    assert!(out.contains("FIN  V_FIN    (-7.2, -0.24)"), "{out}");
+    let (_, out, _) = run(&[&args[..], &["--sig", "full"]].concat());
+    assert!(out.contains("(-7.199999999999999, -0.24)"), "{out}");
+    // 2/3 to 3 digits; 1/3 of 35 as 11.7.
+    let (_, out, _) = run(&["-m", "6,1", "-v", "3,-4", "-e", "2/3", "--sig", "3"]);
+    assert!(
+        out.contains("(1.33, 6)") && out.contains(" 11.7\n"),
+        "{out}"
+    );
+    for bad in ["0", "18", "many"] {
+        let (code, out, err) = run(&["-m", "6,1", "-v", "3,-4", "--sig", bad]);
+        assert_eq!(code, 2);
+        assert!(out.is_empty() && err.contains(bad), "{err}");
+    }
+    // A car that stops: m = (1, 10), V = (10, 0), e = 0.1 gives f1 = 1.1 (10/11) - 1 = 0
+    // exactly; binary64 leaves -5.0e-17, far below the error bound (8 ulps of 10): text 0.
+    let (_, out, _) = run(&["-m", "1,10", "-v", "10,0", "-e", "0.1", "--show", "vectors"]);
+    assert!(out.contains("FIN  V_FIN    (0, 1)"), "{out}");
+    let (_, j) = json("-m 1,10 -v 10,0 -e 0.1 --show vectors");
+    assert!(f(&j["fin"][0]) != 0.0, "JSON keeps the binary64 value");
+}
+
+#[test]
+fn more_units_and_energy_labels() {
+    // A proton (1 u) at 2 km/s hits a carbon nucleus (12 u) at rest, elastic: the proton keeps
+    // (1 - 12)/13 of its velocity: -22/13 km/s; energy in u (km/s)^2, never u km/s^2.
+    let (_, out, _) = run(&[
+        "-m",
+        "1 u,12 Da",
+        "-v",
+        "2 km/s,0",
+        "--show",
+        "vectors,energy",
+    ]);
+    assert!(out.contains("energies in u (km/s)^2"), "{out}");
+    let (code, j) = json("-m 1u,12u -v 2km/s,0 --show vectors --exact");
+    assert_eq!(code, 0);
+    assert_eq!(j["fin"][0], "-22/13");
+    // 1 slug = 4.4482216152605 / 0.3048 kg exactly; 1 mg = 1e-6 kg.
+    let (_, j) = json("-m 1slug,0.3048kg -v 1m/s,0 --show vectors --exact");
+    // m1 / m2 = 4.4482216152605 / 0.3048^2; V_COM = m1 / (m1 + m2) in exact arithmetic.
+    let v_com = j["v_com"].as_str().unwrap().to_string();
+    assert!(v_com.contains('/'), "{v_com}");
+    let (_, j) = json("-m 1mg,1g -v 1001m/s,0 --show vectors --exact");
+    assert_eq!(
+        j["v_com"], "1",
+        "1 mg at 1001 m/s and 1 g at rest: V_COM = 1.001/1.001"
+    );
+}
+
+#[test]
+fn moving_apart_is_said() {
+    // V1 < V2: body 1 (left) is slower than body 2, so they separate; say so.
+    let (_, out, _) = run(&["-m", "4,1", "-v", "10,60", "--show", "vectors"]);
+    assert!(out.contains("V1 < V2: the bodies move apart"), "{out}");
+    let (_, j) = json("-m 4,1 -v 10,60 --show vectors");
+    assert_eq!(j["approaching"], false);
+    let (_, j) = json("-m 4,1 -v 60,10 --show vectors --exact");
+    assert_eq!(j["approaching"], true);
+    let (_, out, _) = run(&["-m", "4,1", "-v", "60,10", "--show", "vectors"]);
+    assert!(!out.contains("move apart"), "{out}");
+}

@@ -265,7 +265,8 @@ mod tests {
                 assert_eq!(e.frame, "com");
                 // 1/2 (6/7) 7^2 = 21 against 1/2 (6/7) 8^2 = 192/7.
                 assert_eq!(e.lab, "21");
-                assert_eq!(e.other, (192.0f64 / 7.0).to_string());
+                // Shown to the text digits (15): 192/7 = 27.428571428571428...
+                assert_eq!(e.other, "27.4285714285714");
             }
             other => panic!("expected a broken invariant, got {other:?}"),
         }

@@ -72,7 +72,7 @@ impl Section {
     /// The JSON key this section's values live under (`vectors` are at the top level).
     pub fn json_keys(self) -> &'static [&'static str] {
         match self {
-            Section::Vectors => &["in", "com", "fin", "v_com"],
+            Section::Vectors => &["in", "com", "fin", "v_com", "approaching"],
             Section::Momentum => &["momentum"],
             Section::Forms => &["forms"],
             Section::Energy => &["energy"],
@@ -191,6 +191,10 @@ pub struct Vectors<N = f64> {
     pub com: [N; 2],
     pub fin: [N; 2],
     pub v_com: N,
+    /// `V1 > V2` at IN: body 1 (on the left) catches body 2. False: they move apart, unless
+    /// body 1 is on the right (the velocities may be in the wrong order).
+    #[serde(default)]
+    pub approaching: bool,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
@@ -463,6 +467,7 @@ impl<N: Scalar> Report<N> {
                     com: [v_com.clone(), v_com.clone()],
                     fin: fin(),
                     v_com,
+                    approaching: c.approaching(),
                 }
             }),
             momentum: has(Section::Momentum).then(|| Momentum {

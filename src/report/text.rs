@@ -110,15 +110,9 @@ impl Block {
     }
 }
 
-/// A value for the header: as typed, or (a solved value whose exact fraction is long, such as
-/// one derived from a height's binary64 speed) its nearest binary64, marked `≈`.
+/// A value for the header (`Number::brief`).
 pub fn typed(n: &crate::number::Number) -> String {
-    let text = n.to_string();
-    if text.contains('/') && text.len() > 24 {
-        format!("≈{}", crate::number::num(n.value()))
-    } else {
-        text
-    }
+    n.brief()
 }
 
 /// `M = diag(4, 1)   V_IN = (60, 10)   e = 1 (elastic: ka-bong)`, a line.
@@ -261,18 +255,41 @@ fn diagnostics(d: &Diagnostics) -> Block {
     b
 }
 
+/// `pair`, with rounding noise below the scale's error bound shown as 0 (`Scalar::snap`).
+fn snapped<N: Scalar>(v: &[N; 2], scale: f64) -> String {
+    pair(&[v[0].snap(scale), v[1].snap(scale)])
+}
+
 fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>) -> Block {
     let mut b = Block::new("Vectors (V1, V2)");
+    let scale = v
+        .v_in
+        .iter()
+        .chain(&v.fin)
+        .map(N::magnitude)
+        .fold(0.0, f64::max);
     b.row("IN   V_IN", pair(&v.v_in), "");
     b.row(
         "COM  V_COM u",
-        pair(&v.com),
-        format!("V_COM = P_total / M_total = {}", v.v_com.show()),
+        snapped(&v.com, scale),
+        format!("V_COM = P_total / M_total = {}", v.v_com.snap(scale).show()),
     );
     if case.restitution().is_totally_inelastic() {
         b.row("FIN  V_FIN", "= COM", "the bodies stick and move together");
     } else {
-        b.row("FIN  V_FIN", pair(&v.fin), "= (1 + e) V_COM u - e V_IN");
+        b.row(
+            "FIN  V_FIN",
+            snapped(&v.fin, scale),
+            "= (1 + e) V_COM u - e V_IN",
+        );
+    }
+    if case.collision.v_in.x < case.collision.v_in.y {
+        b.row(
+            "",
+            "",
+            "V1 < V2: the bodies move apart and do not meet (unless body 1 is on the right: \
+             check the order of the velocities)",
+        );
     }
     if case.collision.v_in.x == case.collision.v_in.y {
         b.row("", "", "V1 = V2: the bodies never meet, so FIN = IN");

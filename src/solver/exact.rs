@@ -269,6 +269,9 @@ impl Solver for ExactCollision {
             crate::quantity::to_f64(&energy).unwrap_or(f64::MAX),
         )
     }
+    fn approaching(&self) -> bool {
+        self.v[0] > self.v[1]
+    }
     fn superelastic(&self) -> bool {
         self.e > Q::one()
     }

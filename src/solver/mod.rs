@@ -16,6 +16,8 @@ pub type Pair<N> = [N; 2];
 pub trait Solver {
     type N: Scalar;
     fn restitution(&self) -> Self::N;
+    /// `V1 > V2` at IN (the same in every frame).
+    fn approaching(&self) -> bool;
     /// `e > 1` as typed: energy is released (`lost` is negative).
     fn superelastic(&self) -> bool;
     fn inertia(&self) -> [Pair<Self::N>; 2];
