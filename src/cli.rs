@@ -417,6 +417,11 @@ pub struct CaseArgs {
     #[arg(long)]
     pub si: bool,
 
+    /// Print energies in this unit: J, kJ, eV, MeV, ft*lbf or cal (the masses and velocities need
+    /// units)
+    #[arg(long, value_name = "UNIT", value_parser = |s: &str| collide::units::energy_unit(s))]
+    pub energy_unit: Option<&'static collide::units::EnergyUnit>,
+
     /// g in m/s^2 for velocities typed as heights ('height 2 m': the speed sqrt(2 g h) of a fall
     /// from rest through 2 m) and for --show heights [default: 9.80665, standard gravity]
     #[arg(long, value_name = "G")]

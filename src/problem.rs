@@ -28,6 +28,8 @@ pub struct Problem {
     pub si: bool,
     /// `g` for velocities typed as heights (default 9.80665 m/s^2).
     pub gravity: Option<Number>,
+    /// The unit energies are printed in (`--energy-unit`), when not the case's own.
+    pub energy_unit: Option<&'static crate::units::EnergyUnit>,
 }
 
 /// What a solved problem describes.
@@ -72,6 +74,8 @@ pub enum ProblemError {
     },
     #[error(transparent)]
     Resolve(#[from] ResolveError),
+    #[error(transparent)]
+    EnergyUnit(#[from] crate::units::EnergyUnitError),
     #[error(transparent)]
     Unknown(#[from] UnknownError),
     #[error(transparent)]
@@ -134,6 +138,10 @@ impl Problem {
             .collect::<Result<Vec<_>, NumberError>>()
             .map_err(|e| ProblemError::Resolve(e.into()))?;
         let (m, v, units) = resolve(&masses, &velocities, self.si)?;
+        let units = match self.energy_unit {
+            Some(u) => units.with_energy_unit(u)?,
+            None => units,
+        };
         if let Some(wall) = m.iter().position(Given::is_wall) {
             if inertia.is_some() {
                 return Err(ProblemError::WallNeedsMasses);

@@ -31,6 +31,8 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     fn of_rational(q: &BigRational) -> Self;
     /// `|x|`, as a binary64 (for choosing a scale).
     fn magnitude(&self) -> f64;
+    /// `x q`: for a binary64, the exact product rounded once (a change of unit).
+    fn scale(&self, q: &BigRational) -> Self;
     /// In text, a binary64 below the error bound of its scale (`SNAP_ULPS` ulps of `scale`, the
     /// largest velocity of its vector) is rounding noise of an exact 0 (a car that stops prints
     /// `0`, not `-4.4e-16`); exact values are never changed.
@@ -61,6 +63,12 @@ impl Scalar for f64 {
     }
     fn magnitude(&self) -> f64 {
         self.abs()
+    }
+    fn scale(&self, q: &BigRational) -> f64 {
+        if !self.is_finite() {
+            return *self;
+        }
+        to_f64(&(from_f64(*self) * q)).unwrap_or(f64::NAN)
     }
     fn snap(&self, scale: f64) -> f64 {
         if self.abs() <= SNAP_ULPS * f64::EPSILON * scale.abs() {
@@ -137,6 +145,9 @@ impl Scalar for Exact {
     }
     fn magnitude(&self) -> f64 {
         self.rational().abs().to_f64().unwrap_or(f64::INFINITY)
+    }
+    fn scale(&self, q: &BigRational) -> Exact {
+        self.with(self.rational() * q)
     }
     fn snap(&self, _scale: f64) -> Exact {
         self.clone()

@@ -54,6 +54,7 @@ struct SceneFile {
     restitution: Option<Spanned<Typed>>,
     si: Option<bool>,
     gravity: Option<Number>,
+    energy_unit: Option<Spanned<String>>,
     show: Option<Vec<Section>>,
     contact_time: Option<Spanned<String>>,
     exact: Option<bool>,
@@ -411,6 +412,13 @@ impl Scene {
             restitution,
             si: file.si.unwrap_or(false),
             gravity: file.gravity.clone(),
+            energy_unit: match &file.energy_unit {
+                Some(u) => Some(
+                    crate::units::energy_unit(u.get_ref())
+                        .map_err(|e| err(Some(u.span()), e.to_string()))?,
+                ),
+                None => None,
+            },
         };
         let span = file
             .masses

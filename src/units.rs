@@ -486,11 +486,98 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
 pub struct Units {
     pub mass: Option<&'static str>,
     pub velocity: Option<&'static str>,
+    /// The unit energies are printed in (`--energy-unit`), when not the case's own.
+    pub energy_as: Option<&'static EnergyUnit>,
+}
+
+/// A unit energies may be printed in: its name and size in joules, exact.
+#[derive(Debug, PartialEq)]
+pub struct EnergyUnit {
+    pub name: &'static str,
+    pub joules: &'static str,
+}
+
+/// `--energy-unit` choices.
+pub const ENERGY_UNITS: &[EnergyUnit] = &[
+    EnergyUnit {
+        name: "J",
+        joules: "1",
+    },
+    EnergyUnit {
+        name: "kJ",
+        joules: "1000",
+    },
+    // The electronvolt, exact since the 2019 SI (e = 1.602176634e-19 C).
+    EnergyUnit {
+        name: "eV",
+        joules: "1.602176634e-19",
+    },
+    EnergyUnit {
+        name: "MeV",
+        joules: "1.602176634e-13",
+    },
+    // The foot-pound force: 0.3048 m x 4.4482216152605 N, exact.
+    EnergyUnit {
+        name: "ft*lbf",
+        joules: "1.35581794833140040",
+    },
+    // The thermochemical calorie.
+    EnergyUnit {
+        name: "cal",
+        joules: "4.184",
+    },
+];
+
+/// Why energies cannot be given in the unit asked for.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum EnergyUnitError {
+    #[error("unknown energy unit '{0}': expected one of J, kJ, eV, MeV, ft*lbf, cal")]
+    Unknown(String),
+    #[error(
+        "--energy-unit {0} needs units on the masses and velocities (e.g. '2 kg', '3 m/s'), \
+         to know what the case's energies are in"
+    )]
+    NoUnits(&'static str),
+}
+
+/// The energy unit named `name` (`ft*lbf` also as `ft lbf`, `ft.lbf`).
+pub fn energy_unit(name: &str) -> Result<&'static EnergyUnit, EnergyUnitError> {
+    let n = name.trim().replace([' ', '.', '·'], "*");
+    ENERGY_UNITS
+        .iter()
+        .find(|u| u.name == n)
+        .ok_or_else(|| EnergyUnitError::Unknown(name.trim().to_string()))
 }
 
 impl Units {
+    /// Energies to be printed in `unit`: refused unless the case has mass and velocity units.
+    pub fn with_energy_unit(mut self, unit: &'static EnergyUnit) -> Result<Units, EnergyUnitError> {
+        if self.mass.is_none() || self.velocity.is_none() {
+            return Err(EnergyUnitError::NoUnits(unit.name));
+        }
+        self.energy_as = Some(unit);
+        Ok(self)
+    }
+
+    /// The factor from the case's energy unit (mass unit x velocity unit^2) to the printed one,
+    /// exact: `None` when energies are printed in the case's own unit.
+    pub fn energy_scale(&self) -> Option<BigRational> {
+        let unit = self.energy_as?;
+        let si = |name: Option<&str>, d: Dimension| {
+            name.and_then(|n| lookup(n, d).ok())
+                .map_or_else(|| BigRational::from_integer(1.into()), Unit::si)
+        };
+        let m = si(self.mass, Dimension::Mass);
+        let v = si(self.velocity, Dimension::Velocity);
+        let joules = unit.joules.parse::<Number>().ok()?.exact();
+        Some(m * &v * &v / joules)
+    }
+
     /// "ton mph^2", or the generic description when no units were given.
     pub fn energy(&self) -> String {
+        if let Some(u) = self.energy_as {
+            return u.name.to_string();
+        }
         match (self.mass, self.velocity) {
             (Some(m), Some(v)) => {
                 if m == "kg" && v == "m/s" {
@@ -611,11 +698,13 @@ pub fn resolve(
         Units {
             mass: Some("kg"),
             velocity: Some("m/s"),
+            energy_as: None,
         }
     } else if any_unit {
         Units {
             mass: mass_unit.map(Unit::name),
             velocity: vel_unit.map(Unit::name),
+            energy_as: None,
         }
     } else {
         Units::default()

@@ -443,3 +443,36 @@ fn moving_apart_is_said() {
     let (_, out, _) = run(&["-m", "4,1", "-v", "60,10", "--show", "vectors"]);
     assert!(!out.contains("move apart"), "{out}");
 }
+
+#[test]
+fn energies_in_the_unit_asked_for() {
+    // 1 slug at 10 ft/s: 1/2 1 100 = 50 slug ft^2/s^2 = 50 ft*lbf exactly (1 slug = 1 lbf s^2/ft).
+    let (code, j) =
+        json("-m 1slug,2slug -v 10ft/s,0 -e 0 --show energy,changes --energy-unit ft*lbf --exact");
+    assert_eq!(code, 0);
+    assert_eq!(j["energy"]["in"], "50");
+    assert_eq!(j["energy"]["lost"], "100/3");
+    assert_eq!(j["changes"]["ke_in"], serde_json::json!(["50", "0"]));
+    assert_eq!(j["units"]["energy"], "ft*lbf");
+    // A proton (1 u) at 2 km/s: 1/2 1.66053906892e-27 4e6 J = 3.32107813784e-21 J, over
+    // 1.602176634e-19 J/eV: 0.0207285393343216... eV.
+    let (_, j) = json("-m 1u,12u -v 2km/s,0 --show energy --energy-unit eV");
+    assert_close(
+        f(&j["energy"]["in"]),
+        3.32107813784e-21 / 1.602176634e-19,
+        REL,
+        "KE in eV",
+    );
+    // 1 kg at 2 m/s: 2 J = 0.002 kJ = 2/4.184 cal.
+    let (_, j) = json("-m 1kg,1kg -v 2m/s,0 --show energy --energy-unit kJ");
+    assert_eq!(f(&j["energy"]["in"]), 0.002);
+    let (_, j) = json("-m 1kg,1kg -v 2m/s,0 --show energy --energy-unit cal --exact");
+    assert_eq!(j["energy"]["in"], "250/523");
+    // Without units there is nothing to convert from; an unknown unit is named.
+    let (code, _, err) = run(&["-m", "1,2", "-v", "1,0", "--energy-unit", "J"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("needs units"), "{err}");
+    let (code, _, err) = run(&["-m", "1kg,2kg", "-v", "1m/s,0", "--energy-unit", "erg"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("'erg'") && err.contains("ft*lbf"), "{err}");
+}

@@ -62,6 +62,7 @@ impl CaseArgs {
             restitution: self.restitution.clone(),
             si: self.si,
             gravity: self.gravity.clone(),
+            energy_unit: self.energy_unit,
         }
     }
 

@@ -31,6 +31,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         args.case.gravity.as_ref(),
         &units,
     ));
+    sections.energy_scale = units.energy_scale();
     let (case, unknowns) = match posed {
         Posed::Collision(case, unknowns) => (case, unknowns),
         Posed::Separation(..) | Posed::Wall(..) => {

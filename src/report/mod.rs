@@ -103,6 +103,8 @@ pub struct Sections {
     pub contact_time: Option<BigRational>,
     /// `g` and the velocity unit, for `heights`.
     pub heights: Option<crate::units::HeightScale>,
+    /// The factor from the case's energy unit to the printed one (`--energy-unit`).
+    pub energy_scale: Option<BigRational>,
 }
 
 impl Sections {
@@ -119,6 +121,7 @@ impl Sections {
             set,
             contact_time: None,
             heights: None,
+            energy_scale: None,
         }
     }
     pub fn contains(&self, s: Section) -> bool {
@@ -231,6 +234,19 @@ pub struct Energy<N = f64> {
 }
 
 impl<N: Scalar> Energy<N> {
+    /// Every energy times `q` (a change of unit).
+    pub fn scaled(self, q: &BigRational) -> Energy<N> {
+        let s = |x: N| x.scale(q);
+        Energy {
+            ke_in: s(self.ke_in),
+            fin: s(self.fin),
+            com: s(self.com),
+            crunch: s(self.crunch),
+            lost: self.lost.map(s),
+            released: self.released.map(s),
+        }
+    }
+
     /// `(1 - e^2) crunch` with its sign: negative when energy is released.
     pub fn lost_signed(&self) -> N {
         match (&self.lost, &self.released) {
@@ -279,16 +295,21 @@ pub struct ChangeReport<N = f64> {
 }
 
 impl<N: Scalar> ChangeReport<N> {
-    /// The exact changes in this report's arithmetic (each rounded once in binary64).
-    pub fn of(c: &Changes) -> ChangeReport<N> {
+    /// The exact changes in this report's arithmetic (each rounded once in binary64), energies
+    /// times `energy_scale` (a change of unit).
+    pub fn of(c: &Changes, energy_scale: Option<&BigRational>) -> ChangeReport<N> {
         let one = |q: &BigRational| N::of_rational(q);
         let two = |p: &[BigRational; 2]| [one(&p[0]), one(&p[1])];
+        let energy = |p: &[BigRational; 2]| match energy_scale {
+            Some(k) => [one(&(&p[0] * k)), one(&(&p[1] * k))],
+            None => two(p),
+        };
         ChangeReport {
             dv: two(&c.dv),
             impulse: two(&c.impulse),
-            ke_in: c.ke_in.as_ref().map(two),
-            ke_fin: c.ke_fin.as_ref().map(two),
-            dke: c.dke.as_ref().map(two),
+            ke_in: c.ke_in.as_ref().map(energy),
+            ke_fin: c.ke_fin.as_ref().map(energy),
+            dke: c.dke.as_ref().map(energy),
             lost_fraction: c.lost_fraction.as_ref().map(one),
             transferred_fraction: c.transferred_fraction.as_ref().map(one),
             average_force: c.average_force.as_ref().map(two),
@@ -499,9 +520,20 @@ impl<N: Scalar> Report<N> {
                 dot_fin_in: c.dot(&fin(), &v_in),
                 outer_in_fin: c.outer(&v_in, &fin()),
             }),
-            energy: energy.filter(|_| has(Section::Energy)),
-            changes: has(Section::Changes)
-                .then(|| ChangeReport::of(&c.exact().changes(sections.contact_time.as_ref()))),
+            // Ellipses were drawn from the energies in the case's units; printed ones may be in
+            // another (`--energy-unit`).
+            energy: energy
+                .filter(|_| has(Section::Energy))
+                .map(|e| match &sections.energy_scale {
+                    Some(q) => e.scaled(q),
+                    None => e,
+                }),
+            changes: has(Section::Changes).then(|| {
+                ChangeReport::of(
+                    &c.exact().changes(sections.contact_time.as_ref()),
+                    sections.energy_scale.as_ref(),
+                )
+            }),
             heights: sections
                 .heights
                 .as_ref()

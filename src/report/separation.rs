@@ -56,6 +56,10 @@ impl<N: Scalar> SeparationReport<N> {
         let one = |q: &num_rational::BigRational| N::of_rational(q);
         let two = |p: &[num_rational::BigRational; 2]| [one(&p[0]), one(&p[1])];
         let has = |x| sections.contains(x);
+        let energy = |q: &num_rational::BigRational| match &sections.energy_scale {
+            Some(k) => one(&(q * k)),
+            None => one(q),
+        };
         let v = one(&s.v());
         SeparationReport {
             event: "separation",
@@ -70,14 +74,18 @@ impl<N: Scalar> SeparationReport<N> {
                 total: one(&s.total_momentum()),
             }),
             energy: has(Section::Energy).then(|| SeparationEnergy {
-                ke_in: one(&s.ke_in()),
-                fin: one(&s.ke_fin()),
-                com: one(&s.ke_in()),
-                released: one(&s.released()),
+                ke_in: energy(&s.ke_in()),
+                fin: energy(&s.ke_fin()),
+                com: energy(&s.ke_in()),
+                released: energy(&s.released()),
                 reduced_mass: one(&s.reduced_mass()),
             }),
-            changes: has(Section::Changes)
-                .then(|| ChangeReport::of(&s.changes(sections.contact_time.as_ref()))),
+            changes: has(Section::Changes).then(|| {
+                ChangeReport::of(
+                    &s.changes(sections.contact_time.as_ref()),
+                    sections.energy_scale.as_ref(),
+                )
+            }),
         }
     }
 

@@ -80,6 +80,10 @@ impl<N: Scalar> WallReport<N> {
         let lost = c.lost();
         let superelastic = c.restitution.is_superelastic();
         let crunch = c.crunch();
+        let energy = |q: &Q| match &sections.energy_scale {
+            Some(k) => one(&(q * k)),
+            None => one(q),
+        };
         WallReport {
             event: "wall",
             wall: c.wall + 1,
@@ -93,11 +97,11 @@ impl<N: Scalar> WallReport<N> {
                 fin: one(&c.p(&f[b])),
             }),
             energy: has(Section::Energy).then(|| WallEnergy {
-                ke_in: one(&c.ke(&v[b])),
-                fin: one(&c.ke(&f[b])),
-                crunch: one(&crunch),
-                lost: (!superelastic).then(|| one(&lost)),
-                released: superelastic.then(|| one(&-lost.clone())),
+                ke_in: energy(&c.ke(&v[b])),
+                fin: energy(&c.ke(&f[b])),
+                crunch: energy(&crunch),
+                lost: (!superelastic).then(|| energy(&lost)),
+                released: superelastic.then(|| energy(&-lost.clone())),
             }),
             changes: has(Section::Changes).then(|| {
                 let impulse = c.m() * c.dv();
