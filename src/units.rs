@@ -688,7 +688,11 @@ pub fn resolve(
                         * q.unit
                             .map(Unit::si)
                             .unwrap_or_else(|| BigRational::from_integer(1.into()));
-                    Ok(Given::Known(crate::quantity::fraction(&si).parse()?))
+                    // A decimal when the converted value has one (10 g is 0.01 kg, not 1/100).
+                    let text = crate::quantity::terminating_decimal(&si)
+                        .filter(|t| t.len() <= 40)
+                        .unwrap_or_else(|| crate::quantity::fraction(&si));
+                    Ok(Given::Known(text.parse()?))
                 }
                 Given::Known(q) => Ok(Given::Known(q.number.clone())),
             })
