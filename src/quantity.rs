@@ -116,8 +116,15 @@ impl Serialize for Exact {
 impl Scalar for Exact {
     fn show(&self) -> String {
         match self {
+            // Fractions throughout (`-1/4` beside `-1/3`, never `-0.25` beside `-1/3`); a long
+            // fraction with a short decimal (`21/5000000000000000`) as that decimal.
             Exact::Rational(q) => {
-                let text = terminating_decimal(q).unwrap_or_else(|| fraction(q));
+                let f = fraction(q);
+                let text = if f.len() <= 24 {
+                    f
+                } else {
+                    terminating_decimal(q).unwrap_or(f)
+                };
                 if text.len() <= 40 {
                     text
                 } else {
@@ -284,10 +291,17 @@ mod tests {
 
     #[test]
     fn exact_values_print_as_fractions_or_exact_decimals() {
+        // Fractions throughout (issue 15: no -0.25 beside -1/3), a long one with a short
+        // decimal as the decimal.
         assert_eq!(Exact::Rational(q(4, 3)).show(), "4/3");
         assert_eq!(Exact::Rational(q(70, 3)).show(), "70/3");
-        assert_eq!(Exact::Rational(q(-1, 5)).show(), "-0.2");
-        assert_eq!(Exact::Rational(q(27075, 4)).show(), "6768.75");
+        assert_eq!(Exact::Rational(q(-1, 5)).show(), "-1/5");
+        assert_eq!(Exact::Rational(q(27075, 4)).show(), "27075/4");
+        let tiny = BigRational::new(21.into(), num_traits::pow(BigInt::from(10), 32));
+        assert_eq!(
+            Exact::Rational(tiny).show(),
+            "0.00000000000000000000000000000021"
+        );
         assert_eq!(Exact::Rational(q(250, 1)).show(), "250");
         assert_eq!(
             serde_json::to_string(&Exact::Rational(q(4, 3))).unwrap(),

@@ -218,18 +218,29 @@ fn reverse<N: Scalar>(case: &Case, r: &Reverse<N>) -> Block {
         };
         b.row("same as the original?", same, why);
     } else {
-        b.row(
-            "e'",
-            r.restitution.show(),
-            "= 1/e > 1: an explosion, not a collision",
-        );
+        let superelastic = case.restitution().is_superelastic();
+        let (why, gained, from) = if superelastic {
+            (
+                "= 1/e < 1: an ordinary collision, which loses what the original released",
+                "energy lost",
+                "= the original's energy released",
+            )
+        } else {
+            (
+                "= 1/e > 1: an explosion, not a collision",
+                "energy gained",
+                "= the original's energy lost",
+            )
+        };
+        b.row("e'", r.restitution.show(), why);
         b.row("KE_IN' = KE_FIN", r.energy.ke_in.show(), "");
         b.row("KE_FIN' = KE_IN", r.energy.fin.show(), "");
-        b.row(
-            "energy gained",
-            r.energy.gained.show(),
-            "= the original's energy lost",
-        );
+        let amount = if superelastic {
+            r.energy.gained.neg()
+        } else {
+            r.energy.gained.clone()
+        };
+        b.row(gained, amount.show(), from);
     }
     b
 }
