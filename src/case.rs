@@ -34,6 +34,17 @@ impl Case {
     pub fn restitution(&self) -> &Restitution {
         &self.collision.restitution
     }
+
+    /// Refuses typed numbers too long for exact arithmetic (`--exact`).
+    pub fn check_exact(&self) -> Result<(), crate::number::ExactTooLong> {
+        let m = self.inertia().entries();
+        crate::number::check_exact_length(
+            m.iter()
+                .flatten()
+                .chain(&self.velocities)
+                .chain([self.restitution().number()]),
+        )
+    }
 }
 
 /// Why a text is not a case's masses, velocities or tensor.

@@ -13,6 +13,46 @@ use num_traits::{ToPrimitive, Zero};
 /// only cost memory in exact arithmetic.
 const MAX_EXPONENT: i64 = 9999;
 
+/// The parts of a fraction may be larger (`1e9999/1e10000` is 0.1; a value solved in exact
+/// arithmetic from long decimals has long parts): the fraction's value must be in range.
+const MAX_PART_EXPONENT: i64 = 100_000;
+
+/// The longest number read, in characters: longer ones are refused at once (README "Limits").
+pub const MAX_CHARS: usize = 10_000;
+
+/// The longest typed number `--exact` computes with, in characters: exact arithmetic grows
+/// faster than the length (1,000 digits take about 0.2 s for the default report).
+pub const EXACT_MAX_CHARS: usize = 1_000;
+
+/// A typed number too long for exact arithmetic.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "--exact: '{start}...' has {chars} characters; exact arithmetic reads at most \
+     {EXACT_MAX_CHARS} per typed number (its cost grows faster than the length): shorten it, or \
+     drop --exact (binary64 reads up to {MAX_CHARS})"
+)]
+pub struct ExactTooLong {
+    pub start: String,
+    pub chars: usize,
+}
+
+/// Refuses a typed number longer than `EXACT_MAX_CHARS` for exact arithmetic.
+pub fn check_exact_length<'a>(
+    numbers: impl IntoIterator<Item = &'a Number>,
+) -> Result<(), ExactTooLong> {
+    for n in numbers {
+        if let Some(t) = &n.text
+            && t.len() > EXACT_MAX_CHARS
+        {
+            return Err(ExactTooLong {
+                start: t.chars().take(20).collect(),
+                chars: t.chars().count(),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// A finite number with the text it came from (none for a number made from a binary64, whose
 /// text is its shortest round-trip decimal, derived when asked for).
 #[derive(Clone, Debug, PartialEq)]
@@ -34,6 +74,11 @@ pub enum NumberError {
     Overflow(String),
     #[error("'{0}' is too small for binary64 (it rounds to 0; |x| must be above 4.9e-324)")]
     Underflow(String),
+    #[error(
+        "'{start}...' is a number of {chars} characters: at most {MAX_CHARS} are read (see the \
+         README's limits)"
+    )]
+    TooLong { start: String, chars: usize },
 }
 
 const EXPECTED: &str = "an integer, a decimal, scientific notation (1e-3) or a fraction (2/3)";
@@ -119,11 +164,11 @@ impl Decimal {
     }
 }
 
-fn check_range(d: &Decimal, text: &str) -> Result<(), NumberError> {
-    if !d.is_zero() && d.magnitude() > MAX_EXPONENT {
+fn check_range(d: &Decimal, text: &str, limit: i64) -> Result<(), NumberError> {
+    if !d.is_zero() && d.magnitude() > limit {
         return Err(NumberError::Overflow(text.to_string()));
     }
-    if !d.is_zero() && d.magnitude() < -MAX_EXPONENT {
+    if !d.is_zero() && d.magnitude() < -limit {
         return Err(NumberError::Underflow(text.to_string()));
     }
     Ok(())
@@ -174,7 +219,7 @@ impl Number {
     /// in text digits, marked `≈`.
     pub fn brief(&self) -> String {
         let text = self.to_string();
-        if text.contains('/') && text.len() > 24 {
+        if (text.contains('/') && text.len() > 24) || text.len() > 40 {
             format!("≈{}", num(self.value))
         } else {
             text
@@ -206,15 +251,33 @@ impl FromStr for Number {
     type Err = NumberError;
 
     fn from_str(s: &str) -> Result<Number, NumberError> {
+        Number::parse_text(s, true)
+    }
+}
+
+impl Number {
+    /// A value solved in exact arithmetic, from its decimal or fraction text: no length limit
+    /// (that is for typed text), but it must be a binary64 number.
+    pub fn solved(text: &str) -> Result<Number, NumberError> {
+        Number::parse_text(text, false)
+    }
+
+    fn parse_text(s: &str, typed: bool) -> Result<Number, NumberError> {
         let text = s.trim();
         if text.is_empty() {
             return Err(NumberError::Empty);
+        }
+        if typed && text.len() > MAX_CHARS {
+            return Err(NumberError::TooLong {
+                start: text.chars().take(20).collect(),
+                chars: text.chars().count(),
+            });
         }
         let syntax = || NumberError::Syntax(text.to_string());
         let value = match text.split_once('/') {
             None => {
                 let d = Decimal::parse(text).ok_or_else(syntax)?;
-                check_range(&d, text)?;
+                check_range(&d, text, MAX_EXPONENT)?;
                 let v: f64 = text.parse().map_err(|_| syntax())?;
                 if v.is_infinite() {
                     return Err(NumberError::Overflow(text.to_string()));
@@ -228,8 +291,8 @@ impl FromStr for Number {
                 let (n, d) = (n.trim(), d.trim());
                 let n = Decimal::parse(n).ok_or_else(syntax)?;
                 let d = Decimal::parse(d).ok_or_else(syntax)?;
-                check_range(&n, text)?;
-                check_range(&d, text)?;
+                check_range(&n, text, MAX_PART_EXPONENT)?;
+                check_range(&d, text, MAX_PART_EXPONENT)?;
                 if d.is_zero() {
                     return Err(NumberError::ZeroDenominator(text.to_string()));
                 }

@@ -185,7 +185,7 @@ impl Problem {
             let text = crate::quantity::terminating_decimal(q)
                 .filter(|t| t.len() <= 40)
                 .unwrap_or_else(|| crate::quantity::fraction(q));
-            text.parse::<Number>()
+            Number::solved(&text)
                 .map(Given::Known)
                 .map_err(|error| ProblemError::Solved { var, text, error })
         };
@@ -248,12 +248,11 @@ impl Problem {
                 let text = crate::quantity::terminating_decimal(x)
                     .filter(|t| t.len() <= 40)
                     .unwrap_or_else(|| crate::quantity::fraction(x));
-                text.parse::<Number>()
-                    .map_err(|error| ProblemError::Solved {
-                        var: Var::E,
-                        text,
-                        error,
-                    })
+                Number::solved(&text).map_err(|error| ProblemError::Solved {
+                    var: Var::E,
+                    text,
+                    error,
+                })
             };
         let mut velocities = [number(&s.w, v.get(wall))?, number(&s.w, v.get(wall))?];
         velocities[ball] = number(&s.v, v.get(ball))?;

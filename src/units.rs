@@ -692,7 +692,7 @@ pub fn resolve(
                     let text = crate::quantity::terminating_decimal(&si)
                         .filter(|t| t.len() <= 40)
                         .unwrap_or_else(|| crate::quantity::fraction(&si));
-                    Ok(Given::Known(text.parse()?))
+                    Ok(Given::Known(Number::solved(&text)?))
                 }
                 Given::Known(q) => Ok(Given::Known(q.number.clone())),
             })

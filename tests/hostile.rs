@@ -209,7 +209,8 @@ fn long_arguments_give_short_messages_at_once() {
         "{} bytes",
         err.len()
     );
-    assert!(err.contains("is not a number"), "{err}");
+    // Refused by its length (over 10,000 characters) before it is parsed.
+    assert!(err.contains("100001 characters"), "{err}");
     // Not a timing assertion on the machine: a quadratic parse took over a minute here.
     assert!(start.elapsed().as_secs() < 30);
 }
@@ -447,4 +448,75 @@ fn dash_o_treats_files_as_the_shell_does() {
     sweep(&long);
     assert!(long.exists());
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn long_numbers_within_the_limits_work_and_beyond_are_refused_at_once() {
+    // m1 from momentum with a 9,000-digit V1 = 60.333...: m1 = 80 / (V1 - 40) = 240/61 to
+    // thousands of digits (it was refused as "too large for binary64", with a 40 KB message).
+    let v1 = format!("60.{}", "3".repeat(9000));
+    let (code, out, err) = run(&[
+        "solve",
+        "-m",
+        "?,1",
+        "-v",
+        &format!("{v1},10"),
+        "--fin",
+        "40,90",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{}", &err[..err.len().min(300)]);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let m1 = j["solved"]["m1"].as_f64().unwrap();
+    assert!((m1 - 240.0 / 61.0).abs() <= 4.0 * f64::EPSILON * m1, "{m1}");
+    // A fraction is judged by its value: 1e9999/1e10000 is 0.1.
+    let (code, out, _) = run(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "1e9999/1e10000,0",
+        "--show",
+        "vectors",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["in"][0], 0.1);
+    // Past 10,000 characters a number is refused by its length, with a short message.
+    let long = "1".repeat(10_001);
+    let (code, out, err) = run(&["solve", "-m", &format!("{long},1"), "-v", "1,0"]);
+    assert_eq!(code, 2);
+    // clap quotes the value; the message is cut to about 2,000 characters.
+    assert!(
+        out.is_empty() && err.contains("10001 characters") && err.len() < 2100,
+        "{err}"
+    );
+    // A 2 M-digit batch field: one bad row, at once.
+    let csv = scratch(
+        "long.csv",
+        &format!("m1,m2,v1,v2\n{},1,1,0\n4,1,60,10\n", "1".repeat(2_000_000)),
+    );
+    let (code, out, err) = run(&[
+        "batch",
+        csv.to_str().unwrap(),
+        "--skip-bad",
+        "--columns",
+        "fin1",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, "fin1\n40.0\n");
+    assert!(err.contains("2000000 characters"), "{err}");
+    // --exact reads up to 1,000 characters per typed number.
+    let ok = format!("3.{}", "1".repeat(998));
+    let (code, _, err) = run(&["solve", "-m", &format!("{ok},1"), "-v", "1,0", "--exact"]);
+    assert_eq!(code, 0, "{err}");
+    let over = format!("3.{}", "1".repeat(999));
+    for cmd in ["solve", "frames"] {
+        let (code, out, err) = run(&[cmd, "-m", &format!("{over},1"), "-v", "1,0", "--exact"]);
+        assert_eq!(code, 2, "{cmd}");
+        assert!(out.is_empty() && err.contains("at most 1000"), "{err}");
+    }
 }

@@ -25,6 +25,7 @@ pub fn run(args: FramesArgs) -> Result<Outcome> {
         .chain(args.frame)
         .collect();
     let stdout = if args.exact {
+        case.check_exact()?;
         let lab = ExactCollision::from_case(&case);
         render(&case, &lab, list, args.reverse, args.format)?
     } else {

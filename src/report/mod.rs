@@ -425,6 +425,8 @@ pub enum ReportError {
     #[error(transparent)]
     Unrepresentable(#[from] Unrepresentable),
     #[error(transparent)]
+    ExactTooLong(#[from] crate::number::ExactTooLong),
+    #[error(transparent)]
     Irreversible(#[from] Irreversible),
 }
 
@@ -624,6 +626,7 @@ impl AnyReport {
         reverse: bool,
     ) -> Result<AnyReport, ReportError> {
         Ok(if exact {
+            case.check_exact()?;
             let lab = ExactCollision::from_case(case);
             AnyReport::Exact(Box::new(Report::of(&lab, frame, sections, reverse)?))
         } else {

@@ -29,11 +29,19 @@ impl Special<'_> {
         compute: &Sections,
         show: &Sections,
         exact: bool,
-    ) -> Result<Rendered, Unrepresentable> {
+    ) -> Result<Rendered, super::ReportError> {
         if exact {
-            self.in_arithmetic::<Exact>(compute, show)
+            let typed: Vec<&crate::number::Number> = match self {
+                Special::Separation(s) => s.masses.iter().chain(&s.velocities).collect(),
+                Special::Wall(w) => [&w.mass, w.restitution.number()]
+                    .into_iter()
+                    .chain(&w.velocities)
+                    .collect(),
+            };
+            crate::number::check_exact_length(typed)?;
+            Ok(self.in_arithmetic::<Exact>(compute, show)?)
         } else {
-            self.in_arithmetic::<f64>(compute, show)
+            Ok(self.in_arithmetic::<f64>(compute, show)?)
         }
     }
 
