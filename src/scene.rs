@@ -68,7 +68,7 @@ struct SceneFile {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PlotTable {
-    /// The SVG file, relative to the directory `collide` runs in.
+    /// The SVG file, relative to the scene file's folder (resolved when the scene is loaded).
     pub output: PathBuf,
     /// velocity (default), newton or minkowski.
     #[serde(default = "velocity")]
@@ -530,7 +530,12 @@ impl Scene {
             exact: file.exact.unwrap_or(false),
             frame: file.frame.unwrap_or(Frame::Lab),
             sweep,
-            plot: file.plot,
+            plot: match file.plot {
+                Some(p) => {
+                    Some(confine_plot(path, p).map_err(|m| err(None, format!("[plot] {m}")))?)
+                }
+                None => None,
+            },
             solved,
         }))
     }
@@ -552,6 +557,38 @@ impl Scene {
 const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, momentum.*, forms.*, \
                          energy.*, ellipses.*, products.*, changes.*, heights.*, diagnostics.*, \
                          solved.*, check.*, units.*";
+
+/// A scene's picture goes beside the scene (a relative `output` is resolved against the scene
+/// file's folder), must be an `.svg`, and may replace only an SVG file: scenes are shared as
+/// graders, and one must not be able to overwrite a user's other files.
+fn confine_plot(scene: &Path, mut p: PlotTable) -> Result<PlotTable, String> {
+    if p.output.is_relative() {
+        let folder = scene.parent().unwrap_or(Path::new(""));
+        p.output = folder.join(&p.output);
+    }
+    let shown = p.output.display().to_string();
+    if p.output
+        .extension()
+        .is_none_or(|x| !x.eq_ignore_ascii_case("svg"))
+    {
+        return Err(format!("output '{shown}' must be an .svg file"));
+    }
+    if let Ok(meta) = std::fs::symlink_metadata(&p.output) {
+        let svg = meta.is_file()
+            && std::fs::read(&p.output).is_ok_and(|bytes| {
+                let head = String::from_utf8_lossy(&bytes[..bytes.len().min(512)]).into_owned();
+                let head = head.trim_start();
+                head.starts_with("<svg") || (head.starts_with("<?xml") && head.contains("<svg"))
+            });
+        if !svg {
+            return Err(format!(
+                "output '{shown}' exists and is not an SVG picture: a scene replaces only its own \
+                 pictures"
+            ));
+        }
+    }
+    Ok(p)
+}
 
 /// A check of an `[expect]` key's first part.
 type KeyCheck = fn(&str) -> Result<(), ExpectError>;

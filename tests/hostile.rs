@@ -520,3 +520,47 @@ fn long_numbers_within_the_limits_work_and_beyond_are_refused_at_once() {
         assert!(out.is_empty() && err.contains("at most 1000"), "{err}");
     }
 }
+
+#[test]
+fn a_scene_draws_only_beside_itself_and_replaces_only_svg() {
+    let dir = std::env::temp_dir().join(format!("collide-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = |name: &str, output: &str| {
+        let p = dir.join(name);
+        std::fs::write(
+            &p,
+            format!("masses = [4, 1]\nvelocities = [60, 10]\n[plot]\noutput = \"{output}\"\n"),
+        )
+        .unwrap();
+        p
+    };
+    // Relative to the scene's folder, not the working directory.
+    let p = scene("ok.toml", "ok.svg");
+    let (code, out, err) = run(&["scene", p.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains(&format!("wrote {}", dir.join("ok.svg").display())),
+        "{out}"
+    );
+    assert!(
+        std::fs::read_to_string(dir.join("ok.svg"))
+            .unwrap()
+            .starts_with("<svg")
+    );
+    // Running it again replaces its own picture.
+    assert_eq!(run(&["scene", p.to_str().unwrap()]).0, 0);
+    // Not an .svg name; an existing file that is not a picture: refused, untouched.
+    std::fs::write(dir.join("notes.svg"), "my notes").unwrap();
+    for (name, output) in [("txt.toml", "victim.txt"), ("notes.toml", "notes.svg")] {
+        let p = scene(name, output);
+        let (code, out, err) = run(&["scene", p.to_str().unwrap()]);
+        assert_eq!(code, 2, "{output}: {out}");
+        assert!(err.contains("[plot]") && err.contains(output), "{err}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(dir.join("notes.svg")).unwrap(),
+        "my notes"
+    );
+    assert!(!dir.join("victim.txt").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
