@@ -1,10 +1,44 @@
 //! Where output goes: stdout, or a file written atomically (a temporary file beside it renamed
-//! into place when complete, removed if not), and a progress bar for long runs.
+//! into place when complete, removed if not, also on SIGINT, SIGTERM and SIGHUP; only SIGKILL,
+//! which no program can catch, can leave one behind), and a progress bar for long runs.
 
 use std::fs::File;
 use std::io::{self, BufWriter, IsTerminal, Write};
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, Once};
 use std::time::{Duration, Instant};
+
+/// Temporary files being written, removed by the signal handler if the run is interrupted.
+static PARTIALS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Registers `tmp` for removal on SIGINT, SIGTERM or SIGHUP (installing the handler once).
+fn register(tmp: &Path) {
+    static HANDLER: Once = Once::new();
+    HANDLER.call_once(|| {
+        // The handler runs on its own thread: it takes the list, removes the files and exits
+        // with the shell's status for an interrupted command (128 + SIGINT).
+        let _ = ctrlc::set_handler(|| {
+            let files = PARTIALS
+                .lock()
+                .map(|mut v| std::mem::take(&mut *v))
+                .unwrap_or_default();
+            for f in files {
+                let _ = std::fs::remove_file(f);
+            }
+            std::process::exit(130);
+        });
+    });
+    if let Ok(mut v) = PARTIALS.lock() {
+        v.push(tmp.to_path_buf());
+    }
+}
+
+/// `tmp` is renamed or removed: no longer the handler's.
+fn unregister(tmp: &Path) {
+    if let Ok(mut v) = PARTIALS.lock() {
+        v.retain(|p| p != tmp);
+    }
+}
 
 /// Where bytes go: stdout; a regular file written atomically (a temporary file beside it renamed
 /// into place when the run completes, removed if it does not); or a device, FIFO or other
@@ -53,7 +87,8 @@ impl Output {
             name.pop();
         }
         let tmp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
-        let created = File::create(&tmp)?;
+        register(&tmp);
+        let created = File::create(&tmp).inspect_err(|_| unregister(&tmp))?;
         if let Some(permissions) = keep {
             created.set_permissions(permissions)?;
         }
@@ -79,7 +114,8 @@ impl Output {
             } => {
                 file.flush()?;
                 file.get_ref().sync_all()?;
-                std::fs::rename(tmp, path)?;
+                std::fs::rename(&*tmp, path)?;
+                unregister(tmp);
                 *done = true;
                 Ok(())
             }
@@ -114,7 +150,8 @@ impl Drop for Output {
             tmp, done: false, ..
         } = self
         {
-            let _ = std::fs::remove_file(tmp);
+            let _ = std::fs::remove_file(&*tmp);
+            unregister(tmp);
         }
     }
 }

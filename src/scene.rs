@@ -27,7 +27,7 @@ use crate::contact::{Damping, LawKind, Laws, Method, Settings, Setup};
 use crate::expect::{ExpectError, Expectation};
 use crate::frame::Frame;
 use crate::inertia::InertiaTensor;
-use crate::number::{Given, Number};
+use crate::number::{Given, Number, NumberError};
 use crate::problem::{Posed, Problem};
 use crate::report::special::Special;
 use crate::report::{Section, Sections};
@@ -236,7 +236,78 @@ fn located(path: &Path, text: &str, span: Option<Range<usize>>, message: String)
 
 /// The file's text as `T`, or the first problem, located.
 fn from_toml<T: serde::de::DeserializeOwned>(path: &Path, text: &str) -> Result<T, SceneError> {
-    toml::from_str(text).map_err(|e| located(path, text, e.span(), e.message().trim().to_string()))
+    let value = toml::from_str(text)
+        .map_err(|e| located(path, text, e.span(), e.message().trim().to_string()))?;
+    // The TOML reader rounds `1e-400` to 0 and `1e400` to inf before we see it: the number
+    // literals are checked as written, by the same rule as the command line.
+    for (at, literal) in toml_numbers(text) {
+        let digits = literal.replace('_', "");
+        if let Err(
+            e
+            @ (NumberError::Overflow(_) | NumberError::Underflow(_) | NumberError::TooLong { .. }),
+        ) = digits.parse::<Number>()
+        {
+            return Err(located(
+                path,
+                text,
+                Some(at..at + literal.len()),
+                e.to_string(),
+            ));
+        }
+    }
+    Ok(value)
+}
+
+/// The number literals of a TOML text with their byte offsets: runs of number characters that
+/// start a value (a digit, or a sign or `.` before one), outside strings and comments.
+fn toml_numbers(text: &str) -> Vec<(usize, &str)> {
+    let b = text.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    let word = |c: u8| c.is_ascii_alphanumeric() || matches!(c, b'_' | b'.' | b'+' | b'-' | b':');
+    while i < b.len() {
+        match b[i] {
+            b'#' => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            q @ (b'"' | b'\'') => {
+                let triple = b[i..].starts_with(&[q, q, q]);
+                i += if triple { 3 } else { 1 };
+                while i < b.len() {
+                    if q == b'"' && b[i] == b'\\' {
+                        i += 2;
+                        continue;
+                    }
+                    if triple && b[i..].starts_with(&[q, q, q]) {
+                        i += 3;
+                        break;
+                    }
+                    if !triple && (b[i] == q || b[i] == b'\n') {
+                        i += 1;
+                        break;
+                    }
+                    i += 1;
+                }
+            }
+            c if word(c) => {
+                let start = i;
+                while i < b.len() && word(b[i]) {
+                    i += 1;
+                }
+                let run = &text[start..i];
+                let first_digit = run
+                    .trim_start_matches(['+', '-', '.'])
+                    .starts_with(|c: char| c.is_ascii_digit());
+                if first_digit && !run.contains(':') {
+                    out.push((start, run));
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    out
 }
 
 /// A loaded, validated scene.

@@ -564,3 +564,80 @@ fn a_scene_draws_only_beside_itself_and_replaces_only_svg() {
     assert!(!dir.join("victim.txt").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn interrupted_runs_leave_no_partial_file() {
+    // SIGINT, SIGTERM and SIGHUP remove the temporary file of a long `-o` run (SIGKILL cannot
+    // be caught; README says so). The run is a 100 M-row sweep, stopped once its file exists.
+    for signal in ["INT", "TERM", "HUP"] {
+        let dir = std::env::temp_dir().join(format!("collide-sig-{}-{signal}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let out = dir.join("big.csv");
+        let bin = assert_cmd::cargo::cargo_bin("collide");
+        let mut child = std::process::Command::new(bin)
+            .args([
+                "sweep",
+                "-m",
+                "4,1",
+                "-v",
+                "60,10",
+                "--vary",
+                "v1=1:100:1000",
+                "--vary",
+                "v2=1:10:1000",
+                "--vary",
+                "e=0:1:100",
+                "--max-rows",
+                "100000000",
+                "-o",
+            ])
+            .arg(&out)
+            .spawn()
+            .unwrap();
+        let partial = || {
+            std::fs::read_dir(&dir)
+                .unwrap()
+                .filter_map(|e| e.ok())
+                .any(|e| e.file_name().to_string_lossy().ends_with(".partial"))
+        };
+        let mut waited = 0;
+        while !partial() && waited < 600 {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            waited += 1;
+        }
+        assert!(partial(), "{signal}: the run never started writing");
+        std::process::Command::new("kill")
+            .args([format!("-{signal}"), child.id().to_string()])
+            .status()
+            .unwrap();
+        let status = child.wait().unwrap();
+        assert!(!status.success(), "{signal}");
+        assert!(
+            !partial() && !out.exists(),
+            "{signal}: a file was left behind"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
+
+#[test]
+fn toml_numbers_follow_the_command_line_rule() {
+    // `1e-400` in a scene was read as 0; the command line refuses it. Same rule, with the line.
+    let p = scratch("tiny.toml", "masses = [4, 1e-400]\nvelocities = [60, 10]\n");
+    let (code, out, err) = run(&["scene", p.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(
+        out.is_empty() && err.contains("tiny.toml:1:14") && err.contains("too small"),
+        "{err}"
+    );
+    let (code, _, err) = run(&["solve", "-m", "4,1e-400", "-v", "60,10"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("too small"), "{err}");
+    // In a comment or a string, or with TOML's digit separators, nothing is refused.
+    let p = scratch(
+        "fine.toml",
+        "# 1e-400\ntitle = \"1e-400\"\nmasses = [4, 1_0]\nvelocities = [60, 10]\n[expect]\nin = [60, 10]\n",
+    );
+    let (code, _, err) = run(&["scene", p.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+}
