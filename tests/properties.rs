@@ -227,3 +227,101 @@ proptest! {
         }
     }
 }
+
+/// A hostile value: long digit strings, subnormals, huge exponents, fractions with huge parts,
+/// control characters, units, words and heights, in bytes that may not be UTF-8.
+fn hostile() -> impl Strategy<Value = Vec<u8>> {
+    let text = prop_oneof![
+        (1usize..12_000, any::<bool>()).prop_map(|(n, dot)| {
+            let d = "7".repeat(n);
+            if dot { format!("0.{d}") } else { d }
+        }),
+        prop_oneof![
+            Just("4.9e-324"),
+            Just("2.4e-324"),
+            Just("2.2250738585072011e-308"),
+            Just("1e-400"),
+            Just("1e400"),
+            Just("1e9999/1e10000"),
+            Just("1e99999/1e99998"),
+            Just("1/0"),
+            Just("-0"),
+            Just("1e-99999999999999999999"),
+            Just("1e+99999999999999999999"),
+            Just("wall"),
+            Just("inf"),
+            Just("NaN"),
+            Just("?"),
+            Just("height 1e300 km"),
+            Just("-height 2 m"),
+            Just("height -2 m"),
+            Just("∞"),
+            Just("2 µs"),
+            Just("1e308 km/s"),
+        ]
+        .prop_map(String::from),
+        "[-+0-9eE./ ,;a-z?\u{1b}\u{0}\r\n\t\"'#\\[\\]]{0,40}",
+        (1u32..400, 1u32..400).prop_map(|(a, b)| format!("1e{a}/1e-{b}")),
+    ];
+    (text, any::<Option<u8>>()).prop_map(|(t, byte)| {
+        let mut b = t.into_bytes();
+        if let Some(x) = byte.filter(|x| *x >= 0x80) {
+            // A stray byte that is not UTF-8.
+            b.insert(b.len() / 2, x);
+        }
+        b
+    })
+}
+
+proptest! {
+    #![proptest_config(common::proptest_config(256))]
+
+    /// Issue 13: every parser, scene field and batch column takes a hostile value without a
+    /// panic, gives a finite value or an error, and answers within a budget (2 s a value, a hang
+    /// guard far above the milliseconds these take, not a speed test).
+    #[test]
+    fn hostile_values_everywhere(value in hostile()) {
+        use collide::units::{Dimension, parse, parse_pair, seconds, energy_unit};
+        let start = std::time::Instant::now();
+        let text = String::from_utf8_lossy(&value).into_owned();
+        if let Ok(n) = text.parse::<Number>() {
+            prop_assert!(n.value().is_finite());
+        }
+        for d in [Dimension::Mass, Dimension::Velocity, Dimension::Time, Dimension::Length] {
+            if let Ok(q) = parse(&text, d) {
+                prop_assert!(q.number.value().is_finite());
+            }
+            let _ = parse_pair(&format!("{text},1"), d, "values");
+        }
+        let _ = text.parse::<Restitution>();
+        let _ = seconds(&text);
+        let _ = energy_unit(&text);
+        // As a scene field, quoted (units, words) and bare.
+        let quoted = text.replace('\\', "\\\\").replace('"', "\\\"").replace('\n', "\\n");
+        for field in [format!("\"{quoted}\""), text.clone()] {
+            for key in ["masses = [{}, 1]", "velocities = [{}, 1]", "restitution = {}", "gravity = {}"] {
+                let line = key.replace("{}", &field);
+                let scene = format!("{line}\nmasses = [4, 1]\nvelocities = [60, 10]\n");
+                let _ = Scene::parse(Path::new("fuzz.toml"), &scene);
+            }
+        }
+        // As a batch column, in raw bytes (perhaps not UTF-8).
+        let dir = std::env::temp_dir().join(format!("collide-fuzz-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let csv = dir.join("rows.csv");
+        let mut bytes = b"m1,m2,v1,v2,e\n".to_vec();
+        for col in 0..5 {
+            let mut row: Vec<Vec<u8>> = vec![b"4".to_vec(), b"1".to_vec(), b"60".to_vec(), b"10".to_vec(), b"0.5".to_vec()];
+            row[col] = value.iter().copied().filter(|b| !matches!(b, b',' | b'\n' | b'\r' | b'"')).collect();
+            bytes.extend(row.join(&b','));
+            bytes.push(b'\n');
+        }
+        std::fs::write(&csv, &bytes).unwrap();
+        if let Ok(batch) = collide::table::batch::open(Some(&csv), None, 1.0) {
+            for (_, case) in batch.flatten() {
+                prop_assert!(case.v.iter().all(|v| v.is_finite()));
+            }
+        }
+        prop_assert!(start.elapsed().as_secs_f64() < 2.0, "{:?} took {:?}", &text[..text.len().min(40)], start.elapsed());
+    }
+}
