@@ -28,6 +28,9 @@ use crate::solver::{Lab, Pair, Solver};
 pub struct Binary64<'a> {
     pub lab: &'a Collision,
     pub w: Dd,
+    /// `(KE_COM, crunch)` once computed: every energy is built from these two (a table row
+    /// asks for several).
+    parts: std::cell::Cell<Option<(Dd, Dd)>>,
 }
 
 /// The observer's velocity of `frame` for a binary64 collision (lecture Sec. 4).
@@ -47,6 +50,7 @@ impl<'a> Binary64<'a> {
         Binary64 {
             lab,
             w: observer_velocity(lab, frame),
+            parts: Default::default(),
         }
     }
 
@@ -55,6 +59,7 @@ impl<'a> Binary64<'a> {
         Binary64 {
             lab,
             w: Dd::new(0.0),
+            parts: Default::default(),
         }
     }
 
@@ -76,13 +81,23 @@ impl<'a> Binary64<'a> {
         a - b
     }
     fn crunch_dd(&self) -> Dd {
-        let d = self.relative_dd();
-        Dd::new(0.5) * ((self.lab.inertia.reduced_mass_dd() * d) * d)
+        self.parts().1
     }
     /// `KE_COM = 1/2 (M_total V_COM) V_COM`.
     fn ke_com_dd(&self) -> Dd {
+        self.parts().0
+    }
+    /// `(KE_COM, crunch)`, computed once.
+    fn parts(&self) -> (Dd, Dd) {
+        if let Some(p) = self.parts.get() {
+            return p;
+        }
         let vc = self.com_dd();
-        Dd::new(0.5) * ((self.lab.inertia.total_dd() * vc) * vc)
+        let ke_com = Dd::new(0.5) * ((self.lab.inertia.total_dd() * vc) * vc);
+        let d = self.relative_dd();
+        let crunch = Dd::new(0.5) * ((self.lab.inertia.reduced_mass_dd() * d) * d);
+        self.parts.set(Some((ke_com, crunch)));
+        (ke_com, crunch)
     }
     fn e2(&self) -> Dd {
         let e = self.lab.restitution.value();

@@ -65,7 +65,7 @@ pub fn chunk(
     writer: &RowWriter,
     skip_bad: bool,
 ) -> ChunkOut {
-    let mut buf = writer.buffer();
+    let mut buf = writer.buffer(CHUNK_ROWS);
     let mut fields = FieldCache::new(writer.columns().len());
     let mut values = vec![0.0; writer.columns().len()];
     let mut out = ChunkOut {
