@@ -378,3 +378,33 @@ fn output_to_a_device_or_through_a_symlink_is_never_replaced() {
     );
     assert_eq!(std::fs::read_to_string(&target).unwrap().lines().count(), 4);
 }
+
+mod byte_identical {
+    use collide::table::columns::Column;
+    use collide::table::writer::{FieldCache, RowFormat, RowWriter};
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(super::common::proptest_config(256))]
+
+        /// Issue 16 writes CSV rows as bytes: they must be exactly what the csv crate writes
+        /// (no quoting ever needed), for any finite values, repeated or not.
+        #[test]
+        fn csv_rows_are_what_the_csv_crate_writes(
+            rows in prop::collection::vec(prop::collection::vec(
+                prop_oneof![any::<f64>().prop_filter("finite", |x| x.is_finite()), Just(0.5), Just(-0.0)],
+                12), 1..20),
+        ) {
+            let w = RowWriter::new(Column::defaults(false), RowFormat::Csv);
+            let mut buf = w.buffer(rows.len());
+            let mut fields = FieldCache::new(12);
+            let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
+            for r in &rows {
+                w.row(r, &mut buf, &mut fields);
+                let texts: Vec<String> = r.iter().map(|x| ryu::Buffer::new().format_finite(*x).to_string()).collect();
+                csv.write_record(&texts).unwrap();
+            }
+            prop_assert_eq!(buf.into_bytes(), csv.into_inner().unwrap());
+        }
+    }
+}
