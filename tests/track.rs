@@ -732,10 +732,13 @@ mod random_layouts {
                 prop_assert!((plain.momentum.end - plain.momentum.start).abs() <= 1e-12 * scale_p);
             }
             let (e0, e1) = (plain.energy.start, plain.energy.end);
+            // Each kick rounds the energy by a few ulps: the drift may grow with the number of
+            // collisions (seed 131 met 1.1e-12 after a long run among masses 1e-27 to 1e-6).
+            let tol = 1e-12f64.max(8.0 * f64::EPSILON * plain.collisions as f64);
             if elastic {
-                prop_assert!((e1 - e0).abs() <= 1e-12 * e0, "{e0} -> {e1}");
+                prop_assert!((e1 - e0).abs() <= tol * e0, "{e0} -> {e1}");
             }
-            prop_assert!(e1 <= e0 * (1.0 + 1e-12), "{e0} -> {e1}");
+            prop_assert!(e1 <= e0 * (1.0 + tol), "{e0} -> {e1}");
             if let Some(u) = until
                 && (plain.stop == Stop::Until || plain.stop == Stop::Done)
             {
@@ -743,4 +746,42 @@ mod random_layouts {
             }
         }
     }
+}
+
+#[test]
+fn collisions_that_spread_out_without_end_stop_at_the_binary64_horizon() {
+    // Found by the random layouts (seed 474): a light body between a wall and a heavy one,
+    // e = 0.6, bounces with geometrically slowing speeds, so collisions spread out without end;
+    // after ~9,000 the next is near t = 1.3e308, where positions overflow. The run stops at the
+    // last collision that binary64 can hold (it used to fail with "a position became inf").
+    let out = collide()
+        .args([
+            "track",
+            "-m",
+            "5.006375867398605e23,1.388930052741735e25,1",
+            "-x",
+            "0.8274563377198182,3.2410893126556,4.4558620462120835",
+            "-v",
+            "0,-0.5408622992551558,1.3977458304722754",
+            "--sizes",
+            "0.6549126754396363,0.7085462603481193,0.9209992067734158",
+            "--left-wall",
+            "0",
+            "-e",
+            "0.5956118960784317",
+            "--format",
+            "json",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(j["stop"]["reason"], "horizon", "{}", j["stop"]);
+    let next = j["stop"]["next"].as_f64().unwrap();
+    assert!(next > 1e300 && next.is_finite());
+    assert!(j["time"].as_f64().unwrap() <= next);
 }

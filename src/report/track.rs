@@ -55,6 +55,11 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
             None => "no collision can happen any more".to_string(),
         },
         Stop::Until => "reached --until".to_string(),
+        Stop::Horizon { next } => format!(
+            "the next collision would come at t = {}, where positions are beyond binary64; \
+             the state is the last collision's",
+            num(*next)
+        ),
         Stop::MaxCollisions => format!(
             "stopped at the --max-collisions cap of {}; raise it to go on",
             limits.max_collisions

@@ -363,6 +363,10 @@ impl<'a> Sim<'a> {
             if t > until {
                 break Stop::Until;
             }
+            // Only far out in time can a position overflow; then stop before the event.
+            if t > 1e250 && (0..n).any(|i| !self.at(i, t).0.is_finite()) {
+                break Stop::Horizon { next: t };
+            }
             now = t;
             let contact = self.contact(slot);
             let (lo, hi, before) = match contact {

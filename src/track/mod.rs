@@ -98,6 +98,10 @@ pub enum Stop {
     Until,
     /// `--max-collisions` was reached.
     MaxCollisions,
+    /// The next collision would come at `next`, so late that positions there are beyond
+    /// binary64 (inelastic bounces slowing geometrically spread collisions out without end):
+    /// the state is the last collision's.
+    Horizon { next: f64 },
     /// Infinitely many collisions accumulate at `accumulation` (near `x`, involving `who`).
     Zeno {
         at: f64,
