@@ -55,10 +55,19 @@ pub fn check_exact_length<'a>(
 
 /// A finite number with the text it came from (none for a number made from a binary64, whose
 /// text is its shortest round-trip decimal, derived when asked for).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Number {
     value: f64,
     text: Option<Box<str>>,
+    /// Solved rather than typed (`Number::solved`): headers show its decimal, not its fraction.
+    derived: bool,
+}
+
+/// Equal value and text (whether typed or solved does not matter).
+impl PartialEq for Number {
+    fn eq(&self, other: &Number) -> bool {
+        self.value == other.value && self.text == other.text
+    }
 }
 
 /// Why a text is not a number.
@@ -208,18 +217,23 @@ impl Number {
     /// Exactly the given binary64 value, which must be finite; no allocation.
     pub fn from_f64(value: f64) -> Result<Number, NumberError> {
         if value.is_finite() {
-            Ok(Number { value, text: None })
+            Ok(Number {
+                value,
+                text: None,
+                derived: false,
+            })
         } else {
             Err(NumberError::Syntax(format!("{value}")))
         }
     }
 
-    /// For a header: the text as typed, or (a derived value whose exact fraction is long, such
-    /// as a unit conversion or one solved from a height's binary64 speed) its nearest binary64
-    /// in text digits, marked `≈`.
+    /// For a header: the text as typed, or (a solved value that is a fraction, such as `e = 1/3`
+    /// from final velocities, a unit conversion, a long typed value) its nearest binary64 in
+    /// text digits, marked `≈`: exact fractions are for `--exact`'s own lines.
     pub fn brief(&self) -> String {
         let text = self.to_string();
-        if (text.contains('/') && text.len() > 24) || text.len() > 40 {
+        let fraction = text.contains('/') && (self.derived || text.len() > 24);
+        if fraction || text.len() > 40 {
             format!("≈{}", num(self.value))
         } else {
             text
@@ -231,6 +245,7 @@ impl Number {
         Number {
             value: self.value,
             text: None,
+            derived: false,
         }
     }
 
@@ -312,6 +327,7 @@ impl Number {
         Ok(Number {
             value,
             text: Some(text.into()),
+            derived: !typed,
         })
     }
 }

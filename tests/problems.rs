@@ -476,3 +476,23 @@ fn energies_in_the_unit_asked_for() {
     assert_eq!(code, 2);
     assert!(err.contains("'erg'") && err.contains("ft*lbf"), "{err}");
 }
+
+#[test]
+fn headers_show_typed_values_and_no_solved_fractions() {
+    // m = (3, 1), V = (6, 0), f1 = 2: f2 = 12 from momentum, e = 12 - 2 over 6 = 5/3, which the
+    // header shows as a decimal outside --exact (the typed 2/3 of another case stays 2/3).
+    let (_, out, _) = run(&[
+        "-m", "3,1", "-v", "6,0", "--fin", "2,?", "--show", "vectors",
+    ]);
+    assert!(out.contains("e = ≈1.66666666666667 (superelastic"), "{out}");
+    assert!(!out.contains("5/3"), "{out}");
+    let (_, out, _) = run(&[
+        "-m", "3,1", "-v", "6,0", "--fin", "2,?", "--exact", "--show", "vectors",
+    ]);
+    assert!(out.starts_with("Solved: f2 = 12, e = 5/3"), "{out}");
+    let (_, out, _) = run(&["-m", "6,1", "-v", "3,-4", "-e", "2/3", "--show", "vectors"]);
+    assert!(out.contains("e = 2/3 (ka-whump)"), "{out}");
+    // 10 g and 2 kg are converted to kg as decimals, not fractions.
+    let (_, out, _) = run(&["-m", "10 g,2 kg", "-v", "1 m/s,0", "--show", "vectors"]);
+    assert!(out.starts_with("M = diag(0.01, 2)"), "{out}");
+}
