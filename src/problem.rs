@@ -45,6 +45,17 @@ pub enum Posed {
     Wall(WallCase, Option<Solved>),
 }
 
+impl Posed {
+    /// The units the event's numbers are in.
+    pub fn units(&self) -> &Units {
+        match self {
+            Posed::Collision(case, _) => &case.units,
+            Posed::Separation(s, _) => &s.units,
+            Posed::Wall(w, _) => &w.units,
+        }
+    }
+}
+
 /// Why a problem cannot be solved.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ProblemError {

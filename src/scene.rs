@@ -508,11 +508,7 @@ impl Scene {
         };
         let mut show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         show.contact_time = contact_time;
-        let units = match &posed {
-            Posed::Collision(case, _) => case.units.clone(),
-            Posed::Separation(s, _) => s.units.clone(),
-            Posed::Wall(w, _) => w.units.clone(),
-        };
+        let units = posed.units().clone();
         show.heights = Some(crate::units::HeightScale::new(
             file.gravity.as_ref(),
             &units,

@@ -22,11 +22,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         .solve(args.case.inertia.clone())?;
     let mut sections = Sections::new(args.show.clone());
     sections.contact_time = args.contact_time.clone();
-    let units = match &posed {
-        Posed::Collision(case, _) => case.units.clone(),
-        Posed::Separation(s, _) => s.units.clone(),
-        Posed::Wall(w, _) => w.units.clone(),
-    };
+    let units = posed.units().clone();
     sections.heights = Some(collide::units::HeightScale::new(
         args.case.gravity.as_ref(),
         &units,
