@@ -55,7 +55,7 @@ fn parse_sig(s: &str) -> Result<u8, String> {
 pub enum Command {
     /// Solve one collision given on the command line
     #[command(
-        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'"
+        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'\n  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show vectors,heights"
     )]
     Solve(SolveArgs),
     /// Solve TOML scene files and check their [expect] numbers
