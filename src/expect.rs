@@ -8,7 +8,7 @@ use num_rational::BigRational;
 use num_traits::Signed;
 use serde_json::Value as Json;
 
-use crate::number::{Number, num};
+use crate::number::{Number, num, num_full};
 
 /// Relative tolerance of a plain expected number.
 pub const DEFAULT_REL: f64 = 1e-12;
@@ -196,7 +196,7 @@ fn show_expected(e: &Expected) -> String {
     match e {
         Expected::Number(x) => match x.text() {
             std::borrow::Cow::Borrowed(typed) => typed.to_string(),
-            std::borrow::Cow::Owned(_) => num(x.value()),
+            std::borrow::Cow::Owned(_) => num_full(x.value()),
         },
         Expected::Text(t) => t.clone(),
         Expected::Array(a) => {
@@ -210,7 +210,7 @@ fn show_expected(e: &Expected) -> String {
 
 fn show_json(v: &Json) -> String {
     match v {
-        Json::Number(n) => n.as_f64().map(num).unwrap_or_else(|| n.to_string()),
+        Json::Number(n) => n.as_f64().map(num_full).unwrap_or_else(|| n.to_string()),
         Json::String(s) => s.clone(),
         Json::Array(a) => format!(
             "[{}]",

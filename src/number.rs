@@ -344,7 +344,15 @@ impl fmt::Display for Number {
 /// A binary64 as people read it: rounded to the text digits (`--sig`, 15 by default), then its
 /// shortest round-trip digits, plain for `1e-5 <= |x| < 1e16` and in scientific notation outside.
 pub fn num(x: f64) -> String {
-    let x = round_significant(x, TEXT_DIGITS.load(std::sync::atomic::Ordering::Relaxed));
+    num_full(round_significant(
+        x,
+        TEXT_DIGITS.load(std::sync::atomic::Ordering::Relaxed),
+    ))
+}
+
+/// `num` without rounding: the shortest round-trip digits whatever `--sig` says (a scene check's
+/// actual value, where a near miss must not print as the expected value).
+pub fn num_full(x: f64) -> String {
     let a = x.abs();
     if x == 0.0 {
         "0".to_string()

@@ -496,3 +496,24 @@ fn headers_show_typed_values_and_no_solved_fractions() {
     let (_, out, _) = run(&["-m", "10 g,2 kg", "-v", "1 m/s,0", "--show", "vectors"]);
     assert!(out.starts_with("M = diag(0.01, 2)"), "{out}");
 }
+
+#[test]
+fn a_near_miss_in_a_scene_check_shows_every_digit() {
+    // 70/3 is 23.333333333333332 in binary64; an expectation of 23.33333333333333 at rel 1e-17
+    // fails, and the 15-digit text rounding must not print the actual value as the expected one.
+    let dir = std::env::temp_dir().join(format!("collide-near-{}.toml", std::process::id()));
+    std::fs::write(
+        &dir,
+        "masses = [6, 1]\nvelocities = [3, -4]\nrestitution = \"2/3\"\n[expect]\n\
+         \"energy.fin\" = {value = 23.33333333333333, rel = 1e-17}\n",
+    )
+    .unwrap();
+    let out = collide()
+        .args(["scene", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("got 23.333333333333332"), "{text}");
+    std::fs::remove_file(&dir).unwrap();
+}
