@@ -180,26 +180,28 @@ pub fn fraction(q: &BigRational) -> String {
     }
 }
 
-/// The exact decimal expansion when the denominator has no prime factors but 2 and 5.
+/// The exact decimal expansion when the denominator has no prime factors but 2 and 5. Integer
+/// arithmetic only (a rational product would cost a gcd of long numbers).
 pub fn terminating_decimal(q: &BigRational) -> Option<String> {
     let mut d = q.denom().clone();
-    let (two, five) = (BigInt::from(2), BigInt::from(5));
-    let mut places = 0usize;
-    let (mut twos, mut fives) = (0usize, 0usize);
-    while d.is_even() {
-        d /= &two;
-        twos += 1;
-    }
-    while (&d % &five).is_zero() {
-        d /= &five;
+    let twos = d.trailing_zeros().unwrap_or(0) as usize;
+    d >>= twos;
+    let five = BigInt::from(5);
+    let mut fives = 0usize;
+    loop {
+        let (quotient, rest) = d.div_rem(&five);
+        if !rest.is_zero() {
+            break;
+        }
+        d = quotient;
         fives += 1;
     }
     if !d.is_one() {
         return None;
     }
-    places = places.max(twos).max(fives);
-    let scaled = q * BigRational::from_integer(num_traits::pow(BigInt::from(10), places));
-    let n = scaled.to_integer();
+    let places = twos.max(fives);
+    // numer * 10^places / denom is exact.
+    let n = q.numer() * num_traits::pow(BigInt::from(10), places) / q.denom();
     let digits = n.abs().to_string();
     let sign = if n.is_negative() { "-" } else { "" };
     if places == 0 {
@@ -216,22 +218,27 @@ pub fn significant(q: &BigRational, n: usize) -> String {
         return "0".to_string();
     }
     let sign = if q.is_negative() { "-" } else { "" };
-    let a = q.abs();
-    // Decimal exponent: 10^e <= a < 10^(e+1).
-    let mut e = a.numer().to_string().len() as i64 - a.denom().to_string().len() as i64;
-    let ten = BigRational::from_integer(10.into());
-    let pow = |k: i64| {
-        let p =
-            BigRational::from_integer(num_traits::pow(BigInt::from(10), k.unsigned_abs() as usize));
-        if k >= 0 { p } else { p.recip() }
+    // Integers only: a = num / den, and floor(a 10^k) = floor(num 10^k / den) (for k < 0,
+    // num / (den 10^-k)); rational products would cost gcds of long numbers.
+    let (num, den) = (q.numer().abs(), q.denom().clone());
+    let ten_to = |k: i64| num_traits::pow(BigInt::from(10), k.unsigned_abs() as usize);
+    let scaled = |k: i64| {
+        if k >= 0 {
+            &num * ten_to(k) / &den
+        } else {
+            &num / (&den * ten_to(k))
+        }
     };
-    while a < pow(e) {
+    // Decimal exponent: 10^e <= a < 10^(e+1), first from the bit lengths.
+    let bits = num.bits() as i64 - den.bits() as i64;
+    let mut e = (bits as f64 * std::f64::consts::LOG10_2).floor() as i64;
+    while scaled(-e).is_zero() {
         e -= 1;
     }
-    while a >= pow(e) * &ten {
+    while !scaled(-e - 1).is_zero() {
         e += 1;
     }
-    let digits = (&a * pow(n as i64 - 1 - e)).to_integer().to_string();
+    let digits = scaled(n as i64 - 1 - e).to_string();
     if (-5..21).contains(&e) {
         if e >= 0 {
             let e = e as usize;

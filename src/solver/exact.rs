@@ -27,6 +27,9 @@ pub struct ExactCollision {
     pub c: Q,
     pub v: Pair<Q>,
     pub e: Q,
+    /// `(V_COM, V_FIN, crunch)` once computed: every section reuses them, and each rational
+    /// operation on long numbers costs a gcd.
+    memo: std::cell::OnceCell<(Q, Pair<Q>, Q)>,
 }
 
 fn half() -> Q {
@@ -47,6 +50,7 @@ impl ExactCollision {
             c: m[0][1].exact(),
             v: [case.velocities[0].exact(), case.velocities[1].exact()],
             e: case.restitution().number().exact(),
+            memo: Default::default(),
         }
     }
 
@@ -59,14 +63,20 @@ impl ExactCollision {
             c: from_f64(m[(0, 1)]),
             v: [from_f64(c.v_in.x), from_f64(c.v_in.y)],
             e: from_f64(c.restitution.value()),
+            memo: Default::default(),
         }
     }
 
     /// The same collision seen by an observer moving at `w`: every velocity shifted by `-w`.
     pub fn observed(&self, w: &Q) -> ExactCollision {
+        // A new memo: the shifted velocities have their own V_COM and FIN.
         ExactCollision {
+            a: self.a.clone(),
+            b: self.b.clone(),
+            c: self.c.clone(),
             v: [&self.v[0] - w, &self.v[1] - w],
-            ..self.clone()
+            e: self.e.clone(),
+            memo: Default::default(),
         }
     }
 
@@ -96,15 +106,26 @@ impl ExactCollision {
     pub fn p_total(&self) -> Q {
         (&self.a + &self.c) * &self.v[0] + (&self.c + &self.b) * &self.v[1]
     }
+    /// `(V_COM, V_FIN, crunch)`, computed once.
+    fn memo(&self) -> &(Q, Pair<Q>, Q) {
+        self.memo.get_or_init(|| {
+            let vc = self.p_total() / self.m_total();
+            let fin = self.v_fin_from(&vc);
+            let crunch = half() * self.form_q(&self.v, &self.v) - half() * &vc * self.p_total();
+            (vc, fin, crunch)
+        })
+    }
     pub fn v_com_q(&self) -> Q {
-        self.p_total() / self.m_total()
+        self.memo().0.clone()
     }
     pub fn v_fin_q(&self) -> Pair<Q> {
+        self.memo().1.clone()
+    }
+    fn v_fin_from(&self, vc: &Q) -> Pair<Q> {
         let k = Q::one() + &self.e;
-        let vc = self.v_com_q();
         [
-            &k * &vc - &self.e * &self.v[0],
-            &k * &vc - &self.e * &self.v[1],
+            &k * vc - &self.e * &self.v[0],
+            &k * vc - &self.e * &self.v[1],
         ]
     }
     pub fn form_q(&self, x: &Pair<Q>, y: &Pair<Q>) -> Q {
@@ -118,7 +139,7 @@ impl ExactCollision {
     }
     /// By definition, `KE_IN - KE_COM`: exact arithmetic may subtract.
     pub fn crunch_q(&self) -> Q {
-        self.ke_in_q() - self.ke_com_q()
+        self.memo().2.clone()
     }
     pub fn ke_fin_q(&self) -> Q {
         let f = self.v_fin_q();
