@@ -424,7 +424,7 @@ pub struct CaseArgs {
 
     /// g in m/s^2 for velocities typed as heights ('height 2 m': the speed sqrt(2 g h) of a fall
     /// from rest through 2 m) and for --show heights [default: 9.80665, standard gravity]
-    #[arg(long, value_name = "G")]
+    #[arg(long, value_name = "G", allow_hyphen_values = true)]
     pub gravity: Option<Number>,
 }
 

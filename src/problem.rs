@@ -191,14 +191,7 @@ impl Problem {
             if let Some(n) = known[var as usize].known() {
                 return Ok(Given::Known(n.clone()));
             }
-            // A terminating decimal when there is one (`1.16`, not `29/25`); exact either way.
-            let q = solved.get(var);
-            let text = crate::quantity::terminating_decimal(q)
-                .filter(|t| t.len() <= 40)
-                .unwrap_or_else(|| crate::quantity::fraction(q));
-            Number::solved(&text)
-                .map(Given::Known)
-                .map_err(|error| ProblemError::Solved { var, text, error })
+            solved_number(var, solved.get(var)).map(Given::Known)
         };
         let m = vec![number(Var::M1)?, number(Var::M2)?];
         let v = vec![number(Var::V1)?, number(Var::V2)?];
@@ -251,26 +244,23 @@ impl Problem {
             e: e.clone(),
         };
         let s = crate::wall::solve(problem)?;
-        let number =
-            |x: &BigRational, typed: Option<&Given<Number>>| -> Result<Number, ProblemError> {
-                if let Some(n) = typed.and_then(Given::known) {
-                    return Ok(n.clone());
-                }
-                let text = crate::quantity::terminating_decimal(x)
-                    .filter(|t| t.len() <= 40)
-                    .unwrap_or_else(|| crate::quantity::fraction(x));
-                Number::solved(&text).map_err(|error| ProblemError::Solved {
-                    var: Var::E,
-                    text,
-                    error,
-                })
-            };
-        let mut velocities = [number(&s.w, v.get(wall))?, number(&s.w, v.get(wall))?];
-        velocities[ball] = number(&s.v, v.get(ball))?;
+        let ((bv, bf), (wv, wf)) = crate::wall::vars(wall);
+        // A value as typed when it was given, else its solved value.
+        let number = |var: Var, x: &BigRational, typed: Option<&Given<Number>>| match typed
+            .and_then(Given::known)
+        {
+            Some(n) => Ok(n.clone()),
+            None => solved_number(var, x),
+        };
+        let mut velocities = [
+            number(wv, &s.w, v.get(wall))?,
+            number(wv, &s.w, v.get(wall))?,
+        ];
+        velocities[ball] = number(bv, &s.v, v.get(ball))?;
         let typed_e = self.restitution.as_ref().and_then(Given::known);
         let restitution = match typed_e {
             Some(r) => r.clone(),
-            None => Restitution::new(number(&s.e, None)?)?,
+            None => Restitution::new(solved_number(Var::E, &s.e)?)?,
         };
         let case = WallCase {
             wall,
@@ -283,9 +273,8 @@ impl Problem {
             return Ok(Posed::Wall(case, None));
         }
         // What was solved, in the two-body variables (the wall's mass means nothing).
-        let ((bv, bf), (wv, wf)) = crate::wall::vars(wall);
         let mut values: [BigRational; 7] = Default::default();
-        values[if ball == 0 { 0 } else { 1 }] = mass.number().exact();
+        values[ball] = mass.number().exact(); // M1 or M2
         values[bv as usize] = s.v.clone();
         values[bf as usize] = s.f.clone();
         values[wv as usize] = s.w.clone();
@@ -313,6 +302,15 @@ impl Problem {
         };
         Ok(Posed::Wall(case, Some(solved)))
     }
+}
+
+/// A solved value as a `Number` (`quantity::number_of`), its error naming the variable.
+fn solved_number(var: Var, q: &BigRational) -> Result<Number, ProblemError> {
+    crate::quantity::number_of(q).map_err(|error| ProblemError::Solved {
+        var,
+        text: crate::quantity::fraction(q),
+        error,
+    })
 }
 
 /// The case of resolved values, none of them unknown.

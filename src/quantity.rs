@@ -10,7 +10,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
 
-use crate::number::num;
+use crate::number::{Number, NumberError, num};
 
 /// Digits shown for an approximate (irrational) exact-mode value.
 pub const APPROX_DIGITS: usize = 20;
@@ -178,6 +178,15 @@ pub fn fraction(q: &BigRational) -> String {
     } else {
         format!("{}/{}", q.numer(), q.denom())
     }
+}
+
+/// A value computed exactly (solved, converted) as a `Number`: its text a decimal when it has a
+/// short one (`1.16`, `0.01`), else its fraction (`5/3`); exact either way.
+pub fn number_of(q: &BigRational) -> Result<Number, NumberError> {
+    let text = terminating_decimal(q)
+        .filter(|t| t.len() <= 40)
+        .unwrap_or_else(|| fraction(q));
+    Number::solved(&text)
 }
 
 /// The exact decimal expansion when the denominator has no prime factors but 2 and 5. Integer

@@ -330,7 +330,13 @@ impl Quantity {
         let two_gh = BigRational::from_integer(2.into()) * g * num_traits::Signed::abs(&h);
         let speed = crate::quantity::to_f64(&two_gh)
             .map(f64::sqrt)
-            .ok_or_else(|| NumberError::Syntax(format!("height {}", self.number)))?;
+            .ok_or_else(|| {
+                NumberError::Overflow(format!(
+                    "sqrt(2 g h) for h = {} m, g = {} m/s^2",
+                    crate::quantity::significant(&num_traits::Signed::abs(&h), 15),
+                    crate::quantity::significant(g, 15)
+                ))
+            })?;
         let speed = if h < BigRational::from_integer(0.into()) {
             -speed
         } else {
@@ -689,10 +695,7 @@ pub fn resolve(
                             .map(Unit::si)
                             .unwrap_or_else(|| BigRational::from_integer(1.into()));
                     // A decimal when the converted value has one (10 g is 0.01 kg, not 1/100).
-                    let text = crate::quantity::terminating_decimal(&si)
-                        .filter(|t| t.len() <= 40)
-                        .unwrap_or_else(|| crate::quantity::fraction(&si));
-                    Ok(Given::Known(Number::solved(&text)?))
+                    Ok(Given::Known(crate::quantity::number_of(&si)?))
                 }
                 Given::Known(q) => Ok(Given::Known(q.number.clone())),
             })

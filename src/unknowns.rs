@@ -53,6 +53,8 @@ impl fmt::Display for Var {
 pub enum UnknownError {
     #[error("{0} unknowns ({1}): at most two can be solved for from momentum and restitution")]
     TooMany(usize, String),
+    #[error("{0}: against a wall only restitution holds, so one value can be solved for")]
+    WallTooMany(String),
     #[error("no solution: {0}")]
     None(String),
     #[error("infinitely many solutions: {0}")]

@@ -110,9 +110,8 @@ pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
         }
         (Some(a), _) | (None, Some(a)) => a,
         (None, None) => {
-            return Err(UnknownError::TooMany(
-                2,
-                "the wall's initial and final velocity".into(),
+            return Err(UnknownError::WallTooMany(
+                "the wall's initial and final velocity are both unknown".into(),
             ));
         }
     };
@@ -126,13 +125,11 @@ pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
     };
     let unknown = names(&[(v.is_none(), "v"), (f.is_none(), "f"), (e.is_none(), "e")]);
     if unknown.len() > 1 {
-        return Err(UnknownError::TooMany(
+        return Err(UnknownError::WallTooMany(format!(
+            "{} unknowns ({})",
             unknown.len(),
-            format!(
-                "{}: against a wall only restitution holds, so one can be solved for",
-                unknown.join(", ")
-            ),
-        ));
+            unknown.join(", ")
+        )));
     }
     let mut residual = None;
     let (v, f, e) = match (v, f, e) {

@@ -4,17 +4,7 @@
 
 mod common;
 
-use common::collide;
-
-/// Runs `collide args`; gives (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = collide().args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::run;
 
 fn scratch(name: &str, text: &str) -> std::path::PathBuf {
     let path = std::env::temp_dir().join(format!("collide-hostile-{}-{name}", std::process::id()));

@@ -19,14 +19,9 @@ fn json(args: &str) -> (i32, Value) {
     (out.status.code().unwrap_or(-1), v)
 }
 
-/// `collide solve` with arguments (quoted ones kept whole): code, stdout, stderr.
+/// `collide solve ARGS`: code, stdout, stderr.
 fn run(args: &[&str]) -> (i32, String, String) {
-    let out = collide().arg("solve").args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    common::run(&[&["solve"], args].concat())
 }
 
 fn f(v: &Value) -> f64 {
@@ -365,6 +360,22 @@ fn walls_forward_moving_and_refused() {
         (
             vec!["-m", "1,1", "-v", "height 2 m,0", "--gravity", "0"],
             "gravity",
+        ),
+        (
+            vec!["-m", "1,1", "-v", "height 2 m,0", "--gravity", "-9.8"],
+            "gravity -9.8",
+        ),
+        (
+            vec!["-m", "1,1", "-v", "height 2 m,0", "--gravity", "1e308"],
+            "sqrt(2 g h)",
+        ),
+        (
+            vec!["-m", "wall,1", "-v", "0,-1", "--fin", "0,?", "-e", "?"],
+            "one value can be solved",
+        ),
+        (
+            vec!["-m", "wall,1", "-v", "?,-1", "--fin", "?,1"],
+            "both unknown",
         ),
     ] {
         let (code, out, err) = run(&args);

@@ -6,16 +6,7 @@ mod common;
 use std::io::{Read, Write};
 use std::process::{Command as StdCommand, Stdio};
 
-use common::{REL, assert_close, collide};
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = collide().args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
+use common::{REL, assert_close, run};
 
 fn ok(args: &[&str]) -> String {
     let (code, out, err) = run(args);

@@ -22,6 +22,16 @@ pub fn assert_pair(actual: [f64; 2], expected: [f64; 2], what: &str) {
     assert_close(actual[1], expected[1], REL, &format!("{what}[1]"));
 }
 
+/// Runs `collide args` whatever its exit status: (exit code, stdout, stderr).
+pub fn run(args: &[&str]) -> (i32, String, String) {
+    let out = collide().args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
 pub fn collide() -> Command {
     Command::cargo_bin("collide").expect("the collide binary is built")
 }
