@@ -5,9 +5,9 @@
 use std::hint::black_box;
 use std::time::Instant;
 
+use crate::rational::Q;
 use nalgebra::{Matrix2, Vector2};
-use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Signed;
 use serde::Serialize;
 
 use crate::collision::Collision;
@@ -32,7 +32,7 @@ pub enum Method {
     Quadratic,
     /// nalgebra matrix expressions throughout (P = u.M.V, KE = V.M.V / 2, differences)
     Tensor,
-    /// BigRational arithmetic, rounded to binary64 at the end
+    /// Q arithmetic, rounded to binary64 at the end
     Exact,
 }
 
@@ -81,7 +81,7 @@ pub fn solve(method: Method, c: &Collision) -> Outcome {
         Method::Exact => {
             let x = ExactCollision::from_binary64(c);
             let [f1, f2] = x.v_fin_q();
-            let f = |q: &BigRational| to_f64(q).unwrap_or(f64::INFINITY);
+            let f = |q: &Q| to_f64(q).unwrap_or(f64::INFINITY);
             Outcome {
                 fin: [f(&f1), f(&f2)],
                 crunch: f(&x.crunch_q()),
@@ -168,9 +168,9 @@ fn tensor(c: &Collision) -> Outcome {
 /// The exact values a method is measured against, with their scales.
 #[derive(Clone, Debug)]
 pub struct Reference {
-    pub fin: [BigRational; 2],
-    pub crunch: BigRational,
-    pub lost: BigRational,
+    pub fin: [Q; 2],
+    pub crunch: Q,
+    pub lost: Q,
     /// `max(|V1|, |V2|, |FIN1|, |FIN2|)`: the natural scale of velocity errors.
     pub velocity_scale: f64,
 }
@@ -194,7 +194,7 @@ impl Reference {
 
 /// Error in units of the last place of `scale`: `|approx - exact| / ulp(scale)`; `inf` for a
 /// non-finite approximation, or a non-zero one where the exact value (and so the scale) is 0.
-pub fn ulps(approx: f64, exact: &BigRational, scale: f64) -> f64 {
+pub fn ulps(approx: f64, exact: &Q, scale: f64) -> f64 {
     if !approx.is_finite() {
         return f64::INFINITY;
     }
@@ -221,7 +221,7 @@ pub struct Errors {
 }
 
 pub fn errors(o: &Outcome, r: &Reference) -> Errors {
-    let self_scale = |q: &BigRational| to_f64(&q.abs()).unwrap_or(f64::MAX);
+    let self_scale = |q: &Q| to_f64(&q.abs()).unwrap_or(f64::MAX);
     Errors {
         fin: ulps(o.fin[0], &r.fin[0], r.velocity_scale).max(ulps(
             o.fin[1],

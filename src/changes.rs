@@ -8,10 +8,8 @@
 //! Every value is computed in exact rationals from the velocities it describes and rounded once
 //! when printed in binary64: these are a few products per body, and exactness costs microseconds.
 
-use num_rational::BigRational;
-use num_traits::{Signed, Zero};
-
-type Q = BigRational;
+use crate::rational::Q;
+use num_traits::Signed;
 
 /// The changes of a two-body event, exact. Per-body energies only for a diagonal tensor (bodies
 /// on a rail): with a general tensor the kinetic energy has a cross term and belongs to no body.
@@ -38,7 +36,7 @@ pub struct Event<'a> {
 }
 
 fn half() -> Q {
-    Q::new(1.into(), 2.into())
+    crate::rational::ratio(1, 2)
 }
 
 impl Changes {

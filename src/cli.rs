@@ -459,7 +459,7 @@ pub struct SolveArgs {
     /// How long the bodies touch, e.g. '2 ms' or 0.01 (seconds; units s, ms, us): the changes
     /// section then gives the average force dp / T on each body
     #[arg(long, value_name = "T", value_parser = |s: &str| collide::units::seconds(s))]
-    pub contact_time: Option<num_rational::BigRational>,
+    pub contact_time: Option<collide::rational::Q>,
 
     /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
     /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest

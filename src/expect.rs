@@ -4,7 +4,6 @@
 
 use std::fmt;
 
-use num_rational::BigRational;
 use num_traits::Signed;
 use serde_json::Value as Json;
 
@@ -181,7 +180,7 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
         // the rationals they are (a decimal expectation is the decimal it is).
         (Expected::Number(x), Json::String(y)) => y.parse::<Number>().is_ok_and(|y| {
             let x = x.exact();
-            let bound = |t: f64| BigRational::from_float(t).unwrap_or_default();
+            let bound = |t: f64| crate::rational::from_f64(t);
             (y.exact() - &x).abs() <= bound(tol.abs) + bound(tol.rel) * x.abs()
         }),
         (Expected::Text(x), Json::String(y)) => x == y,

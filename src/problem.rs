@@ -3,7 +3,7 @@
 //! Units are resolved first; the unknowns are then solved exactly (`unknowns`), and the result
 //! is an ordinary `Case`.
 
-use num_rational::BigRational;
+use crate::rational::Q;
 
 use crate::case::Case;
 use crate::inertia::{InertiaError, InertiaTensor, Mass, MassError};
@@ -183,8 +183,7 @@ impl Problem {
             .cloned()
             .chain([e])
             .collect();
-        let exact: [Option<BigRational>; 7] =
-            std::array::from_fn(|i| known[i].known().map(Number::exact));
+        let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
         let solved = solve_unknowns(exact)?;
         // A value as typed when it was given (the header repeats it), else its solved fraction.
         let number = |var: Var| -> Result<Given<Number>, ProblemError> {
@@ -234,7 +233,7 @@ impl Problem {
         let e = match &self.restitution {
             Some(r) => r.known().map(|r| r.number().exact()),
             None if self.fin.is_some() => None,
-            None => Some(BigRational::from_integer(1.into())),
+            None => Some(crate::rational::int(1)),
         };
         let given_fin = self.fin.is_some();
         let fin = |i: usize| if given_fin { q(v.get(2 + i)) } else { None };
@@ -246,12 +245,11 @@ impl Problem {
         let s = crate::wall::solve(problem)?;
         let ((bv, bf), (wv, wf)) = crate::wall::vars(wall);
         // A value as typed when it was given, else its solved value.
-        let number = |var: Var, x: &BigRational, typed: Option<&Given<Number>>| match typed
-            .and_then(Given::known)
-        {
-            Some(n) => Ok(n.clone()),
-            None => solved_number(var, x),
-        };
+        let number =
+            |var: Var, x: &Q, typed: Option<&Given<Number>>| match typed.and_then(Given::known) {
+                Some(n) => Ok(n.clone()),
+                None => solved_number(var, x),
+            };
         let mut velocities = [
             number(wv, &s.w, v.get(wall))?,
             number(wv, &s.w, v.get(wall))?,
@@ -273,7 +271,7 @@ impl Problem {
             return Ok(Posed::Wall(case, None));
         }
         // What was solved, in the two-body variables (the wall's mass means nothing).
-        let mut values: [BigRational; 7] = Default::default();
+        let mut values: [Q; 7] = Default::default();
         values[ball] = mass.number().exact(); // M1 or M2
         values[bv as usize] = s.v.clone();
         values[bf as usize] = s.f.clone();
@@ -305,7 +303,7 @@ impl Problem {
 }
 
 /// A solved value as a `Number` (`quantity::number_of`), its error naming the variable.
-fn solved_number(var: Var, q: &BigRational) -> Result<Number, ProblemError> {
+fn solved_number(var: Var, q: &Q) -> Result<Number, ProblemError> {
     crate::quantity::number_of(q).map_err(|error| ProblemError::Solved {
         var,
         text: crate::quantity::fraction(q),

@@ -4,10 +4,10 @@
 
 use std::fmt::Debug;
 
-use num_bigint::BigInt;
-use num_integer::Integer;
-use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use dashu_int::ops::{BitTest, SquareRoot, UnsignedAbs};
+use num_traits::{Signed, Zero};
+
+use crate::rational::{IBig, Q, UBig, pow10};
 use serde::Serialize;
 
 use crate::number::{Number, NumberError, num};
@@ -28,11 +28,11 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     fn recip(&self) -> Option<Self>;
     /// An exact rational in this arithmetic: rounded once to binary64 (not representable: NaN,
     /// reported by name), or kept exact.
-    fn of_rational(q: &BigRational) -> Self;
+    fn of_rational(q: &Q) -> Self;
     /// `|x|`, as a binary64 (for choosing a scale).
     fn magnitude(&self) -> f64;
     /// `x q`: for a binary64, the exact product rounded once (a change of unit).
-    fn scale(&self, q: &BigRational) -> Self;
+    fn scale(&self, q: &Q) -> Self;
     /// In text, a binary64 below the error bound of its scale (`SNAP_ULPS` ulps of `scale`, the
     /// largest velocity of its vector) is rounding noise of an exact 0 (a car that stops prints
     /// `0`, not `-4.4e-16`); exact values are never changed.
@@ -58,13 +58,13 @@ impl Scalar for f64 {
     fn recip(&self) -> Option<f64> {
         (*self != 0.0).then(|| 1.0 / self)
     }
-    fn of_rational(q: &BigRational) -> f64 {
+    fn of_rational(q: &Q) -> f64 {
         to_f64(q).unwrap_or(f64::NAN)
     }
     fn magnitude(&self) -> f64 {
         self.abs()
     }
-    fn scale(&self, q: &BigRational) -> f64 {
+    fn scale(&self, q: &Q) -> f64 {
         if !self.is_finite() {
             return *self;
         }
@@ -83,19 +83,19 @@ impl Scalar for f64 {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Exact {
     /// Exactly this rational.
-    Rational(BigRational),
+    Rational(Q),
     /// An irrational value, truncated to the digits kept (shown to `APPROX_DIGITS`).
-    Approx(BigRational),
+    Approx(Q),
 }
 
 impl Default for Exact {
     fn default() -> Exact {
-        Exact::Rational(BigRational::zero())
+        Exact::Rational(Q::zero())
     }
 }
 
 impl Exact {
-    pub fn rational(&self) -> &BigRational {
+    pub fn rational(&self) -> &Q {
         match self {
             Exact::Rational(q) | Exact::Approx(q) => q,
         }
@@ -118,19 +118,13 @@ impl Scalar for Exact {
         match self {
             // Fractions throughout (`-1/4` beside `-1/3`, never `-0.25` beside `-1/3`); a long
             // fraction with a short decimal (`21/5000000000000000`) as that decimal.
-            Exact::Rational(q) => {
-                let f = fraction(q);
-                let text = if f.len() <= 24 {
-                    f
-                } else {
-                    terminating_decimal(q).unwrap_or(f)
-                };
-                if text.len() <= 40 {
-                    text
-                } else {
-                    format!("≈{}", significant(q, APPROX_DIGITS))
-                }
-            }
+            // Long values are never written out in full only to be dropped.
+            Exact::Rational(q) => match fraction_within(q, 40) {
+                Some(f) if f.len() <= 24 => f,
+                f => terminating_decimal(q, 40)
+                    .or(f)
+                    .unwrap_or_else(|| format!("≈{}", significant(q, APPROX_DIGITS))),
+            },
             Exact::Approx(q) => format!("≈{}", significant(q, APPROX_DIGITS)),
         }
     }
@@ -138,22 +132,22 @@ impl Scalar for Exact {
         true
     }
     fn quarter(&self) -> Exact {
-        let q = self.rational() / BigRational::from_integer(4.into());
+        let q = self.rational() / crate::rational::int(4);
         self.with(q)
     }
     fn neg(&self) -> Exact {
         self.with(-self.rational())
     }
     fn recip(&self) -> Option<Exact> {
-        (!self.rational().is_zero()).then(|| self.with(self.rational().recip()))
+        (!self.rational().is_zero()).then(|| self.with(Q::ONE / self.rational()))
     }
-    fn of_rational(q: &BigRational) -> Exact {
+    fn of_rational(q: &Q) -> Exact {
         Exact::Rational(q.clone())
     }
     fn magnitude(&self) -> f64 {
-        self.rational().abs().to_f64().unwrap_or(f64::INFINITY)
+        to_f64(self.rational()).map_or(f64::INFINITY, f64::abs)
     }
-    fn scale(&self, q: &BigRational) -> Exact {
+    fn scale(&self, q: &Q) -> Exact {
         self.with(self.rational() * q)
     }
     fn snap(&self, _scale: f64) -> Exact {
@@ -163,7 +157,7 @@ impl Scalar for Exact {
 
 impl Exact {
     /// `q`, as exact or approximate as `self`.
-    fn with(&self, q: BigRational) -> Exact {
+    fn with(&self, q: Q) -> Exact {
         match self {
             Exact::Rational(_) => Exact::Rational(q),
             Exact::Approx(_) => Exact::Approx(q),
@@ -172,65 +166,78 @@ impl Exact {
 }
 
 /// `"p/q"`, or `"p"` for an integer.
-pub fn fraction(q: &BigRational) -> String {
-    if q.is_integer() {
-        q.numer().to_string()
+pub fn fraction(q: &Q) -> String {
+    if q.is_int() {
+        q.numerator().to_string()
     } else {
-        format!("{}/{}", q.numer(), q.denom())
+        format!("{}/{}", q.numerator(), q.denominator())
     }
 }
 
 /// A value computed exactly (solved, converted) as a `Number`: its text a decimal when it has a
 /// short one (`1.16`, `0.01`), else its fraction (`5/3`); exact either way.
-pub fn number_of(q: &BigRational) -> Result<Number, NumberError> {
-    let text = terminating_decimal(q)
-        .filter(|t| t.len() <= 40)
-        .unwrap_or_else(|| fraction(q));
+pub fn number_of(q: &Q) -> Result<Number, NumberError> {
+    let text = terminating_decimal(q, 40).unwrap_or_else(|| fraction(q));
     Number::solved(&text)
 }
 
-/// The exact decimal expansion when the denominator has no prime factors but 2 and 5. Integer
-/// arithmetic only (a rational product would cost a gcd of long numbers).
-pub fn terminating_decimal(q: &BigRational) -> Option<String> {
-    let mut d = q.denom().clone();
-    let twos = d.trailing_zeros().unwrap_or(0) as usize;
-    d >>= twos;
-    let five = BigInt::from(5);
-    let mut fives = 0usize;
-    loop {
-        let (quotient, rest) = d.div_rem(&five);
-        if !rest.is_zero() {
-            break;
-        }
-        d = quotient;
-        fives += 1;
-    }
-    if !d.is_one() {
+/// `fraction(q)` when it has at most `max_chars` characters; decided from the bit lengths first
+/// (`p` has at least `floor((bits - 1) log10 2) + 1` digits), so a long one is never written out.
+pub fn fraction_within(q: &Q, max_chars: usize) -> Option<String> {
+    let digits = |bits: usize| (bits.max(1) - 1) * 30103 / 100000 + 1;
+    let fewest = digits(q.numerator().unsigned_abs().bit_len())
+        + if q.is_int() {
+            0
+        } else {
+            1 + digits(q.denominator().bit_len())
+        };
+    if fewest > max_chars {
         return None;
     }
+    Some(fraction(q)).filter(|f| f.len() <= max_chars)
+}
+
+/// The exact decimal expansion, when the denominator has no prime factors but 2 and 5 and it has
+/// at most `max_chars` characters. Integer arithmetic only (a rational product would cost a gcd
+/// of long numbers).
+pub fn terminating_decimal(q: &Q, max_chars: usize) -> Option<String> {
+    let mut d = q.denominator().clone();
+    let twos = d.trailing_zeros().unwrap_or(0);
+    d >>= twos;
+    let fives = power_of_five(&d)?;
     let places = twos.max(fives);
+    if places > 0 && places + 2 > max_chars {
+        return None;
+    }
     // numer * 10^places / denom is exact.
-    let n = q.numer() * num_traits::pow(BigInt::from(10), places) / q.denom();
+    let n = q.numerator() * IBig::from(pow10(places)) / IBig::from(q.denominator().clone());
     let digits = n.abs().to_string();
     let sign = if n.is_negative() { "-" } else { "" };
     if places == 0 {
-        return Some(format!("{sign}{digits}"));
+        return Some(format!("{sign}{digits}")).filter(|t| t.len() <= max_chars);
     }
     let padded = format!("{digits:0>width$}", width = places + 1);
     let (int, frac) = padded.split_at(padded.len() - places);
-    Some(format!("{sign}{int}.{frac}"))
+    Some(format!("{sign}{int}.{frac}")).filter(|t| t.len() <= max_chars)
+}
+
+/// `k` when `d = 5^k`. From the bit length, `k` is within one of `(bits - 1) / log2 5`: a power
+/// and a comparison or three, where dividing by 5 a digit at a time is quadratic in the length.
+fn power_of_five(d: &UBig) -> Option<usize> {
+    let guess = ((d.bit_len().max(1) - 1) as f64 / 5f64.log2()).round() as usize;
+    (guess.saturating_sub(1)..=guess + 1).find(|&k| UBig::from(5u8).pow(k) == *d)
 }
 
 /// `q` to `n` significant digits (truncated), plain for moderate exponents, else `d.ddde±x`.
-pub fn significant(q: &BigRational, n: usize) -> String {
+pub fn significant(q: &Q, n: usize) -> String {
     if q.is_zero() {
         return "0".to_string();
     }
     let sign = if q.is_negative() { "-" } else { "" };
     // Integers only: a = num / den, and floor(a 10^k) = floor(num 10^k / den) (for k < 0,
     // num / (den 10^-k)); rational products would cost gcds of long numbers.
-    let (num, den) = (q.numer().abs(), q.denom().clone());
-    let ten_to = |k: i64| num_traits::pow(BigInt::from(10), k.unsigned_abs() as usize);
+    let (num, den) = (q.numerator().unsigned_abs(), q.denominator().clone());
+    let ten_to = |k: i64| pow10(k.unsigned_abs() as usize);
     let scaled = |k: i64| {
         if k >= 0 {
             &num * ten_to(k) / &den
@@ -239,7 +246,7 @@ pub fn significant(q: &BigRational, n: usize) -> String {
         }
     };
     // Decimal exponent: 10^e <= a < 10^(e+1), first from the bit lengths.
-    let bits = num.bits() as i64 - den.bits() as i64;
+    let bits = num.bit_len() as i64 - den.bit_len() as i64;
     let mut e = (bits as f64 * std::f64::consts::LOG10_2).floor() as i64;
     while scaled(-e).is_zero() {
         e -= 1;
@@ -274,35 +281,34 @@ pub fn significant(q: &BigRational, n: usize) -> String {
 }
 
 /// `sqrt(q)` for `q >= 0`, truncated to at least `digits` significant decimal digits.
-pub fn sqrt(q: &BigRational, digits: usize) -> BigRational {
+pub fn sqrt(q: &Q, digits: usize) -> Q {
     if q.is_zero() || q.is_negative() {
-        return BigRational::zero();
+        return Q::ZERO;
     }
-    // sqrt(n/d) = sqrt(n d) / d; scale n d by 10^(2k) so the integer root has enough digits.
-    let nd = q.numer() * q.denom();
-    let have = nd.to_string().len() / 2;
-    let k = (digits + 2).saturating_sub(have);
-    let scale = num_traits::pow(BigInt::from(10), k);
-    let root = (nd * &scale * &scale).sqrt();
-    BigRational::new(root, q.denom() * scale)
+    // sqrt(q) = sqrt(floor(q 10^2k)) / 10^k, truncated. From the bit lengths, log10 q is within
+    // 0.31 of e, so q 10^2k >= 10^(2 digits + 5) and its integer root has digits + 2 digits or
+    // more: only those are computed, however long q's numerator and denominator are.
+    let (n, d) = (q.numerator().unsigned_abs(), q.denominator());
+    let e = ((n.bit_len() as f64 - d.bit_len() as f64) * std::f64::consts::LOG10_2).floor() as i64;
+    let k = digits as i64 + 3 - e.div_euclid(2);
+    let scale = pow10(2 * k.unsigned_abs() as usize);
+    if k >= 0 {
+        let root = (n * scale / d).sqrt();
+        Q::from_parts(root.into(), pow10(k as usize))
+    } else {
+        let root = (n / (d * scale)).sqrt();
+        Q::from(root * pow10(k.unsigned_abs() as usize))
+    }
 }
 
-/// The nearest binary64 to an exact value (`None` outside the binary64 range).
-pub fn to_f64(q: &BigRational) -> Option<f64> {
-    q.to_f64().filter(|x| x.is_finite())
-}
-
-/// The exact value of a binary64.
-pub fn from_f64(x: f64) -> BigRational {
-    BigRational::from_float(x).unwrap_or_default()
-}
+pub use crate::rational::{from_f64, to_f64};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn q(n: i64, d: i64) -> BigRational {
-        BigRational::new(n.into(), d.into())
+    fn q(n: i64, d: i64) -> Q {
+        crate::rational::ratio(n, d)
     }
 
     #[test]
@@ -313,7 +319,7 @@ mod tests {
         assert_eq!(Exact::Rational(q(70, 3)).show(), "70/3");
         assert_eq!(Exact::Rational(q(-1, 5)).show(), "-1/5");
         assert_eq!(Exact::Rational(q(27075, 4)).show(), "27075/4");
-        let tiny = BigRational::new(21.into(), num_traits::pow(BigInt::from(10), 32));
+        let tiny = Q::from_parts(IBig::from(21), pow10(32));
         assert_eq!(
             Exact::Rational(tiny).show(),
             "0.00000000000000000000000000000021"
@@ -330,12 +336,42 @@ mod tests {
     }
 
     #[test]
+    fn powers_of_five_are_recognised_at_any_length() {
+        for k in [0usize, 1, 2, 3, 26, 27, 28, 100, 1000, 4321] {
+            let p = UBig::from(5u8).pow(k);
+            assert_eq!(power_of_five(&p), Some(k), "5^{k}");
+            assert_eq!(power_of_five(&(&p * UBig::from(3u8))), None, "3 5^{k}");
+            assert_eq!(power_of_five(&(&p + UBig::ONE)), None, "5^{k} + 1");
+        }
+        // 1/(2^3 5^1000) = 2^997 / 10^1000: 1000 places; 1/(3 5^1000) has none.
+        let d = UBig::from(8u8) * UBig::from(5u8).pow(1000);
+        let t = terminating_decimal(&Q::from_parts(IBig::ONE, d), usize::MAX).unwrap();
+        let digits = UBig::from(2u8).pow(997).to_string();
+        assert_eq!(t, format!("0.{digits:0>1000}"));
+        let d = UBig::from(3u8) * UBig::from(5u8).pow(1000);
+        assert_eq!(
+            terminating_decimal(&Q::from_parts(IBig::ONE, d), usize::MAX),
+            None
+        );
+        assert_eq!(terminating_decimal(&q(1, 8), 5), Some("0.125".into()));
+        assert_eq!(terminating_decimal(&q(1, 8), 4), None);
+        assert_eq!(terminating_decimal(&q(-12345, 1), 5), None);
+        assert_eq!(fraction_within(&q(-12345, 7), 8), Some("-12345/7".into()));
+        assert_eq!(fraction_within(&q(-12345, 7), 7), None);
+        assert_eq!(fraction_within(&Q::from(pow10(50)), 50), None);
+        assert_eq!(
+            fraction_within(&Q::from(pow10(50)), 51).map(|f| f.len()),
+            Some(51)
+        );
+    }
+
+    #[test]
     fn significant_digits() {
         assert_eq!(significant(&q(1, 3), 5), "0.33333");
         assert_eq!(significant(&q(200, 3), 5), "66.666");
         assert_eq!(significant(&q(7, 1), 20), "7");
         assert_eq!(significant(&q(-1, 1000000), 3), "-1e-6");
-        let big = BigRational::from_integer(num_traits::pow(BigInt::from(10), 400) * 3);
+        let big = Q::from(pow10(400) * UBig::from(3u8));
         assert_eq!(significant(&big, 4), "3e400");
     }
 
@@ -350,5 +386,18 @@ mod tests {
             "1.4142135623730950488"
         );
         assert_eq!(sqrt(&q(9, 4), 10), q(3, 2));
+        // Long and huge operands: only the digits asked for are computed, truncated.
+        let big = Q::from(pow10(4000) * UBig::from(2u8));
+        assert_eq!(
+            significant(&sqrt(&big, 25), 20),
+            "1.4142135623730950488e2000"
+        );
+        let small = Q::from_parts(IBig::from(2), pow10(4000));
+        assert_eq!(
+            significant(&sqrt(&small, 25), 20),
+            "1.4142135623730950488e-2000"
+        );
+        let long = Q::from_parts(IBig::from(pow10(3001)) + IBig::ONE, pow10(3000));
+        assert_eq!(significant(&sqrt(&long, 25), 20), "3.1622776601683793319");
     }
 }

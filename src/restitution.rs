@@ -46,7 +46,7 @@ impl Restitution {
     /// (energy released); `dissipative` refuses them where a model cannot have them.
     pub fn new(n: Number) -> Result<Restitution, RestitutionError> {
         let v = n.value();
-        let zero = num_rational::BigRational::from_integer(0.into());
+        let zero = crate::rational::int(0);
         if v.is_finite() && v >= 0.0 && (v != 0.0 || n.exact() >= zero) {
             Ok(Restitution(n))
         } else {
@@ -74,7 +74,7 @@ impl Restitution {
 
     /// Exactly 1 as typed (`0.99999999999999999999999` is not, though it rounds to 1).
     pub fn is_elastic(&self) -> bool {
-        self.value() == 1.0 && self.0.exact() == num_rational::BigRational::from_integer(1.into())
+        self.value() == 1.0 && self.0.exact() == crate::rational::int(1)
     }
 
     /// `FromStr`, then `dissipative`'s check (a command-line parser for `collide track`).
@@ -85,14 +85,12 @@ impl Restitution {
 
     /// Above 1 as typed (`1.0000000000000001` is, though it rounds to 1): energy is released.
     pub fn is_superelastic(&self) -> bool {
-        self.value() > 1.0
-            || (self.value() == 1.0
-                && self.0.exact() > num_rational::BigRational::from_integer(1.into()))
+        self.value() > 1.0 || (self.value() == 1.0 && self.0.exact() > crate::rational::int(1))
     }
 
     /// Exactly 0 as typed.
     pub fn is_totally_inelastic(&self) -> bool {
-        self.value() == 0.0 && self.0.exact() == num_rational::BigRational::from_integer(0.into())
+        self.value() == 0.0 && self.0.exact() == crate::rational::int(0)
     }
 
     /// The lecture's name for the collision.

@@ -5,13 +5,11 @@
 //! `KE_FIN - KE_IN = 1/2 mu (f1 - f2)^2` with `mu = m1 m2 / (m1 + m2)`, since the centre of mass
 //! keeps `KE_COM = KE_IN`. Everything is exact: the values come from the solved problem.
 
-use num_rational::BigRational;
+use crate::rational::Q;
 
 use crate::changes::{Changes, Event};
 use crate::number::Number;
 use crate::units::Units;
-
-type Q = BigRational;
 
 /// A separation from a common velocity.
 #[derive(Clone, Debug, PartialEq)]
@@ -25,7 +23,7 @@ pub struct Separation {
 }
 
 fn half() -> Q {
-    Q::new(1.into(), 2.into())
+    crate::rational::ratio(1, 2)
 }
 
 impl Separation {

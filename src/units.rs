@@ -3,7 +3,7 @@
 //! all masses share one and all velocities share one; otherwise (or with `--si`) everything is
 //! converted exactly to kg and m/s.
 
-use num_rational::BigRational;
+use crate::rational::Q;
 
 use crate::number::{FieldsError, Given, Number, NumberError, split_fields};
 
@@ -42,7 +42,7 @@ impl Unit {
     pub fn name(&self) -> &'static str {
         self.names[0]
     }
-    pub fn si(&self) -> BigRational {
+    pub fn si(&self) -> Q {
         self.si
             .parse::<Number>()
             .map(|n| n.exact())
@@ -188,12 +188,10 @@ pub const UNITS: &[Unit] = &[
 
 /// A duration in seconds, exactly: `2 ms`, `0.5 s`, or a bare number of seconds; it must be
 /// above 0 (`--contact-time`).
-pub fn seconds(text: &str) -> Result<BigRational, QuantityError> {
+pub fn seconds(text: &str) -> Result<Q, QuantityError> {
     let q = parse(text, Dimension::Time)?;
-    let s = q.number.exact()
-        * q.unit
-            .map_or_else(|| BigRational::from_integer(1.into()), Unit::si);
-    if s <= BigRational::from_integer(0.into()) {
+    let s = q.number.exact() * q.unit.map_or_else(|| crate::rational::int(1), Unit::si);
+    if s <= crate::rational::int(0) {
         return Err(QuantityError::NotPositive(text.trim().to_string()));
     }
     Ok(s)
@@ -322,12 +320,12 @@ impl Quantity {
     /// A height as the speed of a fall from rest through it (or needed to rise it),
     /// `sqrt(2 g h)` in m/s with the height's sign: `2 g h` exact, rounded once, then a correctly
     /// rounded square root (within an ulp of the exact speed). Other quantities as they are.
-    pub fn with_gravity(&self, g: &BigRational) -> Result<Quantity, NumberError> {
+    pub fn with_gravity(&self, g: &Q) -> Result<Quantity, NumberError> {
         if !self.height {
             return Ok(self.clone());
         }
         let h = self.number.exact();
-        let two_gh = BigRational::from_integer(2.into()) * g * num_traits::Signed::abs(&h);
+        let two_gh = crate::rational::int(2) * g * num_traits::Signed::abs(&h);
         let speed = crate::quantity::to_f64(&two_gh)
             .map(f64::sqrt)
             .ok_or_else(|| {
@@ -337,7 +335,7 @@ impl Quantity {
                     crate::quantity::significant(g, 15)
                 ))
             })?;
-        let speed = if h < BigRational::from_integer(0.into()) {
+        let speed = if h < crate::rational::int(0) {
             -speed
         } else {
             speed
@@ -354,8 +352,8 @@ impl Quantity {
 /// the case's velocity unit in m/s (1 when velocities have no unit: they are taken as m/s).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct HeightScale {
-    pub g: BigRational,
-    pub velocity_si: BigRational,
+    pub g: Q,
+    pub velocity_si: Q,
     /// Whether the velocities had no unit (so were taken as m/s).
     pub assumed: bool,
 }
@@ -377,18 +375,18 @@ impl HeightScale {
             .and_then(|n| lookup(n, Dimension::Velocity).ok());
         HeightScale {
             g,
-            velocity_si: unit.map_or_else(|| BigRational::from_integer(1.into()), Unit::si),
+            velocity_si: unit.map_or_else(|| crate::rational::int(1), Unit::si),
             assumed: unit.is_none(),
         }
     }
     /// `v^2 / 2g` in metres, exact.
-    pub fn height(&self, v: &BigRational) -> BigRational {
+    pub fn height(&self, v: &Q) -> Q {
         let v = v * &self.velocity_si;
-        &v * &v / (BigRational::from_integer(2.into()) * &self.g)
+        &v * &v / (crate::rational::int(2) * &self.g)
     }
     /// `g` as a decimal.
     pub fn g_text(&self) -> String {
-        crate::quantity::terminating_decimal(&self.g)
+        crate::quantity::terminating_decimal(&self.g, usize::MAX)
             .unwrap_or_else(|| crate::quantity::fraction(&self.g))
     }
 }
@@ -402,11 +400,9 @@ fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
     let rest = rest.strip_prefix("height")?;
     Some((|| {
         let q = parse(rest, Dimension::Length)?;
-        let unit = q
-            .unit
-            .map_or_else(|| BigRational::from_integer(1.into()), Unit::si);
+        let unit = q.unit.map_or_else(|| crate::rational::int(1), Unit::si);
         let metres = q.number.exact() * unit;
-        if metres < BigRational::from_integer(0.into()) {
+        if metres < crate::rational::int(0) {
             return Err(QuantityError::NegativeHeight(t.to_string()));
         }
         let text = format!("{sign}{}", crate::quantity::fraction(&metres));
@@ -567,11 +563,11 @@ impl Units {
 
     /// The factor from the case's energy unit (mass unit x velocity unit^2) to the printed one,
     /// exact: `None` when energies are printed in the case's own unit.
-    pub fn energy_scale(&self) -> Option<BigRational> {
+    pub fn energy_scale(&self) -> Option<Q> {
         let unit = self.energy_as?;
         let si = |name: Option<&str>, d: Dimension| {
             name.and_then(|n| lookup(n, d).ok())
-                .map_or_else(|| BigRational::from_integer(1.into()), Unit::si)
+                .map_or_else(|| crate::rational::int(1), Unit::si)
         };
         let m = si(self.mass, Dimension::Mass);
         let v = si(self.velocity, Dimension::Velocity);
@@ -693,7 +689,7 @@ pub fn resolve(
                     let si = q.number.exact()
                         * q.unit
                             .map(Unit::si)
-                            .unwrap_or_else(|| BigRational::from_integer(1.into()));
+                            .unwrap_or_else(|| crate::rational::int(1));
                     // A decimal when the converted value has one (10 g is 0.01 kg, not 1/100).
                     Ok(Given::Known(crate::quantity::number_of(&si)?))
                 }

@@ -10,10 +10,8 @@
 
 use std::fmt;
 
-use num_rational::BigRational;
+use crate::rational::Q;
 use num_traits::{One, Signed, Zero};
-
-type Q = BigRational;
 
 /// One of the two laws, as a residual of all seven values.
 type Law = fn(&[Q; 7]) -> Q;

@@ -6,15 +6,13 @@
 //! `(1 - e^2)` of it; the wall's kinetic energy and the centre of mass mean nothing, and are
 //! left out. Everything is exact from the typed values, rounded once when printed.
 
-use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use crate::rational::Q;
+use num_traits::{One, Signed};
 
 use crate::number::Number;
 use crate::restitution::Restitution;
 use crate::units::Units;
 use crate::unknowns::{UnknownError, Var};
-
-type Q = BigRational;
 
 /// A ball against a wall.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,7 +27,7 @@ pub struct WallCase {
 }
 
 fn half() -> Q {
-    Q::new(1.into(), 2.into())
+    crate::rational::ratio(1, 2)
 }
 
 impl WallCase {

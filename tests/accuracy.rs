@@ -11,10 +11,10 @@ use std::collections::BTreeMap;
 
 use collide::accuracy::{Family, families, ulps};
 use collide::quantity::{Exact, from_f64, to_f64};
+use collide::rational::Q;
 use collide::report::{Report, Section, Sections};
 use collide::solver::binary64::Binary64;
 use collide::solver::exact::ExactCollision;
-use num_rational::BigRational;
 use num_traits::Signed;
 
 /// The stated bounds, in ulps (README "Accuracy"). Measured worst cases (printed by
@@ -27,7 +27,7 @@ const FROM_FIN_ULPS: f64 = 2.0;
 /// Ellipse radii `sqrt(2 KE) / sqrt(lambda)`.
 const RADIUS_ULPS: f64 = 3.0;
 
-fn q(x: &Exact) -> BigRational {
+fn q(x: &Exact) -> Q {
     x.rational().clone()
 }
 
@@ -50,7 +50,7 @@ impl Worst {
 }
 
 /// Looks up a JSON path such as `products.outer_in_fin[0][1]` in an exact report.
-fn exact_at(x: &Report<Exact>, path: &str) -> BigRational {
+fn exact_at(x: &Report<Exact>, path: &str) -> Q {
     let v = serde_json::to_value(x).unwrap();
     let mut node = &v;
     for part in path.split(['.', '[']) {
@@ -63,7 +63,7 @@ fn exact_at(x: &Report<Exact>, path: &str) -> BigRational {
     // Exact values are "p/q" or "p".
     let text = node.as_str().unwrap();
     let (n, d) = text.split_once('/').unwrap_or((text, "1"));
-    BigRational::new(n.parse().unwrap(), d.parse().unwrap())
+    Q::from_parts_signed(n.parse().unwrap(), d.parse().unwrap())
 }
 
 fn measure(f: &Family, worst: &mut Worst) {

@@ -512,6 +512,42 @@ fn long_numbers_within_the_limits_work_and_beyond_are_refused_at_once() {
 }
 
 #[test]
+fn a_thousand_character_exact_case_is_exact() {
+    // The lecture's Fig. 1.3 (m = 4, 1; V = 60, 10; elastic; FIN = 40, 90) seen by an observer
+    // moving at -x, x a 997-digit decimal: every velocity gains x (Galilean invariance), so
+    // FIN = (40 + x, 90 + x) exactly and the crunch is still 1000. x's last digit is 7, so each
+    // velocity's fraction N / 10^997 is already in lowest terms and its digits are known.
+    let mut state = 2026u64;
+    let mut digits: String = (0..996)
+        .map(|_| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            char::from(b'0' + ((state >> 33) % 10) as u8)
+        })
+        .collect();
+    digits.push('7');
+    let v = format!("60.{digits},10.{digits}");
+    assert_eq!(
+        v.split(',').next().unwrap().len(),
+        1000,
+        "the --exact limit"
+    );
+    let (code, out, err) = run(&[
+        "solve", "-m", "4,1", "-v", &v, "-e", "1", "--exact", "--format", "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let den = format!("1{}", "0".repeat(997));
+    let at = |int: &str| format!("{int}{digits}/{den}");
+    assert_eq!(json["fin"][0], at("40"));
+    assert_eq!(json["fin"][1], at("90"));
+    assert_eq!(json["v_com"], at("50"));
+    assert_eq!(json["energy"]["crunch"], "1000");
+    assert_eq!(json["energy"]["lost"], "0");
+}
+
+#[test]
 fn a_scene_draws_only_beside_itself_and_replaces_only_svg() {
     let dir = std::env::temp_dir().join(format!("collide-plot-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

@@ -17,7 +17,7 @@ pub mod wall;
 
 use std::collections::BTreeSet;
 
-use num_rational::BigRational;
+use crate::rational::Q;
 use serde::{Deserialize, Serialize};
 
 use crate::case::Case;
@@ -100,11 +100,11 @@ impl Section {
 pub struct Sections {
     set: BTreeSet<Section>,
     /// The contact time in seconds, for the average forces of `changes` (`--contact-time`).
-    pub contact_time: Option<BigRational>,
+    pub contact_time: Option<Q>,
     /// `g` and the velocity unit, for `heights`.
     pub heights: Option<crate::units::HeightScale>,
     /// The factor from the case's energy unit to the printed one (`--energy-unit`).
-    pub energy_scale: Option<BigRational>,
+    pub energy_scale: Option<Q>,
 }
 
 impl Sections {
@@ -235,7 +235,7 @@ pub struct Energy<N = f64> {
 
 impl<N: Scalar> Energy<N> {
     /// Every energy times `q` (a change of unit).
-    pub fn scaled(self, q: &BigRational) -> Energy<N> {
+    pub fn scaled(self, q: &Q) -> Energy<N> {
         let s = |x: N| x.scale(q);
         Energy {
             ke_in: s(self.ke_in),
@@ -297,10 +297,10 @@ pub struct ChangeReport<N = f64> {
 impl<N: Scalar> ChangeReport<N> {
     /// The exact changes in this report's arithmetic (each rounded once in binary64), energies
     /// times `energy_scale` (a change of unit).
-    pub fn of(c: &Changes, energy_scale: Option<&BigRational>) -> ChangeReport<N> {
-        let one = |q: &BigRational| N::of_rational(q);
-        let two = |p: &[BigRational; 2]| [one(&p[0]), one(&p[1])];
-        let energy = |p: &[BigRational; 2]| match energy_scale {
+    pub fn of(c: &Changes, energy_scale: Option<&Q>) -> ChangeReport<N> {
+        let one = |q: &Q| N::of_rational(q);
+        let two = |p: &[Q; 2]| [one(&p[0]), one(&p[1])];
+        let energy = |p: &[Q; 2]| match energy_scale {
             Some(k) => [one(&(&p[0] * k)), one(&(&p[1] * k))],
             None => two(p),
         };
@@ -543,7 +543,7 @@ impl<N: Scalar> Report<N> {
                 .map(|h| {
                     let x = c.exact();
                     let f = x.v_fin_q();
-                    let one = |v: &BigRational| N::of_rational(&h.height(v));
+                    let one = |v: &Q| N::of_rational(&h.height(v));
                     Heights {
                         g: N::of_rational(&h.g),
                         at_in: [one(&x.v[0]), one(&x.v[1])],

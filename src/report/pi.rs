@@ -1,6 +1,6 @@
 //! `collide pi N`: the exact count, the digits of pi it spells, and the simulation against it.
 
-use num_bigint::BigUint;
+use crate::rational::UBig;
 use serde_json::json;
 
 use super::text::Block;
@@ -10,13 +10,13 @@ use crate::track::{Stop, TrackReport};
 /// The count for mass ratio 100^N, and the simulation when one ran.
 pub struct Pi {
     pub n: u32,
-    pub count: BigUint,
+    pub count: UBig,
     /// The run, and its wall-clock time in seconds.
     pub simulation: Option<(TrackReport, f64)>,
 }
 
 impl Pi {
-    pub fn new(n: u32, count: BigUint, simulation: Option<(TrackReport, f64)>) -> Pi {
+    pub fn new(n: u32, count: UBig, simulation: Option<(TrackReport, f64)>) -> Pi {
         Pi {
             n,
             count,
@@ -43,7 +43,7 @@ impl Pi {
         if let Some((r, seconds)) = &self.simulation {
             v["simulation"] = json!({
                 "collisions": r.run.collisions,
-                "agrees": r.run.stop == Stop::Done && BigUint::from(r.run.collisions) == self.count,
+                "agrees": r.run.stop == Stop::Done && UBig::from(r.run.collisions) == self.count,
                 "seconds": seconds,
                 "ns_per_collision": seconds * 1e9 / r.run.collisions.max(1) as f64,
                 "energy_drift": (r.run.energy.end - r.run.energy.start) / r.run.energy.start,
@@ -67,7 +67,7 @@ impl Pi {
         );
         b.row("pi", self.as_pi(), "the count's digits");
         if let Some((r, seconds)) = &self.simulation {
-            let agrees = r.run.stop == Stop::Done && BigUint::from(r.run.collisions) == self.count;
+            let agrees = r.run.stop == Stop::Done && UBig::from(r.run.collisions) == self.count;
             b.row(
                 "simulated",
                 r.run.collisions.to_string(),

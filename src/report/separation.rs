@@ -53,10 +53,10 @@ impl<N: Scalar> SeparationReport<N> {
     /// The sections of `sections` that mean something for a separation; each value exact, and
     /// rounded once in binary64.
     pub fn new(s: &Separation, sections: &Sections) -> SeparationReport<N> {
-        let one = |q: &num_rational::BigRational| N::of_rational(q);
-        let two = |p: &[num_rational::BigRational; 2]| [one(&p[0]), one(&p[1])];
+        let one = |q: &crate::rational::Q| N::of_rational(q);
+        let two = |p: &[crate::rational::Q; 2]| [one(&p[0]), one(&p[1])];
         let has = |x| sections.contains(x);
-        let energy = |q: &num_rational::BigRational| match &sections.energy_scale {
+        let energy = |q: &crate::rational::Q| match &sections.energy_scale {
             Some(k) => one(&(q * k)),
             None => one(q),
         };

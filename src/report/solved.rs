@@ -1,8 +1,7 @@
 //! What a homework problem's unknowns came out as (`Solved: v1 = 60, e = 1`), the laws checked
 //! rather than used, and the units: the lines and JSON keys `solve` and scenes add to a report.
 
-use num_rational::BigRational;
-use num_traits::Zero;
+use crate::rational::Q;
 use serde_json::{Map, Value};
 
 use crate::number::num;
@@ -12,7 +11,7 @@ use crate::unknowns::Solved;
 
 /// `Solved: ...` and `Check: ...` lines, then a blank line.
 pub fn text(s: &Solved, exact: bool) -> String {
-    let show = |q: &BigRational| {
+    let show = |q: &Q| {
         if exact {
             Exact::Rational(q.clone()).show()
         } else {
@@ -68,7 +67,7 @@ pub fn annotate(json: &mut Value, units: &Units, solved: Option<&Solved>, exact:
     let Some(s) = solved else {
         return;
     };
-    let value = |q: &BigRational| {
+    let value = |q: &Q| {
         if exact {
             Value::String(fraction(q))
         } else {

@@ -4,15 +4,13 @@
 //! `momentum {in, fin}`, `energy {in, fin, crunch, lost | released}`, `changes {dv, impulse,
 //! lost_fraction, average_force}` (the ball's), `heights {in, fin}` (the ball's).
 
-use num_rational::BigRational;
+use crate::rational::Q;
 use serde::Serialize;
 
 use super::text::{Block, header_units, pair, typed};
 use super::{Section, Sections};
 use crate::quantity::Scalar;
 use crate::wall::WallCase;
-
-type Q = BigRational;
 
 /// A wall case's numbers. Field names are the JSON schema.
 #[derive(Clone, Debug, Serialize, PartialEq)]

@@ -190,7 +190,7 @@ impl Solver for Binary64<'_> {
             // factor 1 - e^2 exactly from the typed value, rounded once, so the energy printed
             // agrees with the label.
             let x = self.lab.restitution.number().exact();
-            let factor = num_rational::BigRational::from_integer(1.into()) - &x * &x;
+            let factor = crate::rational::int(1) - &x * &x;
             let factor = crate::quantity::to_f64(&factor).unwrap_or(0.0);
             return (Dd::new(factor) * self.crunch_dd()).value();
         }

@@ -1,10 +1,10 @@
 //! Exact arithmetic (`--exact`, and the reference every accuracy test measures against): every
-//! rational quantity as a `BigRational`, by the lecture's formulas taken literally, since exact
+//! rational quantity as a `Q`, by the lecture's formulas taken literally, since exact
 //! arithmetic needs no care about cancellation. Irrational quantities (ellipse radii and, for a
 //! general tensor, its axes) are computed from the exact energies to well past
 //! `APPROX_DIGITS` digits and marked approximate.
 
-use num_rational::BigRational;
+use crate::rational::Q;
 use num_traits::{One, Signed, Zero};
 
 use crate::case::Case;
@@ -13,8 +13,6 @@ use crate::ellipse::Ellipse;
 use crate::frame::Frame;
 use crate::quantity::{APPROX_DIGITS, Exact, from_f64, sqrt};
 use crate::solver::{Lab, Pair, Solver};
-
-type Q = BigRational;
 
 /// Digits carried inside irrational computations before the final truncation.
 const WORK_DIGITS: usize = APPROX_DIGITS + 20;
@@ -33,7 +31,7 @@ pub struct ExactCollision {
 }
 
 fn half() -> Q {
-    Q::new(1.into(), 2.into())
+    crate::rational::ratio(1, 2)
 }
 
 fn r(q: Q) -> Exact {
@@ -168,8 +166,8 @@ impl ExactCollision {
     /// `lambda_min = det / lambda_max` avoids the cancellation in `(tr - sqrt(disc)) / 2`.
     fn principal_axes(&self) -> [(Q, Pair<Q>); 2] {
         let tr = &self.a + &self.b;
-        let disc = (&self.a - &self.b) * (&self.a - &self.b)
-            + Q::from_integer(4.into()) * &self.c * &self.c;
+        let disc =
+            (&self.a - &self.b) * (&self.a - &self.b) + crate::rational::int(4) * &self.c * &self.c;
         let l_max = (&tr + sqrt(&disc, WORK_DIGITS)) * half();
         let l_min = self.det() / &l_max;
         let axis = |l: &Q| {
@@ -241,7 +239,7 @@ impl Solver for ExactCollision {
         r(self.lost_q())
     }
     fn ellipse(&self, ke: &Exact) -> Ellipse<Exact> {
-        let two_ke = ke.rational() * Q::from_integer(2.into());
+        let two_ke = ke.rational() * crate::rational::int(2);
         let radius = |l: &Q| Exact::Approx(sqrt(&(&two_ke / l), WORK_DIGITS));
         if self.c.is_zero() {
             return Ellipse {

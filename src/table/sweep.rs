@@ -9,8 +9,8 @@
 use std::fmt;
 use std::str::FromStr;
 
-use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use crate::rational::{IBig, Q, UBig, pow10, to_f64};
+use num_traits::ToPrimitive;
 
 use super::row::ValueProblem;
 use crate::inertia::Mass;
@@ -85,16 +85,16 @@ pub enum Values {
     /// `FROM:TO:COUNT`, exact rational steps; `fast` is `(A, B, D)` with the i-th value
     /// `(A + B i) / D` when these fit in 128-bit integers.
     Linear {
-        from: BigRational,
-        to: BigRational,
+        from: Q,
+        to: Q,
         count: u64,
         fast: Option<(i128, i128, i128)>,
         stored: Vec<f64>,
     },
     /// `FROM:TO:COUNT:log`; `decades` is `K` when `TO/FROM = 10^K` exactly.
     Log {
-        from: BigRational,
-        to: BigRational,
+        from: Q,
+        to: Q,
         decades: Option<i64>,
         count: u64,
         stored: Vec<f64>,
@@ -151,9 +151,9 @@ fn store(count: u64, value: impl Fn(u64) -> f64) -> Vec<f64> {
 }
 
 /// `(A, B, D)` such that `FROM + i (TO - FROM)/(COUNT - 1) = (A + B i) / D`, in i128.
-fn linear_fast(from: &BigRational, to: &BigRational, count: u64) -> Option<(i128, i128, i128)> {
-    let (p1, q1) = (from.numer().to_i128()?, from.denom().to_i128()?);
-    let (p2, q2) = (to.numer().to_i128()?, to.denom().to_i128()?);
+fn linear_fast(from: &Q, to: &Q, count: u64) -> Option<(i128, i128, i128)> {
+    let (p1, q1) = (from.numerator().to_i128()?, from.denominator().to_i128()?);
+    let (p2, q2) = (to.numerator().to_i128()?, to.denominator().to_i128()?);
     let steps = i128::from(count.max(2) - 1);
     let a = p1.checked_mul(q2)?.checked_mul(steps)?;
     let b = p2.checked_mul(q1)?.checked_sub(p1.checked_mul(q2)?)?;
@@ -165,15 +165,9 @@ fn linear_fast(from: &BigRational, to: &BigRational, count: u64) -> Option<(i128
 
 /// The i-th linear value, rounded once. With `(A + B i) / D` in integers below 2^53, one binary64
 /// division is the correctly rounded quotient; otherwise exact rationals decide.
-fn linear(
-    from: &BigRational,
-    to: &BigRational,
-    count: u64,
-    fast: Option<(i128, i128, i128)>,
-    i: u64,
-) -> f64 {
+fn linear(from: &Q, to: &Q, count: u64, fast: Option<(i128, i128, i128)>, i: u64) -> f64 {
     if count == 1 {
-        return from.to_f64().unwrap_or(f64::NAN);
+        return to_f64(from).unwrap_or(f64::NAN);
     }
     const EXACT: i128 = 1 << 53;
     if let Some((a, b, d)) = fast {
@@ -187,14 +181,14 @@ fn linear(
             return n as f64 / d as f64;
         }
     }
-    let step = (to - from) * BigRational::new(i.into(), (count - 1).into());
-    (from + step).to_f64().unwrap_or(f64::NAN)
+    let step = (to - from) * Q::from_parts(i.into(), (count - 1).into());
+    to_f64(&(from + step)).unwrap_or(f64::NAN)
 }
 
 /// `FROM (TO/FROM)^(i/(COUNT-1))`. When `TO/FROM = 10^K` and `iK/(COUNT-1)` is whole, the value
 /// is `FROM 10^(iK/(COUNT-1))` exactly; otherwise it is rounded to 15 significant digits.
-fn log(from: &BigRational, to: &BigRational, decades: Option<i64>, count: u64, i: u64) -> f64 {
-    let f = |q: &BigRational| q.to_f64().unwrap_or(f64::NAN);
+fn log(from: &Q, to: &Q, decades: Option<i64>, count: u64, i: u64) -> f64 {
+    let f = |q: &Q| to_f64(q).unwrap_or(f64::NAN);
     if i == 0 || count == 1 {
         return f(from);
     }
@@ -204,10 +198,7 @@ fn log(from: &BigRational, to: &BigRational, decades: Option<i64>, count: u64, i
     let steps = (count - 1) as i64;
     if let Some(k) = decades.filter(|k| (i as i64 * k) % steps == 0) {
         let j = i as i64 * k / steps;
-        let p = BigRational::from_integer(num_traits::pow(
-            num_bigint::BigInt::from(10),
-            j.unsigned_abs() as usize,
-        ));
+        let p = Q::from(pow10(j.unsigned_abs() as usize));
         return f(&if j >= 0 { from * p } else { from / p });
     }
     if let Some(k) = decades {
@@ -225,10 +216,7 @@ fn log(from: &BigRational, to: &BigRational, decades: Option<i64>, count: u64, i
                 a / 10f64.powi(-whole as i32)
             }
         } else {
-            let p = BigRational::from_integer(num_traits::pow(
-                num_bigint::BigInt::from(10),
-                whole.unsigned_abs() as usize,
-            ));
+            let p = Q::from(pow10(whole.unsigned_abs() as usize));
             f(&if whole >= 0 { from * p } else { from / p })
         };
         let x = base * 10f64.powf(rem as f64 / steps as f64);
@@ -252,19 +240,19 @@ fn log(from: &BigRational, to: &BigRational, decades: Option<i64>, count: u64, i
 }
 
 /// `K` when `q = 10^K` for a whole `K`.
-fn power_of_ten(q: &BigRational) -> Option<i64> {
-    let ten = num_bigint::BigInt::from(10);
-    let (mut n, mut d) = (q.numer().clone(), q.denom().clone());
+fn power_of_ten(q: &Q) -> Option<i64> {
+    let ten = UBig::from(10u8);
+    let (mut n, mut d) = (q.numerator().clone(), q.denominator().clone());
     let mut k = 0i64;
-    while n > num_bigint::BigInt::from(1) && (&n % &ten).is_zero() {
+    while n > IBig::ONE && (&n % &ten).is_zero() {
         n /= &ten;
         k += 1;
     }
-    while d > num_bigint::BigInt::from(1) && (&d % &ten).is_zero() {
+    while d > UBig::ONE && (&d % &ten).is_zero() {
         d /= &ten;
         k -= 1;
     }
-    (n == 1.into() && d == 1.into()).then_some(k)
+    (n.is_one() && d.is_one()).then_some(k)
 }
 
 /// One `--vary NAME=...`.
@@ -497,7 +485,7 @@ mod tests {
 
     #[test]
     fn the_same_values_whether_stored_or_computed() {
-        let from: BigRational = "0".parse::<Number>().unwrap().exact();
+        let from: Q = "0".parse::<Number>().unwrap().exact();
         let to = "1".parse::<Number>().unwrap().exact();
         assert_eq!(linear(&from, &to, 11, linear_fast(&from, &to, 11), 3), 0.3);
         assert_eq!(linear(&from, &to, 11, None, 3), 0.3);

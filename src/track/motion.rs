@@ -2,8 +2,8 @@
 //! bodies (or a body and a wall) approach, when a gap closes, the impulse a collision gives, and
 //! how positions are put back into contact after rounding.
 
-use num_rational::BigRational;
-use num_traits::{One, ToPrimitive};
+use crate::rational::Q;
+use num_traits::One;
 
 use crate::compensated::{Dd, two_prod, two_sum};
 
@@ -23,15 +23,15 @@ pub fn closing(v1: f64, v2: f64) -> bool {
 
 /// The double-double nearest an exact value: `hi` the nearest binary64, `lo` the nearest to the
 /// rest.
-pub fn dd_of(q: &BigRational) -> Dd {
-    let hi = q.to_f64().unwrap_or(0.0);
+pub fn dd_of(q: &Q) -> Dd {
+    let hi = q.to_f64().value();
     if !hi.is_finite() {
         return Dd::new(hi);
     }
-    let rest = q - BigRational::from_float(hi).unwrap_or_default();
+    let rest = q - crate::rational::from_f64(hi);
     Dd {
         hi,
-        lo: rest.to_f64().unwrap_or(0.0),
+        lo: rest.to_f64().value(),
     }
 }
 
@@ -47,10 +47,10 @@ pub struct Kick {
 }
 
 impl Kick {
-    pub fn new(m1: &BigRational, m2: &BigRational, e: f64) -> Kick {
-        let e_exact = BigRational::from_float(e).unwrap_or_default();
+    pub fn new(m1: &Q, m2: &Q, e: f64) -> Kick {
+        let e_exact = crate::rational::from_f64(e);
         let total = m1 + m2;
-        let k = BigRational::one() + e_exact;
+        let k = Q::one() + e_exact;
         Kick {
             k1: dd_of(&(&k * m1 / &total)),
             k2: dd_of(&(&k * m2 / &total)),

@@ -3,10 +3,9 @@
 
 use dashu_float::FBig;
 use dashu_float::round::mode::HalfEven;
-use dashu_int::IBig;
-use num_bigint::{BigInt, BigUint};
-use num_rational::BigRational;
 use num_traits::One;
+
+use crate::rational::{IBig, Q, UBig};
 use serde::Serialize;
 
 use super::{Run, Stop, Track};
@@ -15,12 +14,8 @@ use super::{Run, Stop, Track};
 /// operation, `sqrt`, `atan` and `pi` included (dashu-float).
 type Big = FBig<HalfEven, 2>;
 
-fn big(n: &BigInt, bits: usize) -> Big {
-    let i: IBig = n
-        .to_string()
-        .parse()
-        .expect("a BigInt prints as an integer");
-    Big::from(i).with_precision(bits).value()
+fn big(n: impl Into<IBig>, bits: usize) -> Big {
+    Big::from(n.into()).with_precision(bits).value()
 }
 
 /// Pi billiards (Galperin 2003): a block of mass `m` at rest between a wall and a block of mass
@@ -31,42 +26,34 @@ fn big(n: &BigInt, bits: usize) -> Big {
 /// - otherwise `pi / theta` is evaluated at `p` bits with five correctly rounded operations
 ///   (relative error below `5 * 2^-p`, under 8 ulps), and `p` doubles from 128 until the ceiling
 ///   is the same at both ends of that interval.
-pub fn pi_count(m: &BigRational, big_m: &BigRational) -> BigUint {
+pub fn pi_count(m: &Q, big_m: &Q) -> UBig {
     let r = m / big_m;
-    let third = BigRational::new(1.into(), 3.into());
-    for (q, k) in [
-        (BigRational::from_integer(3.into()), 2u32),
-        (BigRational::one(), 3),
-        (third, 5),
-    ] {
+    let third = crate::rational::ratio(1, 3);
+    for (q, k) in [(crate::rational::int(3), 2u32), (Q::one(), 3), (third, 5)] {
         if r == q {
-            return BigUint::from(k);
+            return UBig::from(k);
         }
     }
     let mut bits = 128;
     loop {
-        let ratio = big(r.numer(), bits) / big(r.denom(), bits);
+        let ratio = big(r.numerator().clone(), bits) / big(r.denominator().clone(), bits);
         let theta = ratio.sqrt().atan();
         let q = Big::pi(bits) / theta;
         let err = q.ulp() * 8u8;
         let (lo, hi) = ((&q - &err).ceil(), (&q + &err).ceil());
         if lo == hi {
-            let ceil = lo.to_int().value();
-            let count: BigInt = ceil
-                .to_string()
-                .parse()
-                .expect("an IBig prints as an integer");
-            return (count - 1u8).to_biguint().unwrap_or_default();
+            let count = lo.to_int().value() - IBig::ONE;
+            return UBig::try_from(count).unwrap_or_default();
         }
         bits *= 2;
     }
 }
 
 /// `atan(sqrt(m / M))` in binary64.
-pub fn pi_theta(m: &BigRational, big_m: &BigRational) -> f64 {
+pub fn pi_theta(m: &Q, big_m: &Q) -> f64 {
     let r = m / big_m;
     let bits = 64;
-    let ratio = big(r.numer(), bits) / big(r.denom(), bits);
+    let ratio = big(r.numerator().clone(), bits) / big(r.denominator().clone(), bits);
     ratio.sqrt().atan().to_f64().value()
 }
 
@@ -96,7 +83,7 @@ impl TrackReport {
     pub fn new(track: &Track, run: Run) -> TrackReport {
         let pi = track.pi_masses().map(|(m, big_m)| {
             let theory = pi_count(&m, &big_m);
-            let agrees = (run.stop == Stop::Done).then(|| BigUint::from(run.collisions) == theory);
+            let agrees = (run.stop == Stop::Done).then(|| UBig::from(run.collisions) == theory);
             PiTheory {
                 theory: theory.to_string(),
                 theta: pi_theta(&m, &big_m),
@@ -110,7 +97,7 @@ impl TrackReport {
 impl Track {
     /// The masses `(m, M)` if the track is pi billiards: block 1 at rest between a left wall and
     /// block 2 moving toward it, elastic, no gravity, no right wall.
-    pub fn pi_masses(&self) -> Option<(BigRational, BigRational)> {
+    pub fn pi_masses(&self) -> Option<(Q, Q)> {
         let b = &self.bodies;
         let is_pi = b.len() == 2
             && self.left_wall.is_some()
@@ -126,9 +113,9 @@ impl Track {
 
 /// The first `n + 1` digits of the count for the mass ratio `100^n` (which are the first `n + 1`
 /// digits of pi), as `collide pi N` gives them.
-pub fn pi_digits(n: u32) -> BigUint {
-    let big_m = BigRational::from_integer(BigInt::from(100u8).pow(n));
-    pi_count(&BigRational::one(), &big_m)
+pub fn pi_digits(n: u32) -> UBig {
+    let big_m = Q::from(UBig::from(100u8).pow(n as usize));
+    pi_count(&Q::one(), &big_m)
 }
 
 #[cfg(test)]
@@ -147,16 +134,16 @@ mod tests {
 
     #[test]
     fn whole_multiple_ratios_are_exact() {
-        let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-        assert_eq!(pi_count(&q(1, 1), &q(1, 1)), BigUint::from(3u8));
-        assert_eq!(pi_count(&q(1, 1), &q(3, 1)), BigUint::from(5u8));
-        assert_eq!(pi_count(&q(3, 1), &q(1, 1)), BigUint::from(2u8));
-        assert_eq!(pi_count(&q(1, 10), &q(3, 10)), BigUint::from(5u8));
+        let q = crate::rational::ratio;
+        assert_eq!(pi_count(&q(1, 1), &q(1, 1)), UBig::from(3u8));
+        assert_eq!(pi_count(&q(1, 1), &q(3, 1)), UBig::from(5u8));
+        assert_eq!(pi_count(&q(3, 1), &q(1, 1)), UBig::from(2u8));
+        assert_eq!(pi_count(&q(1, 10), &q(3, 10)), UBig::from(5u8));
         // Near a whole multiple the count is the one of the neighbouring angle: theta just above
         // pi/4 (m slightly larger than M) gives pi/theta just below 4: ceil 4, count 3; just
         // below pi/4 gives pi/theta just above 4: count 4.
         let near = q(1_000_000_000_000_000_001, 1_000_000_000_000_000_000);
-        assert_eq!(pi_count(&near, &q(1, 1)), BigUint::from(3u8));
-        assert_eq!(pi_count(&q(1, 1), &near), BigUint::from(4u8));
+        assert_eq!(pi_count(&near, &q(1, 1)), UBig::from(3u8));
+        assert_eq!(pi_count(&q(1, 1), &near), UBig::from(4u8));
     }
 }
