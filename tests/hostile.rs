@@ -517,14 +517,8 @@ fn a_thousand_character_exact_case_is_exact() {
     // moving at -x, x a 997-digit decimal: every velocity gains x (Galilean invariance), so
     // FIN = (40 + x, 90 + x) exactly and the crunch is still 1000. x's last digit is 7, so each
     // velocity's fraction N / 10^997 is already in lowest terms and its digits are known.
-    let mut state = 2026u64;
-    let mut digits: String = (0..996)
-        .map(|_| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            char::from(b'0' + ((state >> 33) % 10) as u8)
-        })
+    let mut digits: String = (0..996u32)
+        .map(|i| char::from_digit(i * i % 7 + i % 3, 10).unwrap())
         .collect();
     digits.push('7');
     let v = format!("60.{digits},10.{digits}");
