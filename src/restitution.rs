@@ -46,8 +46,8 @@ impl Restitution {
     /// (energy released); `dissipative` refuses them where a model cannot have them.
     pub fn new(n: Number) -> Result<Restitution, RestitutionError> {
         let v = n.value();
-        let zero = crate::rational::int(0);
-        if v.is_finite() && v >= 0.0 && (v != 0.0 || n.exact() >= zero) {
+        // A typed -0 or -1e-400 rounds to 0: its exact value decides.
+        if v.is_finite() && v >= 0.0 && (v != 0.0 || n.exact() >= crate::rational::Q::ZERO) {
             Ok(Restitution(n))
         } else {
             Err(RestitutionError::Negative(n.to_string()))

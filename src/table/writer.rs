@@ -115,7 +115,6 @@ impl RowWriter {
 /// parameter), and formatting numbers is most of a table's cost.
 pub struct FieldCache {
     last: Vec<(u64, [u8; 32], u8)>,
-    ryu: ryu::Buffer,
 }
 
 impl FieldCache {
@@ -123,7 +122,6 @@ impl FieldCache {
         // A NaN bit pattern: never equal to a finite value's.
         FieldCache {
             last: vec![(u64::MAX, [0; 32], 0); columns],
-            ryu: ryu::Buffer::new(),
         }
     }
 
@@ -137,10 +135,11 @@ impl FieldCache {
     /// The text of `v` (finite) in column `i`.
     pub fn format(&mut self, i: usize, v: f64) -> &[u8] {
         let (bits, text, len) = &mut self.last[i];
+        debug_assert!(v.is_finite(), "tables hold finite values only");
         if *bits != v.to_bits() {
-            let s = self.ryu.format_finite(v).as_bytes();
-            text[..s.len()].copy_from_slice(s);
-            *len = s.len() as u8;
+            // SAFETY: ryu writes at most 24 bytes (its documented bound), and the slot has 32.
+            // Written in place: through ryu's own buffer, each field was also copied once more.
+            *len = unsafe { ryu::raw::format64(v, text.as_mut_ptr()) } as u8;
             *bits = v.to_bits();
         }
         &text[..*len as usize]
