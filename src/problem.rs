@@ -30,6 +30,9 @@ pub struct Problem {
     pub gravity: Option<Number>,
     /// The unit energies are printed in (`--energy-unit`), when not the case's own.
     pub energy_unit: Option<&'static crate::units::EnergyUnit>,
+    /// Exact arithmetic follows (`--exact`): a velocity typed as a height whose speed
+    /// `sqrt(2 g h)` is irrational is refused, since no rational holds it.
+    pub exact: bool,
 }
 
 /// What a solved problem describes.
@@ -77,6 +80,13 @@ pub enum ProblemError {
     WallBallMass,
     #[error("gravity {0}: expected a number > 0 in m/s^2 (9.80665 standard, 9.8 or 9.81)")]
     Gravity(String),
+    #[error(
+        "the speed of a fall through {height} m, sqrt(2 g h) = sqrt({two_gh}) m/s, is irrational, \
+         and exact arithmetic (--exact, a scene's exact = true) holds rationals only: compute in \
+         binary64 (the speed within an ulp), or choose g and h with 2 g h a square (g = 10, \
+         h = 0.2 m: 2 m/s)"
+    )]
+    IrrationalSpeed { height: String, two_gh: String },
     #[error("{var} = {text}: {error}")]
     Solved {
         var: Var,
@@ -140,14 +150,27 @@ impl Problem {
                 .map(|n| n.exact())
                 .unwrap_or_default(),
         };
-        let velocities = velocities
-            .into_iter()
-            .map(|q| match q {
-                Given::Known(q) => Ok(Given::Known(q.with_gravity(&g)?)),
-                other => Ok(other),
-            })
-            .collect::<Result<Vec<_>, NumberError>>()
-            .map_err(|e| ProblemError::Resolve(e.into()))?;
+        let mut speeds = Vec::with_capacity(velocities.len());
+        for v in velocities {
+            speeds.push(match v {
+                Given::Known(q) => {
+                    let (speed, rational) = q
+                        .with_gravity(&g)
+                        .map_err(|e| ProblemError::Resolve(e.into()))?;
+                    if self.exact && !rational {
+                        let h = num_traits::Signed::abs(&q.number.exact());
+                        let two_gh = crate::rational::int(2) * &g * &h;
+                        return Err(ProblemError::IrrationalSpeed {
+                            height: crate::quantity::significant(&h, 15),
+                            two_gh: crate::quantity::significant(&two_gh, 15),
+                        });
+                    }
+                    Given::Known(speed)
+                }
+                other => other,
+            });
+        }
+        let velocities = speeds;
         let (m, v, units) = resolve(&masses, &velocities, self.si)?;
         let units = match self.energy_unit {
             Some(u) => units.with_energy_unit(u)?,

@@ -33,6 +33,19 @@ pub fn from_f64(x: f64) -> Q {
     Q::try_from(x).unwrap_or_default()
 }
 
+/// `sqrt(q)` when it is rational (`q >= 0` in lowest terms with a square numerator and
+/// denominator), else `None`.
+pub fn sqrt_exact(q: &Q) -> Option<Q> {
+    use dashu_int::ops::{SquareRoot, UnsignedAbs};
+    let root = |n: &UBig| Some(n.sqrt()).filter(|r| &(r * r) == n);
+    if q.numerator() < &IBig::ZERO {
+        return None;
+    }
+    let n = root(&q.numerator().unsigned_abs())?;
+    let d = root(q.denominator())?;
+    Some(Q::from_parts(n.into(), d))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -51,5 +64,19 @@ mod tests {
         assert_eq!(to_f64(&(tiny / int(2))), Some(0.0));
         assert_eq!(to_f64(&Q::from(IBig::from(10u8).pow(309))), None);
         assert_eq!(pow10(3), UBig::from(1000u16));
+    }
+
+    #[test]
+    fn square_roots_are_exact_or_none() {
+        assert_eq!(sqrt_exact(&ratio(9, 4)), Some(ratio(3, 2)));
+        assert_eq!(sqrt_exact(&int(0)), Some(int(0)));
+        assert_eq!(sqrt_exact(&ratio(4, 100)), Some(ratio(1, 5)));
+        assert_eq!(sqrt_exact(&int(2)), None);
+        assert_eq!(sqrt_exact(&ratio(1, 8)), None);
+        assert_eq!(sqrt_exact(&int(-4)), None);
+        // 2 g h with g = 9.80665, h = 2: 39.2266, not a square.
+        assert_eq!(sqrt_exact(&ratio(392266, 10000)), None);
+        let big = Q::from(pow10(1000) + UBig::ONE);
+        assert_eq!(sqrt_exact(&(&big * &big)), Some(big));
     }
 }

@@ -490,6 +490,7 @@ impl Scene {
                 ),
                 None => None,
             },
+            exact: file.exact.unwrap_or(false),
         };
         let span = file
             .masses

@@ -318,14 +318,28 @@ pub const STANDARD_GRAVITY: &str = "9.80665";
 
 impl Quantity {
     /// A height as the speed of a fall from rest through it (or needed to rise it),
-    /// `sqrt(2 g h)` in m/s with the height's sign: `2 g h` exact, rounded once, then a correctly
-    /// rounded square root (within an ulp of the exact speed). Other quantities as they are.
-    pub fn with_gravity(&self, g: &Q) -> Result<Quantity, NumberError> {
+    /// `sqrt(2 g h)` in m/s with the height's sign, and whether that speed is exact: when `2 g h`
+    /// is the square of a rational (g = 10, h = 0.2 m: 2 m/s) the speed is that rational;
+    /// otherwise it is irrational, and `2 g h` is computed exactly, rounded once, then given a
+    /// correctly rounded square root (within an ulp of the exact speed). Other quantities are
+    /// returned as they are (exact).
+    pub fn with_gravity(&self, g: &Q) -> Result<(Quantity, bool), NumberError> {
         if !self.height {
-            return Ok(self.clone());
+            return Ok((self.clone(), true));
         }
         let h = self.number.exact();
         let two_gh = crate::rational::int(2) * g * num_traits::Signed::abs(&h);
+        let negative = h < Q::ZERO;
+        let speed_unit = lookup("m/s", Dimension::Velocity).ok();
+        if let Some(root) = crate::rational::sqrt_exact(&two_gh) {
+            let speed = if negative { -root } else { root };
+            let quantity = Quantity {
+                number: crate::quantity::number_of(&speed)?,
+                unit: speed_unit,
+                height: false,
+            };
+            return Ok((quantity, true));
+        }
         let speed = crate::quantity::to_f64(&two_gh)
             .map(f64::sqrt)
             .ok_or_else(|| {
@@ -335,16 +349,13 @@ impl Quantity {
                     crate::quantity::significant(g, 15)
                 ))
             })?;
-        let speed = if h < crate::rational::int(0) {
-            -speed
-        } else {
-            speed
-        };
-        Ok(Quantity {
+        let speed = if negative { -speed } else { speed };
+        let quantity = Quantity {
             number: Number::from_f64(speed)?,
-            unit: lookup("m/s", Dimension::Velocity).ok(),
+            unit: speed_unit,
             height: false,
-        })
+        };
+        Ok((quantity, false))
     }
 }
 

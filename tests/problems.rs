@@ -289,6 +289,74 @@ fn a_drop_and_a_rebound_give_e() {
 }
 
 #[test]
+fn heights_are_exact_when_their_speed_is_rational_and_refused_by_exact_otherwise() {
+    // g = 10, dropped from 0.2 m, back up to 0.05 m: speeds sqrt(4) = 2 and sqrt(1) = 1, so
+    // e = 1/2 exactly, and the heights are 1/5 and 1/20 m exactly, in both arithmetics.
+    let args = [
+        "-m",
+        "wall,1",
+        "-v",
+        "0,-height 0.2 m",
+        "--fin",
+        "0,height 0.05 m",
+        "--gravity",
+        "10",
+        "--show",
+        "vectors,heights",
+    ];
+    let (code, out, err) = run(&[&args[..], &["--exact", "--format", "json"]].concat());
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["solved"]["e"], "1/2");
+    assert_eq!(j["in"], serde_json::json!(["0", "-2"]));
+    assert_eq!(j["fin"], serde_json::json!(["0", "1"]));
+    assert_eq!(j["heights"]["in"], "1/5");
+    assert_eq!(j["heights"]["fin"], "1/20");
+    let (code, out, err) = run(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(f(&j["solved"]["e"]), 0.5);
+    assert_eq!(f(&j["in"][1]), -2.0);
+    // g = 9.80665 and 2 m: 2 g h = 39.2266 is no square, so the speed is irrational and exact
+    // arithmetic refuses it (it used to compute with the rounded speed and print its fractions
+    // as if exact), for solve and frames alike; binary64 takes it.
+    for cmd in ["solve", "frames"] {
+        let (code, out, err) = common::run(&[
+            cmd,
+            "-m",
+            "1,1",
+            "-v",
+            "-height 2 m,0",
+            "-e",
+            "1",
+            "--exact",
+        ]);
+        assert_eq!(code, 2, "{cmd}: {out}");
+        assert!(out.is_empty(), "{cmd}: {out}");
+        assert!(
+            err.contains("sqrt(39.2266)") && err.contains("irrational") && err.contains("2 m"),
+            "{err}"
+        );
+    }
+    let (code, _, err) = run(&["-m", "1,1", "-v", "-height 2 m,0", "-e", "1"]);
+    assert_eq!(code, 0, "{err}");
+    // The same rule in an exact scene, named with its file.
+    let scene = std::env::temp_dir().join(format!("collide-height-{}.toml", std::process::id()));
+    std::fs::write(
+        &scene,
+        "exact = true\nmasses = [\"wall\", \"1 kg\"]\nvelocities = [\"0\", \"-height 2 m\"]\n",
+    )
+    .unwrap();
+    let (code, out, err) = common::run(&["scene", scene.to_str().unwrap()]);
+    std::fs::remove_file(&scene).unwrap();
+    assert_eq!(code, 2, "{out}");
+    assert!(
+        err.contains("collide-height-") && err.contains("irrational"),
+        "{err}"
+    );
+}
+
+#[test]
 fn a_ballistic_pendulum_gives_the_bullets_speed() {
     // 10 g into 2 kg, they swing up 10 cm together: f = sqrt(2 g 0.1) = sqrt(1.96133), and
     // momentum gives v1 = (0.01 + 2)/0.01 f = 201 f = 281.49545880884...
@@ -366,7 +434,8 @@ fn walls_forward_moving_and_refused() {
             "gravity -9.8",
         ),
         (
-            vec!["-m", "1,1", "-v", "height 2 m,0", "--gravity", "1e308"],
+            // 2 g h = 6e308 is past binary64 and no square (4e308 would be: 2e154 m/s).
+            vec!["-m", "1,1", "-v", "height 3 m,0", "--gravity", "1e308"],
             "sqrt(2 g h)",
         ),
         (

@@ -13,7 +13,7 @@ use super::Outcome;
 use crate::cli::{Format, FramesArgs};
 
 pub fn run(args: FramesArgs) -> Result<Outcome> {
-    let case = args.case.into_case()?;
+    let case = args.case.into_case(args.exact)?;
     let stuck = case.restitution().is_totally_inelastic();
     if args.reverse && stuck {
         return Err(Irreversible.into());

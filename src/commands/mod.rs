@@ -53,8 +53,9 @@ pub fn run(command: Command) -> Result<Outcome> {
 }
 
 impl CaseArgs {
-    /// The typed problem (masses or tensor, velocities, restitution, units).
-    pub fn problem(&self, fin: Option<&collide::units::Pair>) -> Problem {
+    /// The typed problem (masses or tensor, velocities, restitution, units), for exact
+    /// arithmetic or not.
+    pub fn problem(&self, fin: Option<&collide::units::Pair>, exact: bool) -> Problem {
         Problem {
             masses: self.masses.clone(),
             velocities: self.velocities.clone(),
@@ -63,12 +64,14 @@ impl CaseArgs {
             si: self.si,
             gravity: self.gravity.clone(),
             energy_unit: self.energy_unit,
+            exact,
         }
     }
 
-    /// The case, with units resolved; `?` (an unknown) is for `collide solve`.
-    pub fn into_case(self) -> Result<Case> {
-        Ok(self.problem(None).into_case(self.inertia)?)
+    /// The case, with units resolved, for exact arithmetic or not; `?` (an unknown) is for
+    /// `collide solve`.
+    pub fn into_case(self, exact: bool) -> Result<Case> {
+        Ok(self.problem(None, exact).into_case(self.inertia)?)
     }
 }
 

@@ -22,7 +22,7 @@ pub fn run(args: PlotArgs) -> Result<Outcome> {
             format!("{:?}", args.kind).to_lowercase()
         );
     }
-    let case = args.case.into_case()?;
+    let case = args.case.into_case(false)?;
     check_drawable(&case, &args.frame)?;
     let stdout = match (&args.output, args.term) {
         (_, true) => draw(

@@ -18,7 +18,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     }
     let posed = args
         .case
-        .problem(args.fin.as_ref())
+        .problem(args.fin.as_ref(), args.exact)
         .solve(args.case.inertia.clone())?;
     let mut sections = Sections::new(args.show.clone());
     sections.contact_time = args.contact_time.clone();

@@ -13,7 +13,7 @@ use super::Outcome;
 use crate::cli::{BatchArgs, SweepArgs, TableArgs};
 
 pub fn sweep(args: SweepArgs) -> Result<Outcome> {
-    let case = args.case.into_case()?;
+    let case = args.case.into_case(false)?;
     let grid = Grid::new(args.vary, args.max_rows)?;
     run_sweep(&case, &grid, args.shard, &args.table)
 }
