@@ -177,8 +177,31 @@ pub fn fraction(q: &Q) -> String {
 /// A value computed exactly (solved, converted) as a `Number`: its text a decimal when it has a
 /// short one (`1.16`, `0.01`), else its fraction (`5/3`); exact either way.
 pub fn number_of(q: &Q) -> Result<Number, NumberError> {
-    let text = terminating_decimal(q, 40).unwrap_or_else(|| fraction(q));
+    let text = terminating_decimal(q, 40)
+        .or_else(|| scientific(q, 40))
+        .unwrap_or_else(|| fraction(q));
     Number::solved(&text)
+}
+
+/// The exact value in scientific notation (`2e154`, `-1.25e-303`), when it is a terminating
+/// decimal whose notation has at most `max_chars` characters.
+pub fn scientific(q: &Q, max_chars: usize) -> Option<String> {
+    if q.is_zero() {
+        return Some("0".into());
+    }
+    let plain = terminating_decimal(q, usize::MAX)?;
+    let (sign, plain) = match plain.strip_prefix('-') {
+        Some(p) => ("-", p),
+        None => ("", plain.as_str()),
+    };
+    let (int, frac) = plain.split_once('.').unwrap_or((plain, ""));
+    let all = format!("{int}{frac}");
+    let first = all.find(|c| c != '0')?;
+    let digits = all[first..].trim_end_matches('0');
+    let exponent = int.len() as i64 - 1 - first as i64;
+    let (lead, rest) = digits.split_at(1);
+    let dot = if rest.is_empty() { "" } else { "." };
+    Some(format!("{sign}{lead}{dot}{rest}e{exponent}")).filter(|t| t.len() <= max_chars)
 }
 
 /// `fraction(q)` when it has at most `max_chars` characters; decided from the bit lengths first
@@ -363,6 +386,23 @@ mod tests {
             fraction_within(&Q::from(pow10(50)), 51).map(|f| f.len()),
             Some(51)
         );
+    }
+
+    #[test]
+    fn long_terminating_values_in_exact_scientific_notation() {
+        assert_eq!(
+            scientific(&Q::from(pow10(154) * UBig::from(2u8)), 40).as_deref(),
+            Some("2e154")
+        );
+        let tiny = -Q::from_parts(IBig::from(125), pow10(305));
+        assert_eq!(scientific(&tiny, 40).as_deref(), Some("-1.25e-303"));
+        assert_eq!(scientific(&q(1234, 10), 40).as_deref(), Some("1.234e2"));
+        assert_eq!(scientific(&q(1, 3), 40), None);
+        assert_eq!(scientific(&q(1, 1024), 5), None);
+        // A solved or converted value: a short decimal, else exact scientific, else a fraction.
+        assert_eq!(number_of(&q(1, 100)).unwrap().to_string(), "0.01");
+        assert_eq!(number_of(&tiny).unwrap().to_string(), "-1.25e-303");
+        assert_eq!(number_of(&q(5, 3)).unwrap().to_string(), "5/3");
     }
 
     #[test]
