@@ -32,7 +32,7 @@ pub enum Method {
     Quadratic,
     /// nalgebra matrix expressions throughout (P = u.M.V, KE = V.M.V / 2, differences)
     Tensor,
-    /// Q arithmetic, rounded to binary64 at the end
+    /// exact rational arithmetic (`rational::Q`), rounded to binary64 at the end
     Exact,
 }
 
