@@ -8,7 +8,7 @@
 //! Every value is computed in exact rationals from the velocities it describes and rounded once
 //! when printed in binary64: these are a few products per body, and exactness costs microseconds.
 
-use crate::rational::Q;
+use crate::rational::{Q, half};
 use num_traits::Signed;
 
 /// The changes of a two-body event, exact. Per-body energies only for a diagonal tensor (bodies
@@ -33,10 +33,6 @@ pub struct Event<'a> {
     pub tensor: [[&'a Q; 2]; 2],
     pub v_in: &'a [Q; 2],
     pub fin: &'a [Q; 2],
-}
-
-fn half() -> Q {
-    crate::rational::ratio(1, 2)
 }
 
 impl Changes {

@@ -18,6 +18,11 @@ pub fn ratio(n: i64, d: i64) -> Q {
     Q::from_parts_signed(IBig::from(n), IBig::from(d))
 }
 
+/// `1/2`, of kinetic energies `1/2 (m v) v`.
+pub fn half() -> Q {
+    ratio(1, 2)
+}
+
 /// `10^k`.
 pub fn pow10(k: usize) -> UBig {
     UBig::from(10u8).pow(k)

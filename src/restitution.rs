@@ -90,7 +90,7 @@ impl Restitution {
 
     /// Exactly 0 as typed.
     pub fn is_totally_inelastic(&self) -> bool {
-        self.value() == 0.0 && self.0.exact() == crate::rational::int(0)
+        self.value() == 0.0 && self.0.exact() == crate::rational::Q::ZERO
     }
 
     /// The lecture's name for the collision.

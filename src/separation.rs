@@ -5,7 +5,7 @@
 //! `KE_FIN - KE_IN = 1/2 mu (f1 - f2)^2` with `mu = m1 m2 / (m1 + m2)`, since the centre of mass
 //! keeps `KE_COM = KE_IN`. Everything is exact: the values come from the solved problem.
 
-use crate::rational::Q;
+use crate::rational::{Q, half};
 
 use crate::changes::{Changes, Event};
 use crate::number::Number;
@@ -20,10 +20,6 @@ pub struct Separation {
     pub velocities: [Number; 2],
     pub fin: [Q; 2],
     pub units: Units,
-}
-
-fn half() -> Q {
-    crate::rational::ratio(1, 2)
 }
 
 impl Separation {
@@ -70,7 +66,7 @@ impl Separation {
     }
     pub fn changes(&self, contact_time: Option<&Q>) -> Changes {
         let [m1, m2] = self.m();
-        let zero = Q::default();
+        let zero = Q::ZERO;
         let v_in = self.v_in();
         Changes::of(
             &Event {
@@ -100,7 +96,7 @@ mod tests {
             fin: [n("-0.5").exact(), n("10").exact()],
             units: Units::default(),
         };
-        assert_eq!(s.momentum_residual(), Q::default());
+        assert_eq!(s.momentum_residual(), Q::ZERO);
         assert_eq!(s.released(), n("210").exact());
         assert_eq!(s.ke_fin(), n("210").exact());
         let c = s.changes(None);

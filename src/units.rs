@@ -191,7 +191,7 @@ pub const UNITS: &[Unit] = &[
 pub fn seconds(text: &str) -> Result<Q, QuantityError> {
     let q = parse(text, Dimension::Time)?;
     let s = q.number.exact() * q.unit.map_or_else(|| crate::rational::int(1), Unit::si);
-    if s <= crate::rational::int(0) {
+    if s <= Q::ZERO {
         return Err(QuantityError::NotPositive(text.trim().to_string()));
     }
     Ok(s)
@@ -413,7 +413,7 @@ fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
         let q = parse(rest, Dimension::Length)?;
         let unit = q.unit.map_or_else(|| crate::rational::int(1), Unit::si);
         let metres = q.number.exact() * unit;
-        if metres < crate::rational::int(0) {
+        if metres < Q::ZERO {
             return Err(QuantityError::NegativeHeight(t.to_string()));
         }
         let text = format!("{sign}{}", crate::quantity::fraction(&metres));

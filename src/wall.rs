@@ -6,7 +6,7 @@
 //! `(1 - e^2)` of it; the wall's kinetic energy and the centre of mass mean nothing, and are
 //! left out. Everything is exact from the typed values, rounded once when printed.
 
-use crate::rational::Q;
+use crate::rational::{Q, half};
 use num_traits::{One, Signed};
 
 use crate::number::Number;
@@ -24,10 +24,6 @@ pub struct WallCase {
     pub velocities: [Number; 2],
     pub restitution: Restitution,
     pub units: Units,
-}
-
-fn half() -> Q {
-    crate::rational::ratio(1, 2)
 }
 
 impl WallCase {

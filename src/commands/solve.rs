@@ -28,49 +28,13 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         &units,
     ));
     sections.energy_scale = units.energy_scale();
-    let (case, unknowns) = match posed {
+    let (case, unknowns) = match &posed {
         Posed::Collision(case, unknowns) => (case, unknowns),
-        Posed::Separation(..) | Posed::Wall(..) => {
-            let (event, solved) = match &posed {
-                Posed::Separation(s, solved) => (Special::Separation(s), Some(solved)),
-                Posed::Wall(w, solved) => (Special::Wall(w), solved.as_ref()),
-                Posed::Collision(..) => unreachable!("matched above"),
-            };
-            let extra = [
-                (args.frame != collide::frame::Frame::Lab).then_some("--frame"),
-                args.reverse.then_some("--reverse"),
-                args.plot.as_ref().map(|_| "--plot"),
-            ];
-            if let Some(flag) = extra.into_iter().flatten().next() {
-                let what = match event {
-                    Special::Separation(_) => {
-                        "the bodies start together (V1 = V2) and are pushed apart, a separation \
-                         with e undefined"
-                    }
-                    Special::Wall(_) => "one body is a wall (immovable)",
-                };
-                anyhow::bail!("{flag}: {what}; {flag} describes a collision of two movable bodies");
-            }
-            let inconsistent = solved.is_some_and(|s| s.inconsistent());
-            let head = solved
-                .map(|s| solved::text(s, args.exact))
-                .unwrap_or_default();
-            if inconsistent {
-                return Ok(Outcome {
-                    stdout: inconsistent_report(solved.expect("checked"), &units, &args),
-                    status: 1,
-                });
-            }
-            let report = event.render(&sections, &sections, args.exact)?;
-            let stdout = match args.format {
-                Format::Text => head + &report.text,
-                Format::Json => {
-                    let mut json = report.json;
-                    solved::annotate(&mut json, &units, solved, args.exact);
-                    json::render(&json)
-                }
-            };
-            return Ok(Outcome { stdout, status: 0 });
+        Posed::Separation(s, solved) => {
+            return special(Special::Separation(s), Some(solved), &sections, &args);
+        }
+        Posed::Wall(w, solved) => {
+            return special(Special::Wall(w), solved.as_ref(), &sections, &args);
         }
     };
     // Given data that contradict a checked law fail like a failed [expect] (exit 1), and no
@@ -81,11 +45,11 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
             status: 1,
         });
     }
-    let report = AnyReport::of(&case, &args.frame, args.exact, &sections, args.reverse)?;
+    let report = AnyReport::of(case, &args.frame, args.exact, &sections, args.reverse)?;
     let mut stdout = match args.format {
         Format::Text => {
             let head = unknowns.as_ref().map(|s| solved::text(s, args.exact));
-            head.unwrap_or_default() + &report.text(&case, &sections)
+            head.unwrap_or_default() + &report.text(case, &sections)
         }
         Format::Json => {
             let mut json = report.json();
@@ -95,13 +59,58 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     };
     if let Some(target) = &args.plot {
         stdout.push_str(&plot::draw(
-            &case,
+            case,
             &args.frame,
             Kind::Velocity,
             false,
             target,
         )?);
     }
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// A separation or a wall: its own report, and the flags that describe only a collision of two
+/// movable bodies refused.
+fn special(
+    event: Special,
+    solved: Option<&collide::unknowns::Solved>,
+    sections: &Sections,
+    args: &SolveArgs,
+) -> Result<Outcome> {
+    let extra = [
+        (args.frame != collide::frame::Frame::Lab).then_some("--frame"),
+        args.reverse.then_some("--reverse"),
+        args.plot.as_ref().map(|_| "--plot"),
+    ];
+    if let Some(flag) = extra.into_iter().flatten().next() {
+        let what = match event {
+            Special::Separation(_) => {
+                "the bodies start together (V1 = V2) and are pushed apart, a separation with e \
+                 undefined"
+            }
+            Special::Wall(_) => "one body is a wall (immovable)",
+        };
+        anyhow::bail!("{flag}: {what}; {flag} describes a collision of two movable bodies");
+    }
+    let units = event.units();
+    if let Some(s) = solved.filter(|s| s.inconsistent()) {
+        return Ok(Outcome {
+            stdout: inconsistent_report(s, &units, args),
+            status: 1,
+        });
+    }
+    let head = solved
+        .map(|s| solved::text(s, args.exact))
+        .unwrap_or_default();
+    let report = event.render(sections, sections, args.exact)?;
+    let stdout = match args.format {
+        Format::Text => head + &report.text,
+        Format::Json => {
+            let mut json = report.json;
+            solved::annotate(&mut json, &units, solved, args.exact);
+            json::render(&json)
+        }
+    };
     Ok(Outcome { stdout, status: 0 })
 }
 

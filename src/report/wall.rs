@@ -106,7 +106,7 @@ impl<N: Scalar> WallReport<N> {
                 WallChanges {
                     dv: one(&c.dv()),
                     impulse: one(&impulse),
-                    lost_fraction: (!superelastic && crunch > Q::default())
+                    lost_fraction: (!superelastic && crunch > Q::ZERO)
                         .then(|| one(&(&lost / &crunch))),
                     average_force: sections.contact_time.as_ref().map(|t| one(&(&impulse / t))),
                 }

@@ -4,7 +4,7 @@
 //! general tensor, its axes) are computed from the exact energies to well past
 //! `APPROX_DIGITS` digits and marked approximate.
 
-use crate::rational::Q;
+use crate::rational::{Q, half};
 use num_traits::{One, Signed, Zero};
 
 use crate::case::Case;
@@ -28,10 +28,6 @@ pub struct ExactCollision {
     /// `(V_COM, V_FIN, crunch)` once computed: every section reuses them, and each rational
     /// operation on long numbers costs a gcd.
     memo: std::cell::OnceCell<(Q, Pair<Q>, Q)>,
-}
-
-fn half() -> Q {
-    crate::rational::ratio(1, 2)
 }
 
 fn r(q: Q) -> Exact {
