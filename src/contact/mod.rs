@@ -188,7 +188,7 @@ pub struct Settings {
 pub const DEFAULT_MAX_STEPS: u64 = 20_000_000;
 
 /// The default tolerance of the adaptive methods: final velocities within 1e-8 of the initial
-/// relative speed over a run of a few dozen contacts (`tests/contact.rs`).
+/// relative speed over a run of a few dozen contacts (`tests/suite/contact.rs`).
 pub const AUTO_TOL: f64 = 1e-10;
 
 /// The default tolerance where a law is Hertzian: its force grows like d^(3/2) from the

@@ -1,7 +1,7 @@
 //! Every number of physics.md section 5 (lecture Figs. 1.3 and 2.3), from the command line, with
 //! the JSON deserialized into the library's own typed report.
 
-mod common;
+use crate::common;
 
 use collide::report::Report;
 use common::{REL, assert_close, assert_pair, collide};

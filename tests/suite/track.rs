@@ -2,7 +2,7 @@
 //! superball speeds, simultaneous events, the Zeno cut-off, long-run conservation, the log,
 //! bad layouts.
 
-mod common;
+use crate::common;
 
 use collide::inertia::Mass;
 use collide::track::{Body, Limits, Stop, Track};

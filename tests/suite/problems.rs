@@ -3,7 +3,7 @@
 //! forces). Every expected value is exact, derived by hand in the comments; binary64 results are
 //! held to `REL` (4 ulps) of them, `--exact` results to the fraction itself.
 
-mod common;
+use crate::common;
 
 use common::{REL, assert_close, collide};
 use serde_json::Value;

@@ -18,7 +18,7 @@ use collide::solver::exact::ExactCollision;
 use num_traits::Signed;
 
 /// The stated bounds, in ulps (README "Accuracy"). Measured worst cases (printed by
-/// `cargo test --release --test accuracy -- --nocapture`) are 0.5, 1.6 and 1.95 ulps.
+/// `cargo test --release --test suite accuracy -- --nocapture`) are 0.5, 1.6 and 1.95 ulps.
 /// Computed directly in double-double and rounded once: velocities, energies, crunch, lost,
 /// P_IN, P_total, V_IN.M.V_IN, V_COM.M.V_*.
 const DIRECT_ULPS: f64 = 1.0;

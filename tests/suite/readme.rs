@@ -1,8 +1,8 @@
 //! Every README example is real: each ```console block's `$ collide ...` commands are run and
 //! their output (stdout, then stderr) must match the block exactly. To refresh the README after
-//! a deliberate change of output: `UPDATE_README=1 cargo test --test readme`.
+//! a deliberate change of output: `UPDATE_README=1 cargo test --release --test suite readme`.
 
-mod common;
+use crate::common;
 
 use common::collide;
 

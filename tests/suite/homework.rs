@@ -1,7 +1,7 @@
 //! Homework from the shell (issue 8): units, and solving for whatever is unknown. Expected values
 //! are the lecture's (cases A and B) or derived by hand in the comments.
 
-mod common;
+use crate::common;
 
 use common::{collide, stdout};
 use serde_json::Value;

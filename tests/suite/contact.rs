@@ -8,7 +8,7 @@
 //! linear law; Hertz's d_max and the contact-time integral as a Beta function), not taken from
 //! the program.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

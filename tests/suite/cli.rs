@@ -1,7 +1,7 @@
 //! How the binary behaves as a user runs it: what it leaves out, bad input (exit 2, a message
 //! naming the value, nothing on stdout), scene files, JSON schema keys, closed pipes.
 
-mod common;
+use crate::common;
 
 use std::io::Write;
 use std::process::{Command as StdCommand, Stdio};

@@ -1,6 +1,6 @@
 //! Galilean frames and time reversal (lecture Sec. 4, Figs. 2.5 and 3.4), as a user runs them.
 
-mod common;
+use crate::common;
 
 use collide::accuracy::case;
 use collide::frame::Frame;

@@ -1,7 +1,7 @@
 //! `collide completions` and `collide man`: generated from the clap definition, so they must
 //! name every subcommand; the man page must render.
 
-mod common;
+use crate::common;
 
 use common::{collide, stdout};
 

@@ -1,7 +1,7 @@
 //! `collide sweep` and `collide batch` as scripts use them: exact decimal steps, row order,
 //! shards, bad rows with line numbers, --skip-bad, atomic -o, closed pipes, [sweep] scenes.
 
-mod common;
+use crate::common;
 
 use std::io::{Read, Write};
 use std::process::{Command as StdCommand, Stdio};

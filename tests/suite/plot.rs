@@ -2,7 +2,7 @@
 //! data-to-screen map (recorded on the root element), and case A's picture is pinned byte for
 //! byte (it is the README's picture, `examples/case-a.svg`; `UPDATE_SNAPSHOTS=1` refreshes it).
 
-mod common;
+use crate::common;
 
 use common::collide;
 

@@ -2,7 +2,7 @@
 //! values, the same inputs in both modes, JSON that stays JSON, failed consistency checks,
 //! exact expectations, and two-value arrays.
 
-mod common;
+use crate::common;
 
 use common::run;
 

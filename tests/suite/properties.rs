@@ -1,7 +1,7 @@
 //! Property tests over wide ranges (proptest), and a no-panic harness: no input to the number,
 //! mass, velocity, restitution or tensor parsers, nor any scene text, can panic.
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 

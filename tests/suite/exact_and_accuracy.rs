@@ -1,6 +1,6 @@
 //! `--exact`, `exact = true` scenes, `--show diagnostics` and `collide accuracy`, as a user runs them.
 
-mod common;
+use crate::common;
 
 use common::stdout;
 use serde_json::Value;

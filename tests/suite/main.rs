@@ -1,0 +1,20 @@
+//! The integration tests, one crate linked once (a test binary per file linked the library and
+//! its dependencies 17 times): each module is one topic and runs the binary or the library.
+
+mod common;
+
+mod accuracy;
+mod cli;
+mod contact;
+mod exact_and_accuracy;
+mod frames;
+mod homework;
+mod hostile;
+mod lecture;
+mod plot;
+mod problems;
+mod properties;
+mod readme;
+mod shell;
+mod tables;
+mod track;
