@@ -18,7 +18,8 @@ use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
 use collide::table::writer::RowFormat;
-use collide::units::{Dimension, Pair, parse_pair};
+use collide::space::typed::Listed;
+use collide::units::Dimension;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -392,20 +393,42 @@ pub struct AccuracyArgs {
 /// The case: tensor (masses or a general inertia), velocities, restitution.
 #[derive(Args, Debug, Clone)]
 pub struct CaseArgs {
-    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'; '?' for an unknown (solve)
-    #[arg(short, long, value_name = "M1,M2", value_parser = |s: &str| parse_pair(s, Dimension::Mass, "masses M1,M2"),
+    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'; '?' for an unknown (solve);
+    /// more than two bodies: M1,M2,M3,...
+    #[arg(short, long, value_name = "M1,M2", value_parser = |s: &str| Listed::parse(s, Dimension::Mass, "masses M1,M2"),
           allow_hyphen_values = true, required_unless_present = "inertia")]
-    pub masses: Option<Pair>,
+    pub masses: Option<Listed>,
 
     /// A general symmetric positive definite inertia tensor instead of masses, e.g. '4,0.5;0.5,1'
     #[arg(long, value_name = "M11,M12;M21,M22", value_parser = parse_inertia,
           allow_hyphen_values = true, conflicts_with = "masses")]
     pub inertia: Option<InertiaTensor>,
 
-    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'; '?' for an unknown (solve)
-    #[arg(short, long, value_name = "V1,V2", value_parser = |s: &str| parse_pair(s, Dimension::Velocity, "velocities V1,V2"),
+    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'; '?' for an unknown (solve);
+    /// vectors in the plane or in space: '(4,1),(-1,0.5)', '6 m/s @ 30deg,0', '15 m/s @ N30E,?'
+    #[arg(short, long, value_name = "V1,V2", value_parser = |s: &str| Listed::parse(s, Dimension::Velocity, "velocities V1,V2"),
           allow_hyphen_values = true)]
-    pub velocities: Pair,
+    pub velocities: Listed,
+
+    /// The line of impact between bodies 1 and 2 (from 1 to 2): components '(1,1)' (any
+    /// length) or an angle '30deg', 'N30E'; the impulse acts along it (plane and space)
+    #[arg(long, value_name = "N", allow_hyphen_values = true, conflicts_with = "radii",
+          value_parser = |s: &str| s.parse::<collide::space::pose::NormalGiven>())]
+    pub normal: Option<collide::space::pose::NormalGiven>,
+
+    /// Radii of two smooth disks (with --impact-parameter): the line of impact from the geometry
+    #[arg(long, value_name = "R1,R2", requires = "impact_parameter",
+          value_parser = |s: &str| -> Result<[Number; 2], String> {
+              let [a, b] = collide::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
+              Ok([a.parse().map_err(|e: collide::number::NumberError| e.to_string())?,
+                  b.parse().map_err(|e: collide::number::NumberError| e.to_string())?])
+          })]
+    pub radii: Option<[Number; 2]>,
+
+    /// Distance from body 2's centre to the line of body 1's relative motion (positive: to its
+    /// left): sin(phi) = B / (R1 + R2), the line of impact at phi from the relative velocity
+    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "radii")]
+    pub impact_parameter: Option<Number>,
 
     /// Coefficient of restitution e >= 0: 'elastic' (1), 'inelastic' (0), above 1 superelastic (energy released), or '?' (solve)
     /// [default: elastic; unknown when --fin is given]
@@ -433,13 +456,9 @@ pub struct SolveArgs {
     #[command(flatten)]
     pub case: CaseArgs,
 
-    /// Sections to print, comma-separated
-    #[arg(
-        long,
-        value_enum,
-        value_delimiter = ',',
-        default_value = "vectors,forms,energy"
-    )]
+    /// Sections to print, comma-separated [default: vectors,forms,energy; in the plane, in
+    /// space and for N bodies: vectors,energy,angles]
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "SECTIONS")]
     pub show: Vec<Section>,
 
     /// Exact rational arithmetic from the numbers as typed: fractions out, radii to 20 digits
@@ -464,8 +483,8 @@ pub struct SolveArgs {
     /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
     /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest
     #[arg(long, value_name = "F1,F2", allow_hyphen_values = true,
-          value_parser = |s: &str| parse_pair(s, Dimension::Velocity, "final velocities F1,F2"))]
-    pub fin: Option<Pair>,
+          value_parser = |s: &str| Listed::parse(s, Dimension::Velocity, "final velocities F1,F2"))]
+    pub fin: Option<Listed>,
 
     /// Also draw the velocity diagram: to FILE.svg, or 'term' for the terminal
     #[arg(long, value_name = "FILE.svg|term")]

@@ -10,6 +10,7 @@ pub mod pi;
 pub mod scene;
 pub mod separation;
 pub mod solved;
+pub mod space;
 pub mod special;
 pub mod text;
 pub mod track;
@@ -52,6 +53,8 @@ pub enum Section {
     Heights,
     /// Self-check: residuals of momentum and energy conservation, and the solve's run time
     Diagnostics,
+    /// In the plane or in space: the angle between the final velocities, how far each body turned
+    Angles,
     /// Every physics section (not diagnostics, whose timing varies run to run)
     All,
 }
@@ -81,6 +84,7 @@ impl Section {
             Section::Changes => &["changes"],
             Section::Heights => &["heights"],
             Section::Diagnostics => &["diagnostics"],
+            Section::Angles => &["angle_between_deg"],
             Section::All => &[],
         }
     }

@@ -177,8 +177,10 @@ pub struct Contradiction {
 }
 
 /// Solves the linear equations `eqs` (each `c + a.x = 0`) in `n` unknowns exactly; equations
-/// that follow from the others are dropped, one that contradicts them is named.
-pub fn solve_linear(eqs: &[&Poly], n: usize) -> Result<Affine, Contradiction> {
+/// that follow from the others are dropped, one that contradicts them is named. The unknowns in
+/// `last` are eliminated last, so they are the free parameters where any are left (a free
+/// unknown `x_f` has `z_f = 1` in its basis vector: its parameter is its value).
+pub fn solve_linear(eqs: &[&Poly], n: usize, last: &[usize]) -> Result<Affine, Contradiction> {
     // Rows [a | -c], remembering each row's equation.
     let mut rows: Vec<(usize, Vec<Q>, Q)> = eqs
         .iter()
@@ -193,7 +195,10 @@ pub fn solve_linear(eqs: &[&Poly], n: usize) -> Result<Affine, Contradiction> {
         .collect();
     let mut pivots: Vec<usize> = Vec::new();
     let mut r = 0;
-    for col in 0..n {
+    let order = (0..n)
+        .filter(|c| !last.contains(c))
+        .chain(last.iter().copied());
+    for col in order {
         let Some(p) = (r..rows.len()).find(|&i| !rows[i].1[col].is_zero()) else {
             continue;
         };
@@ -225,7 +230,11 @@ pub fn solve_linear(eqs: &[&Poly], n: usize) -> Result<Affine, Contradiction> {
     for (row, &col) in rows.iter().zip(&pivots) {
         x0[col] = row.2.clone();
     }
-    let free: Vec<usize> = (0..n).filter(|c| !pivots.contains(c)).collect();
+    let free: Vec<usize> = (0..n)
+        .filter(|c| !last.contains(c))
+        .chain(last.iter().copied())
+        .filter(|c| !pivots.contains(c))
+        .collect();
     let basis = free
         .iter()
         .map(|&f| {
@@ -238,6 +247,65 @@ pub fn solve_linear(eqs: &[&Poly], n: usize) -> Result<Affine, Contradiction> {
         })
         .collect();
     Ok(Affine { x0, basis })
+}
+
+/// `p(s) = sum c_k s^k` at `s`, exactly.
+pub fn horner(c: &[Q], s: &Q) -> Q {
+    c.iter().rev().fold(Q::ZERO, |acc, ck| acc * s + ck)
+}
+
+/// The real roots of the polynomial `c` (coefficients from the constant up) where it changes
+/// sign, each bracketed on a binary64 grid over the real line (`s = tan(theta/2)`, theta on a
+/// fine grid) and narrowed by exact bisection to a width of `10^-digits` of its size: simple
+/// roots (a double root, a tangency, is not a sign change and is not found).
+pub fn sign_change_roots(c: &[Q], digits: usize) -> Vec<Q> {
+    const GRID: usize = 8192;
+    let f = |s: &Q| horner(c, s);
+    let at = |k: usize| -> Option<Q> {
+        let theta = -std::f64::consts::PI + std::f64::consts::TAU * k as f64 / GRID as f64;
+        let s = (theta / 2.0).tan();
+        s.is_finite().then(|| crate::rational::from_f64(s))
+    };
+    let mut out = Vec::new();
+    let mut prev: Option<(Q, Q)> = None;
+    for k in 1..GRID {
+        let Some(s) = at(k) else { continue };
+        let v = f(&s);
+        if v.is_zero() {
+            out.push(s.clone());
+        } else if let Some((ps, pv)) = &prev
+            && !pv.is_zero()
+            && pv.is_negative() != v.is_negative()
+        {
+            out.push(bisect(&f, ps.clone(), s.clone(), pv.is_negative(), digits));
+        }
+        prev = Some((s, v));
+    }
+    out
+}
+
+/// Exact bisection of `f` on `[lo, hi]` (`f(lo) < 0` when `lo_negative`) to a width of
+/// `10^-digits` times the bracket's size (and at least 1e-300 absolute).
+fn bisect(f: &impl Fn(&Q) -> Q, mut lo: Q, mut hi: Q, lo_negative: bool, digits: usize) -> Q {
+    let size = lo.clone().abs().max(hi.clone().abs()).max(Q::ONE);
+    let width = size / Q::from(crate::rational::pow10(digits));
+    let two = crate::rational::int(2);
+    for _ in 0..2000 {
+        if (&hi - &lo).abs() <= width {
+            break;
+        }
+        let mid = (&lo + &hi) / &two;
+        let v = f(&mid);
+        if v.is_zero() {
+            return mid;
+        }
+        if v.is_negative() == lo_negative {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (lo + hi) / two
 }
 
 /// A root of a quadratic: exact when rational, else to `digits` significant digits.
@@ -317,14 +385,14 @@ mod tests {
         // x + y = 2, 2x + 2y = 4 (dependent): x = 2 - t, y = t.
         let e1 = Poly::var(0).add(&Poly::var(1)).sub(&Poly::constant(int(2)));
         let e2 = e1.scale(&int(2));
-        let s = solve_linear(&[&e1, &e2], 2).unwrap();
+        let s = solve_linear(&[&e1, &e2], 2, &[]).unwrap();
         assert_eq!(s.basis.len(), 1);
         assert_eq!(s.x0, vec![int(2), int(0)]);
         assert_eq!(s.basis[0], vec![int(-1), int(1)]);
         // x + y = 3 contradicts x + y = 2.
         let e3 = Poly::var(0).add(&Poly::var(1)).sub(&Poly::constant(int(3)));
         assert_eq!(
-            solve_linear(&[&e1, &e3], 2),
+            solve_linear(&[&e1, &e3], 2, &[]),
             Err(Contradiction { equation: 1 })
         );
     }

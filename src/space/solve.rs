@@ -365,7 +365,12 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
         }
     }
     let m = b.unknowns.len();
-    let xs = solve_system(&eqs, m)?;
+    // Unknown directions are the free parameters where two are left: their unit circle is then
+    // t0^2 + t1^2 = 1 itself, and rational points on it give roots to 40 digits.
+    let last: Vec<usize> = (0..m)
+        .filter(|&i| matches!(b.unknowns[i], Unknown::Direction(..)))
+        .collect();
+    let xs = solve_system(&eqs, m, &last)?;
     let solutions = xs
         .into_iter()
         .map(|(x, approx)| {
@@ -394,10 +399,12 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
                 .collect();
             let v_in: Vec<Vec<Exact>> = v_in.iter().map(|v| v.iter().map(value).collect()).collect();
             let fin: Vec<Vec<Exact>> = fin.iter().map(|v| v.iter().map(value).collect()).collect();
-            let e = if separation || n != 2 {
+            let e = if separation {
                 None
             } else if let Some(e) = &e_used {
                 Some(value(e))
+            } else if n != 2 {
+                None
             } else {
                 impulse_restitution(&v_in, &fin).map(|q| {
                     if approx { Exact::Approx(q) } else { Exact::Rational(q) }
@@ -439,7 +446,7 @@ fn impulse_restitution(v_in: &[Vec<Exact>], fin: &[Vec<Exact>]) -> Option<Q> {
 
 /// The solutions of the equations in `m` unknowns: the values, and whether they are
 /// approximate (an irrational root).
-fn solve_system(eqs: &[(Law, Poly)], m: usize) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
+fn solve_system(eqs: &[(Law, Poly)], m: usize, last: &[usize]) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
     let mut linear: Vec<&Poly> = eqs
         .iter()
         .filter(|(_, p)| p.is_linear())
@@ -448,7 +455,7 @@ fn solve_system(eqs: &[(Law, Poly)], m: usize) -> Result<Vec<(Vec<Q>, bool)>, So
     let quadratic: Vec<&(Law, Poly)> = eqs.iter().filter(|(_, p)| !p.is_linear()).collect();
     // A linear law that contradicts the others is dropped here and judged as a check.
     let affine = loop {
-        match algebra::solve_linear(&linear, m) {
+        match algebra::solve_linear(&linear, m, last) {
             Ok(a) => break a,
             Err(c) => {
                 linear.remove(c.equation);
@@ -503,7 +510,13 @@ fn solve_system(eqs: &[(Law, Poly)], m: usize) -> Result<Vec<(Vec<Q>, bool)>, So
             if in_t.len() < 2 {
                 return Err(too_few(in_t.len()));
             }
-            let roots = two_parameters(&in_t[0].1, &in_t[1].1)?;
+            let roots = match unit_circle(&in_t) {
+                Some(k) => on_unit_circle(&in_t[1 - k.min(1)].1)
+                    .into_iter()
+                    .map(|t| t.to_vec())
+                    .collect(),
+                None => two_parameters(&in_t[0].1, &in_t[1].1)?,
+            };
             Ok(roots
                 .into_iter()
                 .map(|t| (point(&t), true))
@@ -511,6 +524,49 @@ fn solve_system(eqs: &[(Law, Poly)], m: usize) -> Result<Vec<(Vec<Q>, bool)>, So
         }
         _ => Err(too_few(in_t.len().min(free))),
     }
+}
+
+/// Which of the first two equations in the parameters is the unit circle `t0^2 + t1^2 = 1`
+/// (times a constant).
+fn unit_circle(in_t: &[(Law, Poly)]) -> Option<usize> {
+    in_t.iter().take(2).position(|(_, p)| {
+        let a = p.quad.get(&(0, 0));
+        a.is_some()
+            && p.quad.get(&(1, 1)) == a
+            && !p.quad.contains_key(&(0, 1))
+            && p.lin.is_empty()
+            && a.is_some_and(|a| p.c == -a.clone())
+    })
+}
+
+/// The points of the unit circle where the conic `q(t0, t1) = 0`, from its rational points
+/// `((1 - s^2)/(1 + s^2), 2s/(1 + s^2))`: `(1 + s^2)^2 q` is a quartic in `s` with rational
+/// coefficients, its roots narrowed exactly to 40 digits (the points lie on the circle
+/// exactly); `s = infinity` is the point `(-1, 0)`.
+fn on_unit_circle(q: &Poly) -> Vec<[Q; 2]> {
+    let c = |k: (usize, usize)| q.quad.get(&k).cloned().unwrap_or_default();
+    let l = |k: usize| q.lin.get(&k).cloned().unwrap_or_default();
+    let (a, b, cc, d, e, f) = (c((0, 0)), c((0, 1)), c((1, 1)), l(0), l(1), q.c.clone());
+    let two = Q::from(2);
+    let four = Q::from(4);
+    let coeffs = [
+        &a + &d + &f,
+        &two * (&b + &e),
+        &four * &cc + &two * (&f - &a),
+        &two * (&e - &b),
+        &a - &d + &f,
+    ];
+    let mut points: Vec<[Q; 2]> = algebra::sign_change_roots(&coeffs, algebra::ROOT_DIGITS)
+        .into_iter()
+        .map(|s| {
+            let den = Q::ONE + &s * &s;
+            [(Q::ONE - &s * &s) / &den, &two * &s / &den]
+        })
+        .collect();
+    if coeffs[4].is_zero() {
+        points.push([-Q::ONE, Q::ZERO]);
+    }
+    points
 }
 
 /// The common real points of two conics `p(t0, t1) = 0 = q(t0, t1)`, one of them an ellipse (a

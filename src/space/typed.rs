@@ -5,7 +5,10 @@
 //! vector: `-v '(4,1),(-1,0.5)'`. A plain number is a velocity on a line (one dimension).
 
 use crate::number::{Given, Number, NumberError};
-use crate::units::{Dimension, Quantity, QuantityError, Unit, lookup, parse as parse_quantity};
+use crate::units::{
+    Dimension, Pair, PairError, Quantity, QuantityError, Unit, lookup, parse as parse_quantity,
+    parse_pair,
+};
 
 use super::angle::{Angle, AngleError};
 
@@ -180,6 +183,66 @@ pub fn dimension<'a>(lists: impl IntoIterator<Item = &'a Typed>) -> Result<usize
                 .join(" and "),
         )),
     }
+}
+
+/// A list of bodies' masses or velocities as typed on the command line: two numbers of a
+/// collision on a line (`pair`), or any other list (N bodies, vectors), kept as text and read by
+/// the plane-and-space solver.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Listed {
+    pub text: String,
+    pub pair: Option<Pair>,
+}
+
+/// Why a list of masses or velocities is not one.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ListedError {
+    #[error(transparent)]
+    Pair(#[from] PairError),
+    #[error(transparent)]
+    Typed(#[from] TypedError),
+    #[error("{0}")]
+    Mass(String),
+}
+
+impl Listed {
+    /// Two plain values (`4,1`, `?,10 mph`) as a pair, as always; anything else checked as a
+    /// list of bodies.
+    pub fn parse(text: &str, dimension: Dimension, what: &str) -> Result<Listed, ListedError> {
+        let t = text.trim().to_string();
+        if !is_spatial(text) {
+            return Ok(Listed {
+                pair: Some(parse_pair(text, dimension, what)?),
+                text: t,
+            });
+        }
+        match dimension {
+            Dimension::Mass => {
+                parse_masses(text)?;
+            }
+            _ => {
+                parse_list(text)?;
+            }
+        }
+        Ok(Listed { text: t, pair: None })
+    }
+}
+
+/// `M1,M2,...`: masses with optional units, `?` for unknown ones, `wall` for an immovable body.
+pub fn parse_masses(text: &str) -> Result<Vec<Given<Quantity>>, ListedError> {
+    split_bodies(text)?
+        .into_iter()
+        .map(|s| {
+            Given::parse_mass(s, |s| parse_quantity(s, Dimension::Mass)).map_err(|e| {
+                let e = e.to_string();
+                ListedError::Mass(if e.starts_with('\'') {
+                    format!("mass {e}")
+                } else {
+                    e
+                })
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

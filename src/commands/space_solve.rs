@@ -1,0 +1,278 @@
+//! `collide solve` in the plane, in space, or for N bodies on a line: pose the typed problem,
+//! solve its unknowns, keep the physical solutions, render them.
+
+use anyhow::Result;
+use collide::report::space::{self as report, Show, Style};
+use collide::report::{Section, json};
+use collide::space::outcome::{Outcome as Event, dot};
+use collide::space::pose::outcomes;
+use collide::space::solve::{self, Check, Unknown, Velocity};
+
+use super::Outcome;
+use crate::cli::{Format, SolveArgs};
+
+/// Why a solution is left out when another one is physical.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Verdict {
+    Physical,
+    /// FIN = IN: the bodies pass without an impulse.
+    NoImpulse,
+    /// They would approach after or separate before, along the impulse.
+    Unphysical,
+    /// A speed along a given direction came out negative (the opposite direction).
+    NegativeSpeed,
+}
+
+pub fn run(args: &SolveArgs) -> Result<Outcome> {
+    let refused = [
+        (args.frame != collide::frame::Frame::Lab, "--frame"),
+        (args.reverse, "--reverse"),
+        (args.plot.is_some(), "--plot"),
+        (args.contact_time.is_some(), "--contact-time"),
+        (args.case.gravity.is_some(), "--gravity"),
+    ];
+    if let Some((_, flag)) = refused.iter().find(|(on, _)| *on) {
+        anyhow::bail!(
+            "{flag} is not available in the plane, in space or for N bodies yet (it describes \
+             two bodies on a line)"
+        );
+    }
+    let show = show(&args.show)?;
+    let input = args.case.space_input(args.fin.as_ref(), args.exact)?;
+    let posed = input.pose()?;
+    let solved = solve::solve(&posed.statement)?;
+    // The final velocities are unknowns of the laws, but only what the problem marked '?' (or
+    // gave as final velocities) is "solved" for the reader.
+    let asked: Vec<Unknown> = solved
+        .unknowns
+        .iter()
+        .filter(|u| args.fin.is_some() || !matches!(u, Unknown::Component(_, true, _)))
+        .copied()
+        .collect();
+    let mut units = posed.units.clone();
+    if let Some(u) = args.case.energy_unit {
+        units = units.with_energy_unit(u)?;
+    }
+    let style = Style::new(args.exact, units.energy_scale());
+    let all = outcomes(&posed, &solved);
+    if all.is_empty() {
+        anyhow::bail!(
+            "no real solution: the given values cannot satisfy the laws together (the energy \
+             equation has no real root); check them"
+        );
+    }
+    let judged: Vec<(Event, Vec<Check>, Verdict)> = all
+        .into_iter()
+        .map(|(o, c)| {
+            let v = verdict(&o, &posed.statement);
+            (o, c, v)
+        })
+        .collect();
+    let keep: Vec<&(Event, Vec<Check>, Verdict)> =
+        if judged.iter().any(|(_, _, v)| *v == Verdict::Physical) {
+            judged
+                .iter()
+                .filter(|(_, _, v)| *v == Verdict::Physical)
+                .collect()
+        } else {
+            judged.iter().collect()
+        };
+    let inconsistent = keep.iter().all(|(_, c, _)| c.iter().any(|c| !c.ok));
+    let many = keep.len() > 1;
+    match args.format {
+        Format::Text => {
+            let mut out = String::new();
+            for (k, (o, checks, v)) in keep.iter().enumerate() {
+                if many {
+                    out.push_str(&format!(
+                        "{}Solution {} of {} ({})\n",
+                        if k > 0 { "\n" } else { "" },
+                        k + 1,
+                        keep.len(),
+                        describe(*v)
+                    ));
+                } else if *v != Verdict::Physical {
+                    out.push_str(&format!("Note: {}\n", describe(*v)));
+                }
+                out.push_str(&report::header(o, &style, &units));
+                out.push_str(&collide::report::text::header_units(&units));
+                out.push_str(&report::solved_text(o, &asked, &style));
+                out.push_str(&report::checks_text(checks, 0));
+                if inconsistent {
+                    out.push_str(
+                        "The given values contradict each other, so no collision is printed: \
+                         check them, or mark one '?' to solve for it.\n",
+                    );
+                    continue;
+                }
+                out.push_str(&report::text(o, show, &style, &units)?);
+            }
+            Ok(Outcome {
+                stdout: out,
+                status: u8::from(inconsistent),
+            })
+        }
+        Format::Json => {
+            let render = |o: &Event, checks: &[Check], v: Verdict| -> Result<serde_json::Value> {
+                let mut j = if inconsistent {
+                    serde_json::json!({ "consistent": false })
+                } else {
+                    report::json(o, show, &style)?
+                };
+                let m = j.as_object_mut().expect("an object");
+                if !asked.is_empty() {
+                    m.insert("solved".into(), solved_json(o, &asked, &style));
+                }
+                let failed: Vec<serde_json::Value> = checks
+                    .iter()
+                    .filter(|c| !c.ok)
+                    .map(|c| serde_json::json!({"law": c.law.name(), "residual": c.residual}))
+                    .collect();
+                if !failed.is_empty() {
+                    m.insert("failed_checks".into(), failed.into());
+                }
+                if v != Verdict::Physical {
+                    m.insert("note".into(), describe(v).into());
+                }
+                Ok(j)
+            };
+            let mut j = if many {
+                let list = keep
+                    .iter()
+                    .map(|(o, c, v)| render(o, c, *v))
+                    .collect::<Result<Vec<_>>>()?;
+                serde_json::json!({ "solutions": list })
+            } else {
+                let (o, c, v) = keep[0];
+                render(o, c, *v)?
+            };
+            if !units_empty(&units) {
+                let m = j.as_object_mut().expect("an object");
+                let mut u = serde_json::Map::new();
+                if let Some(x) = units.mass {
+                    u.insert("mass".into(), x.into());
+                }
+                if let Some(x) = units.velocity {
+                    u.insert("velocity".into(), x.into());
+                }
+                u.insert("energy".into(), units.energy().into());
+                m.insert("units".into(), u.into());
+            }
+            Ok(Outcome {
+                stdout: json::render(&j),
+                status: u8::from(inconsistent),
+            })
+        }
+    }
+}
+
+fn units_empty(u: &collide::units::Units) -> bool {
+    u.mass.is_none() && u.velocity.is_none()
+}
+
+/// The sections asked for, among those that mean something here.
+fn show(list: &[Section]) -> Result<Show> {
+    if list.is_empty() {
+        return Ok(Show::default());
+    }
+    let mut s = Show {
+        vectors: false,
+        momentum: false,
+        forms: false,
+        energy: false,
+        angles: false,
+    };
+    for section in list {
+        match section {
+            Section::Vectors => s.vectors = true,
+            Section::Momentum => s.momentum = true,
+            Section::Forms => s.forms = true,
+            Section::Energy => s.energy = true,
+            Section::Angles => s.angles = true,
+            Section::All => {
+                s = Show {
+                    vectors: true,
+                    momentum: true,
+                    forms: true,
+                    energy: true,
+                    angles: true,
+                }
+            }
+            other => anyhow::bail!(
+                "--show {}: in the plane, in space and for N bodies the sections are vectors, \
+                 momentum, forms, energy, angles and all",
+                clap::ValueEnum::to_possible_value(other)
+                    .map(|v| v.get_name().to_string())
+                    .unwrap_or_default()
+            ),
+        }
+    }
+    Ok(s)
+}
+
+fn describe(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Physical => "physical",
+        Verdict::NoImpulse => "no impulse: the bodies pass each other unchanged",
+        Verdict::Unphysical => {
+            "unphysical: along the impulse the bodies would separate before or approach after"
+        }
+        Verdict::NegativeSpeed => "a speed along a given direction is negative",
+    }
+}
+
+/// Whether a solution is a physical collision.
+fn verdict(o: &Event, st: &solve::Statement) -> Verdict {
+    for (i, v) in st.fin.iter().chain(&st.v_in).enumerate() {
+        if let Velocity::Speed { unit } = v {
+            let body = i % o.bodies();
+            let vel = if i < o.bodies() {
+                &o.fin[body]
+            } else {
+                &o.v_in[body]
+            };
+            if dot(vel, unit) < collide::rational::Q::ZERO {
+                return Verdict::NegativeSpeed;
+            }
+        }
+    }
+    if o.bodies() != 2 {
+        return Verdict::Physical;
+    }
+    if o.impulse_line().is_none() {
+        return if o.v_in == o.fin {
+            Verdict::NoImpulse
+        } else {
+            Verdict::Physical
+        };
+    }
+    match o.physical() {
+        Some(false) => Verdict::Unphysical,
+        _ => Verdict::Physical,
+    }
+}
+
+/// `"solved": {"v2'": [..], "m1": ..}`.
+fn solved_json(o: &Event, unknowns: &[Unknown], style: &Style) -> serde_json::Value {
+    let mut m = serde_json::Map::new();
+    for u in unknowns {
+        let (key, value) = match *u {
+            Unknown::Mass(i) => (format!("m{}", i + 1), style.json(&o.masses[i], o.approx)),
+            Unknown::Restitution => match &o.e {
+                Some(e) => ("e".to_string(), style.json(e, o.approx)),
+                None => continue,
+            },
+            Unknown::Component(i, fin, _)
+            | Unknown::Speed(i, fin)
+            | Unknown::Direction(i, fin, _) => {
+                let v = if fin { &o.fin[i] } else { &o.v_in[i] };
+                (
+                    format!("v{}{}", i + 1, if fin { "'" } else { "" }),
+                    serde_json::Value::Array(v.iter().map(|x| style.json(x, o.approx)).collect()),
+                )
+            }
+        };
+        m.insert(key, value);
+    }
+    m.into()
+}
