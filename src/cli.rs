@@ -14,11 +14,11 @@ use collide::inertia::InertiaTensor;
 use collide::number::{Given, Number, NumberList};
 use collide::report::Section;
 use collide::restitution::Restitution;
+use collide::space::typed::Listed;
 use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
 use collide::table::writer::RowFormat;
-use collide::space::typed::Listed;
 use collide::units::Dimension;
 
 #[derive(Parser, Debug)]
@@ -123,9 +123,10 @@ pub struct PlotArgs {
     #[command(flatten)]
     pub case: CaseArgs,
 
-    /// Which picture
-    #[arg(long, value_enum, default_value_t = collide::plot::Kind::Velocity)]
-    pub kind: collide::plot::Kind,
+    /// Which picture [default: velocity; for vectors in the plane, the paths and momentum
+    /// triangles]
+    #[arg(long, value_enum)]
+    pub kind: Option<collide::plot::Kind>,
 
     /// The frame to draw in: lab, com, rest-in:1, ..., or an observer velocity
     #[arg(long, default_value = "lab", allow_hyphen_values = true)]

@@ -79,6 +79,15 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
         };
     let inconsistent = keep.iter().all(|(_, c, _)| c.iter().any(|c| !c.ok));
     let many = keep.len() > 1;
+    // A collision asked outright whose bodies do not approach along the line of impact: they
+    // never meet, and no FIN is printed.
+    if let [(o, _, Verdict::Unphysical)] = keep.as_slice()
+        && asked.is_empty()
+        && let Some(n) = &o.normal
+    {
+        let along = dot(n, &collide::space::outcome::sub(&o.v_in[0], &o.v_in[1]));
+        return receding(o, &along, &style, &units, args.format);
+    }
     match args.format {
         Format::Text => {
             let mut out = String::new();
@@ -92,7 +101,11 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
                         describe(*v)
                     ));
                 } else if *v != Verdict::Physical {
-                    out.push_str(&format!("Note: {}\n", describe(*v)));
+                    out.push_str(&collide::report::text::wrap(
+                        &format!("Note: {}", describe(*v)),
+                        80,
+                        "  ",
+                    ));
                 }
                 out.push_str(&report::header(o, &style, &units));
                 out.push_str(&collide::report::text::header_units(&units));
@@ -164,6 +177,47 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
             })
         }
     }
+}
+
+/// Bodies that do not approach along the line of impact: the note alone.
+fn receding(
+    o: &Event,
+    along: &collide::rational::Q,
+    style: &Style,
+    units: &collide::units::Units,
+    format: Format,
+) -> Result<Outcome> {
+    let stdout = match format {
+        Format::Text => {
+            let mut out = report::header(o, style, units);
+            out.push_str(&collide::report::text::wrap(
+                &format!(
+                    "Note: the bodies do not approach along the line of impact: n.(v1 - v2) = \
+                     {} <= 0, so they do not collide (no FIN).",
+                    style.show(along, o.approx)
+                ),
+                80,
+                "  ",
+            ));
+            out
+        }
+        Format::Json => {
+            let a = o.approx;
+            let vecs: Vec<serde_json::Value> = o
+                .v_in
+                .iter()
+                .map(|v| v.iter().map(|x| style.json(x, a)).collect())
+                .collect();
+            json::render(&serde_json::json!({
+                "dim": o.dim,
+                "masses": o.masses.iter().map(|m| style.json(m, a)).collect::<Vec<_>>(),
+                "normal": o.normal.as_ref().map(|n| n.iter().map(|x| style.json(x, a)).collect::<Vec<_>>()),
+                "in": vecs,
+                "approaching": false,
+            }))
+        }
+    };
+    Ok(Outcome { stdout, status: 0 })
 }
 
 fn units_empty(u: &collide::units::Units) -> bool {
@@ -275,4 +329,34 @@ fn solved_json(o: &Event, unknowns: &[Unknown], style: &Style) -> serde_json::Va
         m.insert(key, value);
     }
     m.into()
+}
+
+/// The plane picture of a case given on the command line (one solution, in the plane).
+pub fn plane_svg(case: &crate::cli::CaseArgs) -> Result<String> {
+    let posed = case.space_input(None, false)?.pose()?;
+    if posed.statement.dim != 2 {
+        anyhow::bail!(
+            "the picture of a collision is drawn in the plane: give 2-vectors (this case has {} \
+             dimension{})",
+            posed.statement.dim,
+            if posed.statement.dim == 1 { "" } else { "s" }
+        );
+    }
+    let solved = solve::solve(&posed.statement)?;
+    let all = outcomes(&posed, &solved);
+    let [(o, _)] = all.as_slice() else {
+        anyhow::bail!(
+            "the picture needs one solution; this case has {}",
+            all.len()
+        );
+    };
+    let title = format!(
+        "masses {}",
+        o.masses
+            .iter()
+            .map(|m| collide::number::num(collide::rational::to_f64(m).unwrap_or(f64::NAN)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    Ok(collide::plot::plane::svg(o, &title))
 }

@@ -21,6 +21,9 @@ use crate::units::Units;
 
 use super::text::Block;
 
+/// Text lines fit a terminal of this width.
+const WIDTH: usize = 80;
+
 /// What a planar report shows (`--show`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Show {
@@ -213,7 +216,9 @@ pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
                     parts.push(format!("e = {}", style.show(e, o.approx)));
                 }
             }
-            Unknown::Component(i, fin, _) | Unknown::Speed(i, fin) | Unknown::Direction(i, fin, _) => {
+            Unknown::Component(i, fin, _)
+            | Unknown::Speed(i, fin)
+            | Unknown::Direction(i, fin, _) => {
                 if seen.contains(&(i, fin)) {
                     continue;
                 }
@@ -261,7 +266,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
     let a = o.approx;
     let unit = unit_suffix(units);
     if show.vectors {
-        let mut b = Block::new("Velocities (IN, then FIN)");
+        let mut b = Block::new("Velocities (IN, then FIN)").fit(WIDTH);
         for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
             for (i, v) in vs.iter().enumerate() {
                 b.row(
@@ -279,37 +284,60 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         );
         if o.bodies() == 2 {
             let j = o.impulse(1);
+            let unit = match (units.mass, units.velocity) {
+                (Some(_), Some(_)) => format!(" {}", units.impulse()),
+                _ => String::new(),
+            };
             b.row(
                 "J",
-                vector(style, &j, a),
-                format!("impulse on body 2, m2 (v2' - v2), in {}", units.impulse()),
+                format!("{}{unit}", vector(style, &j, a)),
+                "impulse on body 2, m2 (v2' - v2)",
             );
         }
         b.render(&mut out);
         if let Some(parts) = o.normal_parts() {
             let a = a || !parts.exact;
-            let mut b = Block::new("Along the line of impact (the normal parts collide as on a rail)");
-            let com = (&o.masses[0] * &parts.v_in[0] + &o.masses[1] * &parts.v_in[1])
-                / o.total_mass();
-            b.row("IN", vector(style, &parts.v_in, a), "(v1.n, v2.n), n of unit length");
+            let mut b =
+                Block::new("Along the line of impact (the normal parts collide as on a rail)")
+                    .fit(WIDTH);
+            let com =
+                (&o.masses[0] * &parts.v_in[0] + &o.masses[1] * &parts.v_in[1]) / o.total_mass();
+            b.row(
+                "IN",
+                vector(style, &parts.v_in, a),
+                "(v1.n, v2.n), n of unit length",
+            );
             b.row(
                 "COM",
                 vector(style, &[com.clone(), com], a),
                 "V_COM u along n",
             );
-            b.row("FIN", vector(style, &parts.fin, a), "tangential parts unchanged");
+            b.row(
+                "FIN",
+                vector(style, &parts.fin, a),
+                "tangential parts unchanged",
+            );
             b.render(&mut out);
         }
     }
     if show.momentum {
-        let mut b = Block::new(format!("Momentum (P = sum m v, in {})", units.impulse()));
+        let mut b =
+            Block::new(format!("Momentum (P = sum m v, in {})", units.impulse())).fit(WIDTH);
         for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
             for (i, v) in vs.iter().enumerate() {
                 let p: Vec<Q> = v.iter().map(|x| x * &o.masses[i]).collect();
-                b.row(format!("p{}{}", i + 1, if fin { "'" } else { "" }), vector(style, &p, a), "");
+                b.row(
+                    format!("p{}{}", i + 1, if fin { "'" } else { "" }),
+                    vector(style, &p, a),
+                    "",
+                );
             }
         }
-        b.row("P_total", vector(style, &o.momentum(&o.v_in), a), "the same before and after");
+        b.row(
+            "P_total",
+            vector(style, &o.momentum(&o.v_in), a),
+            "the same before and after",
+        );
         b.render(&mut out);
     }
     if show.forms {
@@ -321,10 +349,15 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
                 .fold(Q::ZERO, |s, (m, (xi, yi))| s + m * dot(xi, yi))
         };
         let com: Vec<Vec<Q>> = vec![o.v_com(); o.bodies()];
-        let mut b = Block::new("Quadratic forms (X.M.Y in R^(dN), M = diag(m1 I, ..., mN I))");
+        let mut b =
+            Block::new("Quadratic forms (X.M.Y in R^(dN), M = diag(m1 I, ..., mN I))").fit(WIDTH);
         b.row("V_IN.M.V_IN", style.show(&form(&o.v_in, &o.v_in), a), "");
         b.row("V_FIN.M.V_FIN", style.show(&form(&o.fin, &o.fin), a), "");
-        b.row("V_FIN.M.V_IN", style.show(&form(&o.fin, &o.v_in), a), "= V_IN.M.V_FIN");
+        b.row(
+            "V_FIN.M.V_IN",
+            style.show(&form(&o.fin, &o.v_in), a),
+            "= V_IN.M.V_FIN",
+        );
         b.row(
             "V_COM.M.V_IN",
             style.show(&form(&com, &o.v_in), a),
@@ -334,7 +367,8 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
     }
     if show.energy {
         let e = |q: Q| style.show(&style.energy(&q), a);
-        let mut b = Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", units.energy()));
+        let mut b =
+            Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", units.energy())).fit(WIDTH);
         b.row("KE_IN", e(o.ke_in()), "");
         b.row("KE_FIN", e(o.ke_fin()), "");
         b.row("KE_COM = 1/2 M_total |V_COM|^2", e(o.ke_com()), "");
@@ -355,7 +389,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         b.render(&mut out);
     }
     if show.angles && o.dim >= 2 && o.bodies() == 2 {
-        let mut b = Block::new("Angles");
+        let mut b = Block::new("Angles").fit(WIDTH);
         if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
             b.row("between v1' and v2'", format!("{}°", num(t)), "");
         }
@@ -407,7 +441,12 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
         if o.dim == 2 {
             m.insert(
                 "fin_angle_deg".into(),
-                json!(polar_of.iter().map(|p| p.1.unwrap_or(0.0)).collect::<Vec<_>>()),
+                json!(
+                    polar_of
+                        .iter()
+                        .map(|p| p.1.unwrap_or(0.0))
+                        .collect::<Vec<_>>()
+                ),
             );
         }
         m.insert("v_com".into(), vec1(&o.v_com()));

@@ -48,7 +48,11 @@ impl Poly {
 
     /// The unknowns it involves.
     pub fn vars(&self) -> impl Iterator<Item = usize> + '_ {
-        let lin = self.lin.iter().filter(|(_, a)| !a.is_zero()).map(|(i, _)| *i);
+        let lin = self
+            .lin
+            .iter()
+            .filter(|(_, a)| !a.is_zero())
+            .map(|(i, _)| *i);
         let quad = self
             .quad
             .iter()
@@ -355,7 +359,13 @@ pub fn quadratic_roots(a: &Q, b: &Q, c: &Q) -> Vec<Root> {
     } else {
         -(b + &root) / &two
     };
-    let wrap = |x: Q| if exact { Root::Exact(x) } else { Root::Approx(x) };
+    let wrap = |x: Q| {
+        if exact {
+            Root::Exact(x)
+        } else {
+            Root::Approx(x)
+        }
+    };
     let mut roots = vec![wrap(&q / a)];
     if !q.is_zero() {
         roots.push(wrap(c / &q));

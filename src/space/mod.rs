@@ -10,7 +10,7 @@
 
 pub mod algebra;
 pub mod angle;
-pub mod solve;
 pub mod outcome;
 pub mod pose;
+pub mod solve;
 pub mod typed;

@@ -108,9 +108,7 @@ pub enum PoseError {
          from the relative velocity), and they must differ"
     )]
     GeometryVelocities,
-    #[error(
-        "impact parameter {b} is larger than R1 + R2 = {sum}: the bodies miss each other"
-    )]
+    #[error("impact parameter {b} is larger than R1 + R2 = {sum}: the bodies miss each other")]
     Miss { b: String, sum: String },
     #[error("radius {0} must be a number > 0")]
     Radius(String),
@@ -132,7 +130,11 @@ pub struct Posed {
 
 /// How a typed number enters the laws: its typed value or its binary64 value.
 fn q_of(n: &Number, typed: bool) -> Q {
-    if typed { n.exact() } else { from_f64(n.value()) }
+    if typed {
+        n.exact()
+    } else {
+        from_f64(n.value())
+    }
 }
 
 impl Input {
@@ -190,9 +192,12 @@ impl Input {
                     Velocity::known(v)
                 }
                 Typed::Scalar(_) => Velocity::unknown(dim),
-                Typed::Components { .. } => {
-                    Velocity::Components(values.iter().map(|g| q(g).map_or(Given::Unknown, Given::Known)).collect())
-                }
+                Typed::Components { .. } => Velocity::Components(
+                    values
+                        .iter()
+                        .map(|g| q(g).map_or(Given::Unknown, Given::Known))
+                        .collect(),
+                ),
                 Typed::Polar { angle, .. } => {
                     let speed = q(&values[0]);
                     if let Some(s) = &speed
@@ -204,7 +209,9 @@ impl Input {
                         (Some(s), Given::Known(a)) => {
                             let unit = unit_of(a, self.exact, "a velocity typed with an angle")?;
                             inexact |= unit.1;
-                            Velocity::known(unit.0.iter().map(|c| round_if(&s * c, unit.1)).collect())
+                            Velocity::known(
+                                unit.0.iter().map(|c| round_if(&s * c, unit.1)).collect(),
+                            )
                         }
                         (None, Given::Known(a)) => {
                             let unit = unit_of(a, self.exact, "a velocity typed with an angle")?;
@@ -248,10 +255,7 @@ impl Input {
                 Some(v)
             }
         };
-        let e = self
-            .e
-            .as_ref()
-            .map(|g| g.clone().map(|n| q_of(&n, typed)));
+        let e = self.e.as_ref().map(|g| g.clone().map(|n| q_of(&n, typed)));
         Ok(Posed {
             statement: Statement {
                 dim,
@@ -282,7 +286,10 @@ impl Input {
                     return Err(PoseError::NormalSize(
                         format!(
                             "({})",
-                            c.iter().map(Number::to_string).collect::<Vec<_>>().join(",")
+                            c.iter()
+                                .map(Number::to_string)
+                                .collect::<Vec<_>>()
+                                .join(",")
                         ),
                         v.len(),
                         dim,
@@ -397,9 +404,7 @@ fn round_if(q: Q, rounded: bool) -> Q {
 fn describe(t: &Typed) -> String {
     match t {
         Typed::Polar { speed, angle } => {
-            let s = speed
-                .known()
-                .map_or("?".into(), |q| q.number.to_string());
+            let s = speed.known().map_or("?".into(), |q| q.number.to_string());
             let a = angle.known().map_or("?".into(), |a| a.typed.clone());
             format!("{s} @ {a}")
         }
@@ -446,10 +451,8 @@ mod tests {
             masses: m
                 .split(',')
                 .map(|s| {
-                    Given::parse_mass(s, |s| {
-                        crate::units::parse(s, crate::units::Dimension::Mass)
-                    })
-                    .unwrap()
+                    Given::parse_mass(s, |s| crate::units::parse(s, crate::units::Dimension::Mass))
+                        .unwrap()
                 })
                 .collect(),
             v_in: parse_list(v).unwrap(),
@@ -465,7 +468,10 @@ mod tests {
         let posed = p.pose().unwrap();
         let solved = solve::solve(&posed.statement).unwrap();
         let (o, _) = &outcomes(&posed, &solved)[0];
-        assert_eq!(o.fin[0], vec![crate::rational::ratio(75, 8), crate::rational::ratio(25, 2)]);
+        assert_eq!(
+            o.fin[0],
+            vec![crate::rational::ratio(75, 8), crate::rational::ratio(25, 2)]
+        );
         assert_eq!(posed.units.velocity, Some("m/s"));
     }
 

@@ -288,10 +288,7 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
         None => None,
     };
     let together = given.v_in.iter().all(|v| v.value().is_some())
-        && given
-            .v_in
-            .windows(2)
-            .all(|w| w[0].value() == w[1].value());
+        && given.v_in.windows(2).all(|w| w[0].value() == w[1].value());
     let fin_given = given
         .fin
         .iter()
@@ -376,7 +373,11 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
         .map(|(x, approx)| {
             let value = |p: &Poly| {
                 let q = p.eval(&x);
-                if approx { Exact::Approx(q) } else { Exact::Rational(q) }
+                if approx {
+                    Exact::Approx(q)
+                } else {
+                    Exact::Rational(q)
+                }
             };
             let checks = eqs
                 .iter()
@@ -397,7 +398,8 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
                     }
                 })
                 .collect();
-            let v_in: Vec<Vec<Exact>> = v_in.iter().map(|v| v.iter().map(value).collect()).collect();
+            let v_in: Vec<Vec<Exact>> =
+                v_in.iter().map(|v| v.iter().map(value).collect()).collect();
             let fin: Vec<Vec<Exact>> = fin.iter().map(|v| v.iter().map(value).collect()).collect();
             let e = if separation {
                 None
@@ -407,7 +409,11 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
                 None
             } else {
                 impulse_restitution(&v_in, &fin).map(|q| {
-                    if approx { Exact::Approx(q) } else { Exact::Rational(q) }
+                    if approx {
+                        Exact::Approx(q)
+                    } else {
+                        Exact::Rational(q)
+                    }
                 })
             };
             Solution {
@@ -430,7 +436,11 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
 /// `e = -n.(v1' - v2') / n.(v1 - v2)`; `None` without an impulse or an approach along it.
 fn impulse_restitution(v_in: &[Vec<Exact>], fin: &[Vec<Exact>]) -> Option<Q> {
     let q = |e: &Exact| e.rational().clone();
-    let n: Vec<Q> = fin[1].iter().zip(&v_in[1]).map(|(f, v)| q(f) - q(v)).collect();
+    let n: Vec<Q> = fin[1]
+        .iter()
+        .zip(&v_in[1])
+        .map(|(f, v)| q(f) - q(v))
+        .collect();
     let along = |a: &[Exact], b: &[Exact]| -> Q {
         n.iter()
             .zip(a.iter().zip(b))
@@ -446,7 +456,11 @@ fn impulse_restitution(v_in: &[Vec<Exact>], fin: &[Vec<Exact>]) -> Option<Q> {
 
 /// The solutions of the equations in `m` unknowns: the values, and whether they are
 /// approximate (an irrational root).
-fn solve_system(eqs: &[(Law, Poly)], m: usize, last: &[usize]) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
+fn solve_system(
+    eqs: &[(Law, Poly)],
+    m: usize,
+    last: &[usize],
+) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
     let mut linear: Vec<&Poly> = eqs
         .iter()
         .filter(|(_, p)| p.is_linear())
@@ -517,10 +531,7 @@ fn solve_system(eqs: &[(Law, Poly)], m: usize, last: &[usize]) -> Result<Vec<(Ve
                     .collect(),
                 None => two_parameters(&in_t[0].1, &in_t[1].1)?,
             };
-            Ok(roots
-                .into_iter()
-                .map(|t| (point(&t), true))
-                .collect())
+            Ok(roots.into_iter().map(|t| (point(&t), true)).collect())
         }
         _ => Err(too_few(in_t.len().min(free))),
     }
@@ -679,10 +690,7 @@ impl Ellipse {
         let l22 = (c - l21 * l21).sqrt();
         let r = k.sqrt();
         // L^-T = [[1/l11, -l21/(l11 l22)], [0, 1/l22]].
-        let map = [
-            [r / l11, -r * l21 / (l11 * l22)],
-            [0.0, r / l22],
-        ];
+        let map = [[r / l11, -r * l21 / (l11 * l22)], [0.0, r / l22]];
         Some(Ellipse {
             centre: [cx, cy],
             map,

@@ -224,7 +224,10 @@ impl Listed {
                 parse_list(text)?;
             }
         }
-        Ok(Listed { text: t, pair: None })
+        Ok(Listed {
+            text: t,
+            pair: None,
+        })
     }
 }
 

@@ -11,6 +11,7 @@ mod frames;
 mod homework;
 mod hostile;
 mod lecture;
+mod plane;
 mod plot;
 mod problems;
 mod properties;
