@@ -21,13 +21,24 @@ use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
 use collide::table::writer::RowFormat;
 use collide::units::Dimension;
 
+/// The exit statuses, for `collide --help` and the man page: the same words as the guide's table
+/// (docs/cli.md, "Exit status"), which `tests/suite/shell.rs` compares with both.
+pub const EXIT_STATUS: &str = "Exit status:
+  0    success, also when the reader of the output stops early (collide ... | head)
+  1    a check failed: a scene's [expect] numbers, or given values that contradict a law that \
+was checked rather than used (solve and scene then print the checks and no collision)
+  2    bad input or usage: a message on stderr names the bad value and says what is expected, \
+and nothing is written to stdout
+  130  interrupted by SIGINT, SIGTERM or SIGHUP while writing a file (-o, --log, --plot): the \
+unfinished file is removed";
+
 #[derive(Parser, Debug)]
 #[command(
     name = "collide",
     version,
     about = "Two-body collisions on a rail, solved and printed in the notation of Harter's \
              'Classical Mechanics with a BANG!', Lecture 1",
-    after_help = "Exit status: 0 success, 1 a scene's [expect] check failed, 2 bad input or usage."
+    after_help = EXIT_STATUS
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -115,6 +126,9 @@ pub enum Command {
         shell: clap_complete::Shell,
     },
     /// Print the man page (roff): collide man | man -l -
+    #[command(after_help = "Examples:
+  collide man | man -l -
+  collide man > ~/.local/share/man/man1/collide.1")]
     Man,
 }
 
@@ -511,7 +525,7 @@ pub struct SceneArgs {
 pub enum Format {
     /// Aligned text for people
     Text,
-    /// One JSON object (stable schema, see README)
+    /// One JSON object (stable schema: docs/json.md)
     Json,
 }
 

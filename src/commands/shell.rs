@@ -5,7 +5,7 @@ use anyhow::Result;
 use clap::CommandFactory;
 
 use super::Outcome;
-use crate::cli::Cli;
+use crate::cli::{Cli, EXIT_STATUS};
 
 /// A completion script for `shell` (clap_complete).
 pub fn completions(shell: clap_complete::Shell) -> Result<Outcome> {
@@ -15,42 +15,39 @@ pub fn completions(shell: clap_complete::Shell) -> Result<Outcome> {
     Ok(Outcome::print(String::from_utf8(script)?))
 }
 
-/// Sections of the man page beyond the flags: exit status, scenes, an example per subcommand.
-const EXTRA: &[(&str, &[&str])] = &[
-    (
-        "EXIT STATUS",
-        &[
-            "0 success; 1 a scene's [expect] check failed; 2 bad input or usage (a message on \
-             stderr names the bad value and says what is expected; nothing is written to stdout).",
-        ],
-    ),
-    (
-        "SCENES",
-        &[
-            "A scene is a TOML file: a two-body case (masses or inertia, velocities, \
-             restitution, frame, show, exact), a [sweep] table, a [track] table or a [contact] \
-             table, with title, source and an [expect] table of report keys and expected values \
-             ({ value = ..., abs = ..., rel = ... } for a tolerance). collide scene FILE... \
-             solves each and checks it; unknown keys are errors with the file and line.",
-        ],
-    ),
-    (
-        "EXAMPLES",
-        &[
-            "collide solve -m 4,1 -v 60,10",
-            "collide scene scenarios/fig-1-3-elastic.toml",
-            "collide frames -m 4,1 -v 60,10 -e 2/3",
-            "collide sweep -m 4,1 -v 60,10 --vary e=0:1:11",
-            "collide batch scenarios/cases.csv",
-            "collide track -m 1,10000 -x 1,2 -v 0,-1 --left-wall 0",
-            "collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2",
-            "collide pi 5",
-            "collide plot -m 4,1 -v 60,10 -o case-a.svg",
-            "collide accuracy --cases 8",
-            "collide completions bash > ~/.local/share/bash-completion/completions/collide",
-        ],
-    ),
-];
+/// The man page's section on scene files.
+const SCENES: &str = "A scene is a TOML file: a two-body case (masses or inertia, velocities, \
+restitution, frame, show, exact), a [sweep] table, a [track] table or a [contact] table, with \
+title, source and an [expect] table of report keys and expected values ({ value = ..., abs = ..., \
+rel = ... } for a tolerance). collide scene FILE... solves each and checks it; unknown keys are \
+errors with the file and line.";
+
+/// Where the rest is written.
+const SEE_ALSO: &str = "The guide, docs/README.md in collide's source: every subcommand with \
+examples, the JSON schema, accuracy and limits, exit status, files and signals.";
+
+/// `(status, meaning)` for each line of `cli::EXIT_STATUS` (the same text as `--help`).
+fn exit_statuses() -> impl Iterator<Item = (&'static str, &'static str)> {
+    EXIT_STATUS.lines().skip(1).filter_map(|line| {
+        let (status, meaning) = line.trim_start().split_once(' ')?;
+        Some((status, meaning.trim_start()))
+    })
+}
+
+/// Every subcommand's examples, from the `Examples:` of its `--help`.
+fn examples(top: &clap::Command) -> Vec<String> {
+    top.get_subcommands()
+        .filter_map(|sub| sub.get_after_help())
+        .flat_map(|help| {
+            help.to_string()
+                .lines()
+                .map(str::trim)
+                .filter(|l| l.starts_with("collide "))
+                .map(String::from)
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
 
 /// The man page (clap_mangen), in roff: one page with every subcommand's synopsis and options.
 pub fn man() -> Result<Outcome> {
@@ -82,17 +79,18 @@ pub fn man() -> Result<Outcome> {
         page.extend_from_slice(part.as_bytes());
     }
     let mut roff = String::from_utf8(page)?;
-    for (title, paragraphs) in EXTRA {
-        roff.push_str(&format!(".SH \"{title}\"\n"));
-        for p in *paragraphs {
-            let text = roff_text(p);
-            if p.starts_with("collide ") {
-                roff.push_str(&format!(".TP\n.B {text}\n"));
-            } else {
-                roff.push_str(&format!(".PP\n{text}\n"));
-            }
-        }
+    roff.push_str(".SH \"EXIT STATUS\"\n");
+    for (status, meaning) in exit_statuses() {
+        roff.push_str(&format!(".TP\n.B {status}\n{}\n", roff_text(meaning)));
     }
+    roff.push_str(&format!(".SH \"SCENES\"\n.PP\n{}\n", roff_text(SCENES)));
+    // Examples as typed: one a line, not filled or justified.
+    roff.push_str(".SH \"EXAMPLES\"\n.nf\n");
+    for example in examples(&top) {
+        roff.push_str(&format!("{}\n", roff_text(&example)));
+    }
+    roff.push_str(".fi\n");
+    roff.push_str(&format!(".SH \"SEE ALSO\"\n.PP\n{}\n", roff_text(SEE_ALSO)));
     Ok(Outcome::print(roff))
 }
 

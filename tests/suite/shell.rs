@@ -1,7 +1,11 @@
-//! `collide completions` and `collide man`: generated from the clap definition, so they must
-//! name every subcommand; the man page must render.
+//! `collide completions`, `collide man` and `--help`: generated from the clap definition, so they
+//! must name every subcommand; the man page must render; every example a help page gives must
+//! run; and the exit statuses and limits they state must be the guide's.
+
+use std::collections::BTreeSet;
 
 use crate::common;
+use crate::readme::{Sandbox, Shown};
 
 use common::{collide, stdout};
 
@@ -39,6 +43,37 @@ fn every_shell_completes_every_subcommand_and_value() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("bash"));
 }
 
+/// The page rendered by groff as `man -l` would, overstriking (bold: "C\x08C") dropped.
+fn rendered(page: &str) -> String {
+    use std::io::Write;
+    let mut child = std::process::Command::new("groff")
+        .args(["-man", "-Tutf8", "-ww"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("groff renders the man page: install it (Debian: groff-base; .ci/run does)");
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(page.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    let warnings = String::from_utf8_lossy(&out.stderr);
+    assert!(warnings.trim().is_empty(), "groff warns: {warnings}");
+    let mut text = String::new();
+    for c in String::from_utf8_lossy(&out.stdout).chars() {
+        if c == '\x08' {
+            text.pop();
+        } else {
+            text.push(c);
+        }
+    }
+    text
+}
+
 #[test]
 fn the_man_page_renders_with_every_subcommand() {
     let page = stdout(&["man"]);
@@ -53,49 +88,287 @@ fn the_man_page_renders_with_every_subcommand() {
             "no section for {sub}"
         );
     }
-    for section in ["EXIT STATUS", "SCENES", "EXAMPLES"] {
+    for section in ["EXIT STATUS", "SCENES", "EXAMPLES", "SEE ALSO"] {
         assert!(page.contains(&format!(".SH \"{section}\"")), "no {section}");
     }
-    // Render it where groff is installed (man -l uses it); the text must come out whole.
-    let groff = std::process::Command::new("groff")
-        .args(["-man", "-Tutf8", "-ww"])
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn();
-    if let Ok(mut child) = groff {
-        use std::io::Write;
-        child
-            .stdin
-            .take()
-            .unwrap()
-            .write_all(page.as_bytes())
-            .unwrap();
-        let out = child.wait_with_output().unwrap();
-        assert!(out.status.success());
-        // Drop grotty's overstriking (bold: "C\x08C").
-        let mut text = String::new();
-        for c in String::from_utf8_lossy(&out.stdout).chars() {
-            if c == '\x08' {
-                text.pop();
-            } else {
-                text.push(c);
-            }
+    // Rendered, the text comes out whole (groff is required: CI installs it).
+    let text = words(&rendered(&page));
+    for heading in ["COLLIDE CONTACT", "EXIT STATUS", "EXAMPLES", "SEE ALSO"] {
+        assert!(text.contains(heading), "rendered page has no {heading}");
+    }
+    assert!(text.contains("collide solve -m 6,1 -v 3,-4 -e 2/3"));
+}
+
+/// Runs of whitespace as one space: text compared whatever its wrapping.
+fn words(text: &str) -> String {
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The `Examples:` of `collide SUB --help`.
+fn help_examples(sub: &str) -> Vec<String> {
+    let help = stdout(&[sub, "--help"]);
+    let (_, examples) = help
+        .split_once("\nExamples:\n")
+        .unwrap_or_else(|| panic!("{sub} --help has no examples"));
+    examples
+        .lines()
+        .take_while(|l| l.starts_with("  collide "))
+        .map(|l| l.trim().to_string())
+        .collect()
+}
+
+#[test]
+fn every_help_example_runs_and_succeeds() {
+    let mut all = Vec::new();
+    for sub in SUBCOMMANDS {
+        let examples = help_examples(sub);
+        assert!(!examples.is_empty(), "{sub} --help has no examples");
+        for example in examples {
+            // Each in its own folder: what it writes is checked, then removed.
+            let sandbox = Sandbox::new("help");
+            let run = sandbox.run(&example);
+            assert_eq!(run.status, 0, "{example}: {}", run.stderr);
+            let written = std::fs::read_dir(&sandbox.dir).unwrap().count() - 1;
+            assert!(
+                !run.stdout.is_empty() || written > 0,
+                "{example} printed nothing and wrote no file"
+            );
+            all.push(example);
         }
-        let text = text.replace("\n", " ");
-        assert!(text.contains("COLLIDE CONTACT") && text.contains("EXIT STATUS"));
-        let warnings = String::from_utf8_lossy(&out.stderr);
-        assert!(warnings.trim().is_empty(), "groff warns: {warnings}");
+    }
+    // The man page's EXAMPLES are these, in the same order.
+    let page = stdout(&["man"]);
+    let section = page.split(".SH \"EXAMPLES\"\n.nf\n").nth(1).unwrap();
+    let listed: Vec<String> = section
+        .lines()
+        .take_while(|l| *l != ".fi")
+        .map(|l| l.replace("\\-", "-").replace("\\e", "\\"))
+        .collect();
+    assert_eq!(listed, all);
+}
+
+/// Runs one of `collide SUB --help`'s examples (it must be listed there) in a sandbox, and
+/// requires a clean run: exit 0, nothing on stderr.
+fn run_help_example(sub: &str, example: &str) -> (Sandbox, Shown) {
+    assert!(
+        help_examples(sub).iter().any(|e| e == example),
+        "{sub} --help no longer gives {example}"
+    );
+    let sandbox = Sandbox::new(sub);
+    let run = sandbox.run(example);
+    assert_eq!((run.status, run.stderr.as_str()), (0, ""), "{example}");
+    (sandbox, run)
+}
+
+/// `n/d` in lowest terms as `--exact` prints it (`p` when whole).
+fn fraction(n: i64, d: i64) -> String {
+    let (mut a, mut b) = (n.abs(), d);
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    match (n / a, d / a) {
+        (p, 1) => p.to_string(),
+        (p, q) => format!("{p}/{q}"),
     }
 }
 
 #[test]
-fn help_ends_with_examples() {
-    for sub in SUBCOMMANDS.iter().filter(|s| **s != "man") {
+fn frames_help_example_gives_the_exact_fractions() {
+    // `collide frames -m 4,1 -v 60,10 -e 2/3 --exact`, by hand: V_COM = 250/5 = 50; FIN = (1 + e)
+    // V_COM - e V_IN = (250/3 - 40, 250/3 - 20/3) = (130/3, 230/3); crunch = 1/2 (4/5) 50^2 =
+    // 1000, lost = (1 - 4/9) 1000 = 5000/9. The frames' observers move at w = 0 (lab), 60 and 10
+    // (a body initially at rest), 50 (COM), 130/3 and 230/3 (finally at rest); each sees every
+    // velocity shifted by -w, and KE = 1/2 (4 a^2 + b^2) of its own velocities (a, b). In thirds:
+    assert_eq!(
+        (fraction(6, 3), fraction(-20, 3), fraction(9, 18)),
+        ("2".into(), "-20/3".into(), "1/2".into())
+    );
+    let example = "collide frames -m 4,1 -v 60,10 -e 2/3 --exact";
+    let (_, text) = run_help_example("frames", example);
+    let (code, json, err) = common::run(&[
+        "frames", "-m", "4,1", "-v", "60,10", "-e", "2/3", "--exact", "--format", "json",
+    ]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let json: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let frames = json["frames"].as_array().unwrap();
+    let names = [
+        "lab",
+        "rest-in:1",
+        "rest-in:2",
+        "com",
+        "rest-fin:1",
+        "rest-fin:2",
+    ];
+    let w3 = [0, 180, 30, 150, 130, 230];
+    assert_eq!(frames.len(), names.len());
+    let pair = |a3: i64, b3: i64| serde_json::json!([fraction(a3, 3), fraction(b3, 3)]);
+    let ke = |a3: i64, b3: i64| fraction(4 * a3 * a3 + b3 * b3, 18);
+    for ((frame, name), w3) in frames.iter().zip(names).zip(w3) {
+        let (in1, in2, com, fin1, fin2) = (180 - w3, 30 - w3, 150 - w3, 130 - w3, 230 - w3);
+        assert_eq!(frame["name"], name);
+        assert_eq!(frame["w"], fraction(w3, 3), "{name}");
+        assert_eq!(frame["in"], pair(in1, in2), "{name}");
+        assert_eq!(frame["com"], pair(com, com), "{name}");
+        assert_eq!(frame["fin"], pair(fin1, fin2), "{name}");
+        let energy = &frame["energy"];
+        assert_eq!(energy["in"], ke(in1, in2), "{name}");
+        assert_eq!(energy["fin"], ke(fin1, fin2), "{name}");
+        assert_eq!(energy["com"], ke(com, com), "{name}");
+        assert_eq!(
+            (&energy["crunch"], &energy["lost"]),
+            (&"1000".into(), &"5000/9".into())
+        );
+        // The text the example prints shows the same fractions.
+        for value in [fraction(fin1, 3), ke(fin1, fin2)] {
+            assert!(
+                text.stdout.contains(&value),
+                "{example}: no {value} ({name})"
+            );
+        }
+    }
+    let invariants = &json["invariants"];
+    assert_eq!(invariants["restitution"], "2/3");
+    assert_eq!(invariants["relative_velocity"], "50");
+}
+
+#[test]
+fn scene_help_example_gives_one_json_object_per_scene() {
+    // `collide scene scenarios/*.toml --format json`: an array in file order, one object per
+    // scene that checks numbers ([sweep] scenes write tables and are left out), each with as
+    // many checks as its [expect] table has keys, all passed.
+    let (_, run) = run_help_example("scene", "collide scene scenarios/*.toml --format json");
+    let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    let reports = json.as_array().expect("an array for several scenes");
+    let mut files: Vec<_> = std::fs::read_dir("scenarios")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    let mut scenes = Vec::new();
+    for file in files {
+        let scene: toml::Table = std::fs::read_to_string(&file).unwrap().parse().unwrap();
+        if !scene.contains_key("sweep") {
+            scenes.push((file, scene));
+        }
+    }
+    assert_eq!(reports.len(), scenes.len());
+    for (report, (file, scene)) in reports.iter().zip(&scenes) {
+        let name = file.display().to_string();
+        assert_eq!(report["scene"], name.as_str());
+        assert_eq!(report["title"], scene["title"].as_str().unwrap(), "{name}");
+        let expected = scene["expect"].as_table().unwrap().len();
+        assert_eq!(report["checks"], expected, "{name}");
+        assert_eq!(report["failed"], serde_json::json!([]), "{name}");
+        assert!(report["report"].is_object(), "{name}");
+    }
+}
+
+#[test]
+fn plot_help_example_writes_the_pinned_picture() {
+    // `collide plot -m 4,1 -v 60,10 -o case-a.svg` writes exactly the README's picture
+    // (examples/case-a.svg, whose geometry tests/suite/plot.rs checks) and prints nothing.
+    let (sandbox, run) = run_help_example("plot", "collide plot -m 4,1 -v 60,10 -o case-a.svg");
+    assert_eq!(run.stdout, "");
+    let written = std::fs::read(sandbox.dir.join("case-a.svg")).unwrap();
+    assert!(written == std::fs::read("examples/case-a.svg").unwrap());
+}
+
+/// The guide's exit-status table (docs/cli.md): `(status, meaning)`, Markdown removed.
+fn guide_exit_statuses() -> Vec<(String, String)> {
+    let page = std::fs::read_to_string("docs/cli.md").unwrap();
+    let section = page
+        .split("\n## Exit status\n")
+        .nth(1)
+        .expect("## Exit status");
+    section
+        .lines()
+        .take_while(|l| !l.starts_with("## "))
+        .filter_map(|l| {
+            let cells: Vec<&str> = l.strip_prefix("| ")?.split(" | ").collect();
+            let status = cells.first()?.trim();
+            status.parse::<u8>().ok()?;
+            let meaning = cells[1..].join(" | ");
+            let meaning = meaning.trim_end_matches(" |").replace("\\|", "|");
+            Some((status.to_string(), words(&meaning)))
+        })
+        .collect()
+}
+
+#[test]
+fn help_and_man_page_state_the_guides_exit_statuses() {
+    let guide = guide_exit_statuses();
+    let statuses: BTreeSet<&str> = guide.iter().map(|(s, _)| s.as_str()).collect();
+    assert_eq!(statuses, BTreeSet::from(["0", "1", "2", "130"]));
+    // collide --help: after "Exit status:", the same lines, in the same order.
+    let help = stdout(&["--help"]);
+    let block = help.split_once("Exit status:\n").expect("Exit status:").1;
+    let stated = words(block);
+    let expected = guide
+        .iter()
+        .map(|(s, m)| format!("{s} {m}"))
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert_eq!(stated, expected, "collide --help against docs/cli.md");
+    // The man page: one .TP paragraph per status, roff escapes undone.
+    let page = stdout(&["man"]);
+    let section = page.split(".SH \"EXIT STATUS\"\n").nth(1).unwrap();
+    let section: Vec<String> = section
+        .lines()
+        .take_while(|l| !l.starts_with(".SH"))
+        .filter(|l| *l != ".TP")
+        .map(|l| {
+            l.trim_start_matches(".B ")
+                .replace("\\-", "-")
+                .replace("\\e", "\\")
+        })
+        .collect();
+    assert_eq!(
+        words(&section.join(" ")),
+        expected,
+        "collide man against docs/cli.md"
+    );
+}
+
+/// `1000000` as `1,000,000`.
+fn grouped(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+#[test]
+fn the_guides_limits_give_the_helps_defaults() {
+    // `--help` prints each cap's default from the constant the code uses; the limits table in
+    // the guide must give the same number (it once said 1,000,000 where the code had 1e10).
+    assert_eq!(grouped(10_000_000_000), "10,000,000,000");
+    assert_eq!(grouped(100), "100");
+    let page = std::fs::read_to_string("docs/accuracy.md").unwrap();
+    for (sub, flag) in [
+        ("sweep", "--max-rows"),
+        ("track", "--max-collisions"),
+        ("contact", "--max-steps"),
+    ] {
         let help = stdout(&[sub, "--help"]);
+        let after = help.split_once(&format!("{flag} <N>")).unwrap().1;
+        let default: u64 = after
+            .split_once("[default: ")
+            .and_then(|(_, rest)| rest.split_once(']'))
+            .and_then(|(n, _)| n.parse().ok())
+            .unwrap_or_else(|| panic!("{sub} --help gives {flag} no default"));
+        let row = page
+            .lines()
+            .find(|l| l.starts_with('|') && l.contains(&format!("`{flag}` (default")))
+            .unwrap_or_else(|| panic!("docs/accuracy.md has no limits row for {flag}"));
         assert!(
-            help.contains("Examples:\n  collide "),
-            "{sub} --help has no examples"
+            row.contains(&format!("`{flag}` (default {})", grouped(default))),
+            "docs/accuracy.md says {row}; {sub} --help says {default}"
         );
     }
 }
