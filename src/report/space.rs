@@ -485,10 +485,12 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
         }
         m.insert("energy".into(), Value::Object(energy));
     }
-    if show.angles && o.dim >= 2 && o.bodies() == 2 {
-        if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
-            m.insert("angle_between_deg".into(), json!(t));
-        }
+    if show.angles
+        && o.dim >= 2
+        && o.bodies() == 2
+        && let Some(t) = angle_between(&o.fin[0], &o.fin[1])
+    {
+        m.insert("angle_between_deg".into(), json!(t));
     }
     style.checked(Value::Object(m))
 }

@@ -94,9 +94,8 @@ impl Poly {
 
     /// The product, refused above degree 2.
     pub fn mul(&self, o: &Poly) -> Result<Poly, TooNonlinear> {
-        if (!self.is_linear() && !(o.lin.is_empty() && o.is_linear()))
-            || (!o.is_linear() && !(self.lin.is_empty() && self.is_linear()))
-        {
+        let constant = |p: &Poly| p.lin.is_empty() && p.is_linear();
+        if !(self.is_linear() || constant(o)) || !(o.is_linear() || constant(self)) {
             return Err(TooNonlinear);
         }
         let mut p = self.scale(&o.c).add(&o.scale(&self.c));

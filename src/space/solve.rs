@@ -328,9 +328,9 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
             eqs.push((Law::Tangential(k), p));
         }
     } else if e_value.as_ref().is_some_and(Zero::is_zero) {
-        for i in 1..n {
-            for k in 0..dim {
-                eqs.push((Law::Stick(i, k), fin[i][k].sub(&fin[0][k])));
+        for (i, f) in fin.iter().enumerate().skip(1) {
+            for (k, (fk, f0)) in f.iter().zip(&fin[0]).enumerate() {
+                eqs.push((Law::Stick(i, k), fk.sub(f0)));
             }
         }
     } else if e_value.as_ref().is_some_and(|q| *q == Q::ONE) || (e.is_none() && !fin_given) {

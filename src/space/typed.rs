@@ -86,7 +86,7 @@ pub fn split_bodies(text: &str) -> Result<Vec<&str>, TypedError> {
 /// Whether a list of bodies is more than the two numbers of a 1D two-body case: a vector, a
 /// polar velocity, or a count other than two.
 pub fn is_spatial(text: &str) -> bool {
-    split_bodies(text).is_ok_and(|b| b.len() != 2 || b.iter().any(|s| s.contains(['(', '@'])))
+    split_bodies(text).is_ok_and(|b| b.len() > 2 || b.iter().any(|s| s.contains(['(', '@'])))
 }
 
 impl Typed {
@@ -263,6 +263,7 @@ mod tests {
         assert!(split_bodies("4,,1").is_err());
         assert!(is_spatial("(4,1),0"));
         assert!(is_spatial("1,2,3"));
+        assert!(!is_spatial("1"));
         assert!(is_spatial("6 m/s @ 30deg,0"));
         assert!(!is_spatial("60 mph,10 mph"));
     }

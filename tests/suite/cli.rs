@@ -50,9 +50,10 @@ fn bad_masses() {
         &["'1e999'", "too large"],
     );
     refused(&["solve", "-m", "4", "-v", "1,2"], &["expected 2", "got 1"]);
+    // Three masses are three bodies (the plane and N bodies): their velocities must match.
     refused(
         &["solve", "-m", "4,1,1", "-v", "1,2"],
-        &["expected 2", "got 3"],
+        &["--masses has 3 values", "--velocities 2", "one per body"],
     );
 }
 
