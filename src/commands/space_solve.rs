@@ -26,7 +26,6 @@ enum Verdict {
 pub fn run(args: &SolveArgs) -> Result<Outcome> {
     let refused = [
         (args.frame != collide::frame::Frame::Lab, "--frame"),
-        (args.reverse, "--reverse"),
         (args.plot.is_some(), "--plot"),
         (args.contact_time.is_some(), "--contact-time"),
         (args.case.gravity.is_some(), "--gravity"),
@@ -119,6 +118,9 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
                     continue;
                 }
                 out.push_str(&report::text(o, show, &style, &units)?);
+                if args.reverse {
+                    out.push_str(&report::reverse_text(o, &style)?);
+                }
             }
             Ok(Outcome {
                 stdout: out,
@@ -133,6 +135,9 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
                     report::json(o, show, &style)?
                 };
                 let m = j.as_object_mut().expect("an object");
+                if args.reverse && !inconsistent {
+                    m.insert("reverse".into(), report::reverse_json(o, &style)?);
+                }
                 if !asked.is_empty() {
                     m.insert("solved".into(), solved_json(o, &asked, &style));
                 }

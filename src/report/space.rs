@@ -407,6 +407,71 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
     style.checked(out)
 }
 
+/// The time-reversed event (t -> -t: every velocity negated, IN and FIN trade places, e' = 1/e).
+pub fn reverse_text(o: &Outcome, style: &Style) -> Result<String, Overflow> {
+    let r = o.reversed();
+    let a = o.approx;
+    let mut b = Block::new("Time reversed (t -> -t: V -> -V, IN and FIN trade places)").fit(WIDTH);
+    for (i, v) in r.v_in.iter().enumerate() {
+        b.row(
+            format!("v{}  = -v{}'", i + 1, i + 1),
+            vector(style, v, a),
+            "",
+        );
+    }
+    for (i, v) in r.fin.iter().enumerate() {
+        b.row(
+            format!("v{}' = -v{}", i + 1, i + 1),
+            vector(style, v, a),
+            "",
+        );
+    }
+    match (&o.e, &r.e) {
+        (Some(_), Some(e)) if *e > Q::ONE => b.row(
+            "e'",
+            style.show(e, a),
+            "= 1/e > 1: an explosion, not a collision",
+        ),
+        (Some(_), Some(e)) => b.row("e'", style.show(e, a), "= 1/e"),
+        (Some(_), None) => b.row(
+            "e'",
+            "undefined",
+            "1/e with e = 0: the stuck bodies fly apart",
+        ),
+        _ => {}
+    }
+    let lost = o.lost();
+    if lost.is_positive() {
+        b.row(
+            "energy gained",
+            style.show(&style.energy(&lost), a),
+            "= the original's energy lost",
+        );
+    }
+    let mut out = String::new();
+    b.render(&mut out);
+    style.checked(out)
+}
+
+/// The reversed event's JSON: `{"in", "fin", "restitution"}`.
+pub fn reverse_json(o: &Outcome, style: &Style) -> Result<Value, Overflow> {
+    let r = o.reversed();
+    let a = o.approx;
+    let vecs = |vs: &[Vec<Q>]| -> Value {
+        vs.iter()
+            .map(|v| v.iter().map(|x| style.json(x, a)).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+            .into()
+    };
+    let mut m = Map::new();
+    m.insert("in".into(), vecs(&r.v_in));
+    m.insert("fin".into(), vecs(&r.fin));
+    if let Some(e) = &r.e {
+        m.insert("restitution".into(), style.json(e, a));
+    }
+    style.checked(Value::Object(m))
+}
+
 /// The report as a JSON object.
 pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
     let a = o.approx;

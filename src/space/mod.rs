@@ -10,6 +10,7 @@
 
 pub mod algebra;
 pub mod angle;
+pub mod impact;
 pub mod outcome;
 pub mod pose;
 pub mod solve;

@@ -502,3 +502,48 @@ fn the_plane_picture_draws_every_arrow_inside() {
     assert!((drawn - true_angle).abs() < 0.01, "{drawn} vs {true_angle}");
     let _ = collide();
 }
+
+#[test]
+fn the_reversed_event_is_a_collision_with_restitution_one_over_e() {
+    // Solving the reversed IN with e' = 1/e along the same line gives the reversed FIN exactly,
+    // and reversing that again gives the original (t -> -t twice is the identity).
+    let j = json(&[
+        "-m",
+        "2,3",
+        "-v",
+        "(5,1),(-1,2)",
+        "--normal",
+        "(3,1)",
+        "-e",
+        "2/5",
+        "--exact",
+        "--reverse",
+    ]);
+    let r = &j["reverse"];
+    assert_eq!(r["restitution"], "5/2");
+    let vec_text = |b: &Value| {
+        let c: Vec<&str> = b
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_str().unwrap())
+            .collect();
+        format!("({})", c.join(","))
+    };
+    let vin = format!("{},{}", vec_text(&r["in"][0]), vec_text(&r["in"][1]));
+    let again = json(&[
+        "-m",
+        "2,3",
+        "-v",
+        &vin,
+        "--normal",
+        "(3,1)",
+        "-e",
+        "5/2",
+        "--exact",
+        "--reverse",
+    ]);
+    assert_eq!(again["fin"], r["fin"]);
+    assert_eq!(again["reverse"]["in"], j["in"]);
+    assert_eq!(again["reverse"]["fin"], j["fin"]);
+}
