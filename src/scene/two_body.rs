@@ -3,7 +3,7 @@
 
 use std::fmt;
 use std::ops::Range;
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 use serde::Deserialize;
 use toml::Spanned;
@@ -389,11 +389,39 @@ const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, mom
 /// file's folder), must be an `.svg`, and may replace only an SVG file: scenes are shared as
 /// graders, and one must not be able to overwrite a user's other files.
 fn confine_plot(scene: &Path, mut p: PlotTable) -> Result<PlotTable, String> {
-    if p.output.is_relative() {
-        let folder = scene.parent().unwrap_or(Path::new(""));
-        p.output = folder.join(&p.output);
+    let typed = p.output.display().to_string();
+    let beside = p
+        .output
+        .components()
+        .all(|c| matches!(c, Component::Normal(_) | Component::CurDir));
+    if !beside {
+        return Err(format!(
+            "output '{typed}' must be a file name relative to the scene's folder, without '..' \
+             (a scene's picture goes beside the scene)"
+        ));
     }
+    // A scene read from standard input or a pipe has no folder of its own: the current one.
+    let folder = match scene.parent() {
+        Some(f) if std::fs::metadata(scene).is_ok_and(|m| m.is_file()) => f,
+        _ => Path::new(""),
+    };
+    p.output = folder.join(&p.output);
     let shown = p.output.display().to_string();
+    // Nor through a symlinked subfolder.
+    let real = |f: &Path| {
+        std::fs::canonicalize(if f.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            f
+        })
+    };
+    if let (Ok(base), Some(Ok(parent))) = (real(folder), p.output.parent().map(real))
+        && !parent.starts_with(&base)
+    {
+        return Err(format!(
+            "output '{typed}' leads out of the scene's folder (through a symbolic link)"
+        ));
+    }
     if p.output
         .extension()
         .is_none_or(|x| !x.eq_ignore_ascii_case("svg"))

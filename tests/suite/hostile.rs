@@ -661,3 +661,48 @@ fn toml_numbers_follow_the_command_line_rule() {
     let (code, _, err) = run(&["scene", p.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
 }
+
+// Issue 24 §2: files. Nothing written where it must not be, nothing left behind.
+
+/// A fresh empty folder for one test.
+fn folder(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("collide-files-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_scene_picture_cannot_leave_the_scene_folder() {
+    let dir = folder("plot-escape");
+    let scenes = dir.join("scenes");
+    let other = dir.join("other");
+    std::fs::create_dir_all(&scenes).unwrap();
+    std::fs::create_dir_all(&other).unwrap();
+    // An SVG picture elsewhere, which an absolute path or `..` overwrote.
+    let important = other.join("important.svg");
+    std::fs::write(&important, "<svg>mine</svg>").unwrap();
+    std::os::unix::fs::symlink(&other, scenes.join("link")).unwrap();
+    for output in [
+        important.display().to_string(),
+        "../other/important.svg".to_string(),
+        "sub/../../other/important.svg".to_string(),
+        "link/important.svg".to_string(),
+    ] {
+        let p = scenes.join("escape.toml");
+        std::fs::write(
+            &p,
+            format!("masses = [4, 1]\nvelocities = [60, 10]\n[plot]\noutput = \"{output}\"\n"),
+        )
+        .unwrap();
+        let (code, out, err) = run(&["scene", p.to_str().unwrap()]);
+        assert_eq!(code, 2, "{output}: {out}");
+        assert!(out.is_empty(), "{output}: {out}");
+        assert!(err.contains("[plot]") && err.contains(&output), "{err}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(&important).unwrap(),
+        "<svg>mine</svg>"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
