@@ -706,3 +706,196 @@ fn a_scene_picture_cannot_leave_the_scene_folder() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Starts a 100 M-row sweep into `out` and waits until its temporary file exists; `limit` runs
+/// in the child before it starts (a resource limit, another user).
+fn start_writing(
+    dir: &std::path::Path,
+    out: &std::path::Path,
+    limit: impl Fn() -> std::io::Result<()> + Send + Sync + 'static,
+) -> std::process::Child {
+    use std::os::unix::process::CommandExt;
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    let mut cmd = std::process::Command::new(bin);
+    cmd.args([
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "v1=1:100:1000",
+        "--vary",
+        "v2=1:10:1000",
+        "--vary",
+        "e=0:1:100",
+        "--max-rows",
+        "100000000",
+        "-o",
+    ])
+    .arg(out)
+    .current_dir(dir)
+    .stdout(std::process::Stdio::null())
+    .stderr(std::process::Stdio::piped());
+    // SAFETY: `limit` only makes system calls (setrlimit, setuid), which are safe after fork.
+    unsafe { cmd.pre_exec(limit) };
+    cmd.spawn().unwrap()
+}
+
+/// Whether `dir` holds a `.partial` file.
+fn partial_in(dir: &std::path::Path) -> bool {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .any(|e| e.file_name().to_string_lossy().ends_with(".partial"))
+}
+
+/// No core files from the signals that dump core by default.
+fn no_core() -> std::io::Result<()> {
+    let zero = libc::rlimit {
+        rlim_cur: 0,
+        rlim_max: 0,
+    };
+    // SAFETY: setrlimit reads the structure above.
+    unsafe { libc::setrlimit(libc::RLIMIT_CORE, &zero) };
+    Ok(())
+}
+
+#[test]
+fn every_terminating_signal_removes_the_partial_file() {
+    use std::os::unix::process::ExitStatusExt;
+    // SIGQUIT, SIGUSR1, SIGALRM left 100-170 MB `.FILE.PID.partial` files; each signal must
+    // remove it and end the run by that same signal (the shell's 128 + N).
+    let mut signals = vec![
+        libc::SIGQUIT,
+        libc::SIGUSR1,
+        libc::SIGUSR2,
+        libc::SIGALRM,
+        libc::SIGVTALRM,
+        libc::SIGPROF,
+        libc::SIGXCPU,
+        libc::SIGIO,
+        libc::SIGPWR,
+        libc::SIGABRT,
+        libc::SIGRTMIN(),
+        libc::SIGRTMAX(),
+    ];
+    signals.extend([libc::SIGINT, libc::SIGTERM, libc::SIGHUP]);
+    for sig in signals {
+        let dir = folder(&format!("sig-{sig}"));
+        let out = dir.join("big.csv");
+        let mut child = start_writing(&dir, &out, no_core);
+        let mut waited = 0;
+        while !partial_in(&dir) && waited < 600 {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            waited += 1;
+        }
+        assert!(
+            partial_in(&dir),
+            "signal {sig}: the run never started writing"
+        );
+        // SAFETY: kill sends a signal to our own child.
+        unsafe { libc::kill(child.id() as libc::pid_t, sig) };
+        let status = child.wait().unwrap();
+        assert_eq!(status.signal(), Some(sig), "signal {sig}: {status:?}");
+        assert!(
+            !partial_in(&dir) && !out.exists(),
+            "signal {sig}: a file was left behind"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
+
+#[test]
+fn a_file_size_limit_is_an_error_and_leaves_nothing() {
+    // `ulimit -f 1000; collide sweep ... -o out.csv` died by SIGXFSZ (exit 153), no message, a
+    // partial file left behind.
+    let dir = folder("fsize");
+    let out = dir.join("out.csv");
+    let child = start_writing(&dir, &out, || {
+        let limit = libc::rlimit {
+            rlim_cur: 100_000,
+            rlim_max: 100_000,
+        };
+        // SAFETY: setrlimit reads the structure above.
+        unsafe { libc::setrlimit(libc::RLIMIT_FSIZE, &limit) };
+        Ok(())
+    });
+    let result = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{:?}: {err}", result.status);
+    assert!(
+        err.contains("cannot write") && err.contains("ulimit -f"),
+        "{err}"
+    );
+    assert!(!partial_in(&dir) && !out.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn standard_streams_are_written_directly_when_they_are_pipes() {
+    // `-o /dev/stdout` followed /proc/self/fd/1 to "pipe:[N]" and failed with "No such file or
+    // directory". Here stdout and stderr are pipes.
+    let whole = common::stdout(&["sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3"]);
+    for name in ["/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"] {
+        let (code, out, err) = run(&[
+            "sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3", "-o", name,
+        ]);
+        assert_eq!((code, out.as_str()), (0, whole.as_str()), "{name}: {err}");
+    }
+    let (code, out, err) = run(&[
+        "track",
+        "-m",
+        "1,3",
+        "-x",
+        "1,2",
+        "-v",
+        "0,-1",
+        "--left-wall",
+        "0",
+        "--log",
+        "/dev/stderr",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("After 5 collisions"), "{out}");
+    // m/M = 1/3: theta = pi/6, 5 collisions, each a line after the header.
+    assert!(err.starts_with("n,t,who,v_before,v_after\n"), "{err}");
+    assert_eq!(err.lines().count(), 6, "{err}");
+}
+
+#[test]
+fn a_writable_file_in_a_read_only_folder_is_written_in_place() {
+    use std::os::unix::fs::PermissionsExt;
+    use std::os::unix::process::CommandExt;
+    // It said only "Permission denied": the temporary file cannot be created beside it.
+    let dir = folder("read-only");
+    let file = dir.join("f.csv");
+    std::fs::write(&file, "old\n").unwrap();
+    std::fs::set_permissions(&file, std::fs::Permissions::from_mode(0o666)).unwrap();
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o555)).unwrap();
+    let mut cmd = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"));
+    cmd.args([
+        "sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3", "-o",
+    ])
+    .arg(&file);
+    // Root writes anywhere: run as nobody, for whom the folder is read-only.
+    // SAFETY: geteuid, setgid and setuid are system calls, safe after fork.
+    if unsafe { libc::geteuid() } == 0 {
+        unsafe {
+            cmd.pre_exec(|| {
+                if libc::setgid(65534) != 0 || libc::setuid(65534) != 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+                Ok(())
+            })
+        };
+    }
+    let result = cmd.output().unwrap();
+    let err = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(0), "{err}");
+    assert!(err.contains("in place"), "{err}");
+    let whole = common::stdout(&["sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3"]);
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), whole);
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o755)).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
