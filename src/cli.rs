@@ -17,7 +17,7 @@ use collide::restitution::Restitution;
 use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
-use collide::table::writer::RowFormat;
+use collide::table::writer::{Header, RowFormat};
 use collide::units::{Dimension, Pair, parse_pair};
 
 #[derive(Parser, Debug)]
@@ -242,9 +242,9 @@ pub struct TableArgs {
     #[arg(long, value_delimiter = ',', value_name = "COLUMNS", value_parser = ColumnParser)]
     pub columns: Vec<&'static Column>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = RowFormat::Csv)]
-    pub format: RowFormat,
+    /// Output format [default: from -o's extension (.csv, .jsonl, .ndjson), else csv]
+    #[arg(long, value_enum)]
+    pub format: Option<RowFormat>,
 
     /// Write to FILE atomically (a temporary file renamed into place when complete)
     #[arg(short, long, value_name = "FILE")]
@@ -253,6 +253,12 @@ pub struct TableArgs {
     /// Report each bad row on stderr and go on (default: stop at the first, exit 2)
     #[arg(long)]
     pub skip_bad: bool,
+
+    /// Which shards carry the header line (CSV, text) [default: always when -o names a file, so
+    /// each shard file reads on its own; first on stdout, so shards concatenate to the whole
+    /// table]
+    #[arg(long, value_enum)]
+    pub header: Option<Header>,
 }
 
 #[derive(Args, Debug)]
@@ -270,12 +276,14 @@ pub struct SweepArgs {
     )]
     pub vary: Vec<Vary>,
 
-    /// Only the K-th of N contiguous slices of the rows (K from 1); the shards concatenated in
-    /// order are the whole table (shard 1 carries the header)
+    /// Only the K-th of N contiguous slices of the rows (K from 1); on stdout the shards
+    /// concatenated in order are the whole table, and each shard file written with -o carries
+    /// the header (see --header)
     #[arg(long, value_name = "K/N", default_value = "1/1")]
     pub shard: Shard,
 
-    /// Refuse sweeps of more rows than this
+    /// Refuse sweeps of more rows than this (a typo must not start a 730 GB file: 1e8 CSV rows
+    /// are about 7 GB)
     #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_ROWS)]
     pub max_rows: u64,
 
@@ -478,13 +486,14 @@ pub struct SolveArgs {
 
 #[derive(Args, Debug)]
 pub struct SceneArgs {
-    /// Scene files (TOML)
+    /// Scene files (TOML); '-' for standard input
     #[arg(required = true, value_name = "FILE.toml", value_hint = clap::ValueHint::FilePath)]
     pub files: Vec<PathBuf>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    /// Output format of the reports [default: text] (a [sweep] scene run alone writes its table
+    /// in its own format)
+    #[arg(long, value_enum)]
+    pub format: Option<Format>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -49,10 +49,14 @@ pub struct About {
 /// Largest scene file read (`/dev/zero` or a stray binary is refused, not read forever).
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 
-/// A scene file's text, at most [`MAX_SCENE_BYTES`].
+/// A scene file's text (`-`: standard input), read once, at most [`MAX_SCENE_BYTES`].
 fn read_capped(path: &Path) -> Result<String, String> {
     use std::io::Read;
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read scene file: {e}"))?;
+    let file: Box<dyn Read> = if path == Path::new("-") {
+        Box::new(std::io::stdin())
+    } else {
+        Box::new(std::fs::File::open(path).map_err(|e| format!("cannot read scene file: {e}"))?)
+    };
     let mut bytes = Vec::new();
     file.take(MAX_SCENE_BYTES + 1)
         .read_to_end(&mut bytes)
@@ -248,8 +252,16 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 
 impl Scene {
     /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]` or a `[contact]`.
+    /// `path` is read once (a FIFO, `/dev/stdin`, `<(cat x.toml)`); `-` is standard input,
+    /// named `<stdin>` in messages and reports.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
-        let text = read_capped(path).map_err(|message| SceneError {
+        let text = read_capped(path);
+        let path = if path == Path::new("-") {
+            Path::new("<stdin>")
+        } else {
+            path
+        };
+        let text = text.map_err(|message| SceneError {
             path: path.to_path_buf(),
             at: None,
             message,

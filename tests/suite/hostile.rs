@@ -899,3 +899,62 @@ fn a_writable_file_in_a_read_only_folder_is_written_in_place() {
     std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o755)).unwrap();
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+// Issue 24 §3: every input read once, every run bounded.
+
+#[test]
+fn a_scene_is_read_once_from_a_fifo_a_pipe_or_standard_input() {
+    use crate::resources::{DEADLINE, Feeder, folder, mkfifo, watched};
+    use std::io::Write;
+    use std::process::Stdio;
+    // `collide scene FIFO` hung (the file was opened twice); `<(cat x.toml)` and `cat x.toml |
+    // collide scene /dev/stdin` read it empty the second time: "missing field velocities".
+    let text = std::fs::read("scenarios/fig-1-3-elastic.toml").unwrap();
+    let expected = common::stdout(&["scene", "scenarios/fig-1-3-elastic.toml"]);
+    let dir = folder("scene-fifo");
+    let fifo = dir.join("scene.toml");
+    mkfifo(&fifo);
+    let feeder = Feeder::start(&fifo, text.clone(), false);
+    let f = watched(&["scene", fifo.to_str().unwrap()], Stdio::null(), DEADLINE);
+    feeder.release();
+    assert!(!f.timed_out, "a FIFO scene hung");
+    assert_eq!(
+        (f.code, f.stdout.as_str()),
+        (Some(0), expected.as_str()),
+        "{}",
+        f.stderr
+    );
+    for name in ["/dev/stdin", "-"] {
+        let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"))
+            .args(["scene", name])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(&text).unwrap();
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{name}: {err}");
+        assert_eq!(String::from_utf8_lossy(&out.stdout), expected, "{name}");
+    }
+    // The issue's process substitution, where a shell is at hand.
+    if std::path::Path::new("/bin/bash").exists() {
+        let bin = assert_cmd::cargo::cargo_bin("collide");
+        let out = std::process::Command::new("/bin/bash")
+            .arg("-c")
+            .arg(format!(
+                "'{}' scene <(cat scenarios/fig-1-3-elastic.toml)",
+                bin.display()
+            ))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        assert_eq!(String::from_utf8_lossy(&out.stdout), expected);
+    }
+    // A bad scene on standard input is named <stdin>; '-' is read once.
+    let (code, _, err) = run(&["scene", "-", "-"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("'-' once"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

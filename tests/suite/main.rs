@@ -15,6 +15,7 @@ mod plot;
 mod problems;
 mod properties;
 mod readme;
+mod resources;
 mod shell;
 mod tables;
 mod track;
