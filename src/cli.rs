@@ -149,8 +149,9 @@ pub struct PiArgs {
     #[arg(value_name = "N", value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub n: u32,
 
-    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes]
-    #[arg(long, overrides_with = "no_simulate")]
+    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes;
+    /// refused above 10]
+    #[arg(long, conflicts_with = "no_simulate")]
     pub simulate: bool,
 
     /// Give the count only, without simulating
