@@ -958,3 +958,33 @@ fn a_scene_is_read_once_from_a_fifo_a_pipe_or_standard_input() {
     assert!(err.contains("'-' once"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn accuracy_keeps_to_its_budget_or_says_what_fits() {
+    use crate::resources::bounded;
+    // `accuracy --cases 100000 --budget-ms 1` took 38 s and 270 MB: the exact references alone
+    // took far longer than the budget.
+    let f = bounded(&["accuracy", "--cases", "100000", "--budget-ms", "1"]);
+    assert!(!f.timed_out);
+    assert_eq!(f.code, Some(2), "{}", f.stderr);
+    assert!(
+        f.stdout.is_empty()
+            && f.stderr.contains("--cases 100000 would spend about")
+            && f.stderr.contains("or fewer"),
+        "{}",
+        f.stderr
+    );
+    // The refusal comes before the cases are drawn: a few MB, not hundreds.
+    assert!(f.max_rss_kb < 50 * 1024, "{} kB", f.max_rss_kb);
+    // A small report within a small budget runs.
+    let f = bounded(&[
+        "accuracy",
+        "--cases",
+        "4",
+        "--budget-ms",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(f.code, Some(0), "{}", f.stderr);
+}
