@@ -99,6 +99,21 @@ pub fn bounded(args: &[&str]) -> Finished {
     watched(args, Stdio::null(), DEADLINE)
 }
 
+/// Runs `collide args` and checks that it is refused at once: ended by itself with exit 2,
+/// nothing on stdout, `says` on stderr.
+#[track_caller]
+pub fn refused(args: &[&str], says: &str) -> Finished {
+    let f = bounded(args);
+    assert!(!f.timed_out, "{args:?}: still running after {DEADLINE:?}");
+    assert_eq!(f.code, Some(2), "{args:?}: {}", f.stderr);
+    assert!(
+        f.stdout.is_empty() && f.stderr.contains(says),
+        "{args:?}: {}",
+        f.stderr
+    );
+    f
+}
+
 /// A fresh folder for one test.
 pub fn folder(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("collide-res-{}-{name}", std::process::id()));
@@ -235,6 +250,17 @@ impl Place {
     }
 }
 
+/// A FIFO's feeder of endless zeros.
+fn feed(h: Hostile, path: &Path) -> Option<Feeder> {
+    (h == Hostile::Fifo).then(|| Feeder::start(path, vec![0; 1 << 16], true))
+}
+
+fn release(feeder: Option<Feeder>) {
+    if let Some(f) = feeder {
+        f.release();
+    }
+}
+
 /// Checks a run's end: by itself, with `code`, within the memory bound; nothing on stdout with
 /// exit 2.
 #[track_caller]
@@ -295,20 +321,10 @@ fn every_subcommand_on_hostile_standard_input() {
                 ("batch" | "scene", _) => 2,
                 _ => 0,
             };
-            let (stdin, feeder) = match h {
-                Hostile::Fifo => {
-                    let feeder = Feeder::start(&path, vec![0; 1 << 16], true);
-                    (
-                        Stdio::from(std::fs::File::open(&path).unwrap()),
-                        Some(feeder),
-                    )
-                }
-                _ => (Stdio::from(std::fs::File::open(&path).unwrap()), None),
-            };
+            let feeder = feed(h, &path);
+            let stdin = Stdio::from(std::fs::File::open(&path).unwrap());
             let f = watched(&args, stdin, DEADLINE);
-            if let Some(feeder) = feeder {
-                feeder.release();
-            }
+            release(feeder);
             check(&format!("{args:?} < {h:?}"), &f, expected);
         }
     }
@@ -330,11 +346,9 @@ fn input_files_that_are_hostile() {
             } else {
                 2
             };
-            let feeder = (h == Hostile::Fifo).then(|| Feeder::start(&path, vec![0; 1 << 16], true));
+            let feeder = feed(h, &path);
             let f = bounded(&[command, path.to_str().unwrap()]);
-            if let Some(feeder) = feeder {
-                feeder.release();
-            }
+            release(feeder);
             check(&format!("{command} {h:?}"), &f, expected);
         }
     }

@@ -422,7 +422,7 @@ fn run_with_stdin(args: &[&str], input: &[u8]) -> (i32, String, String) {
 
 #[test]
 fn a_batch_line_is_capped_and_a_read_error_ends_the_run() {
-    use crate::resources::{DEADLINE, bounded, watched};
+    use crate::resources::{DEADLINE, refused, watched};
     // `batch /dev/zero` grew to 2.1 GB and aborted; `batch . --input-format jsonl` looped for
     // ever on the read error.
     for (args, says) in [
@@ -454,14 +454,7 @@ fn a_batch_line_is_capped_and_a_read_error_ends_the_run() {
             "longer than",
         ),
     ] {
-        let f = bounded(&args);
-        assert!(!f.timed_out, "{args:?} still running");
-        assert_eq!(f.code, Some(2), "{args:?}: {}", f.stderr);
-        assert!(
-            f.stdout.is_empty() && f.stderr.contains(says),
-            "{args:?}: {}",
-            f.stderr
-        );
+        refused(&args, says);
     }
     let dir = std::fs::File::open(".").unwrap();
     let f = watched(&["batch"], Stdio::from(dir), DEADLINE);
@@ -597,7 +590,7 @@ fn the_output_name_gives_the_format_or_refuses_a_contradiction() {
 
 #[test]
 fn max_rows_refuses_more_than_1e8_rows_unless_raised() {
-    use crate::resources::bounded;
+    use crate::resources::refused;
     // The default was 1e10 (a typo could start a 730 GB file); the help, the behaviour and the
     // limit agree on 1e8.
     let help = ok(&["sweep", "--help"]);
@@ -611,16 +604,7 @@ fn max_rows_refuses_more_than_1e8_rows_unless_raised() {
         "--vary",
         "v1=1:2:1000000000",
     ];
-    let f = bounded(&billion);
-    assert!(!f.timed_out, "a 1e9-row sweep started writing");
-    assert_eq!(f.code, Some(2));
-    assert!(
-        f.stdout.is_empty()
-            && f.stderr
-                .contains("1.000e9 rows, more than --max-rows 100000000"),
-        "{}",
-        f.stderr
-    );
+    refused(&billion, "1.000e9 rows, more than --max-rows 100000000");
     // Raised, it runs: here its last row alone (shard 1e9 of 1e9), v1 = 2.
     let mut raised = billion.to_vec();
     raised.extend([
@@ -641,9 +625,7 @@ fn max_rows_refuses_more_than_1e8_rows_unless_raised() {
         "masses = [4, 1]\nvelocities = [60, 10]\n[sweep]\nvary = [\"v1=1:2:1000000000\"]\n",
     )
     .unwrap();
-    let f = bounded(&["scene", p.to_str().unwrap()]);
-    assert_eq!(f.code, Some(2), "{}", f.stderr);
-    assert!(f.stderr.contains("--max-rows 100000000"), "{}", f.stderr);
+    refused(&["scene", p.to_str().unwrap()], "--max-rows 100000000");
 }
 
 #[test]
