@@ -261,17 +261,19 @@ impl Output {
                 return Err(e);
             }
         };
-        if let Some(permissions) = keep {
-            created.set_permissions(permissions)?;
-        }
         let file = BufWriter::with_capacity(1 << 20, created);
-        Ok(Output::File {
+        let out = Output::File {
             tmp,
             slot,
             path,
             file,
             done: false,
-        })
+        };
+        // Dropped on an error: the temporary file is removed.
+        if let (Some(permissions), Output::File { file, .. }) = (keep, &out) {
+            file.get_ref().set_permissions(permissions)?;
+        }
+        Ok(out)
     }
 
     /// Whether the output is a file replaced as a whole (not stdout, a device or a descriptor).
