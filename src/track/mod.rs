@@ -22,6 +22,8 @@
 mod engine;
 pub mod motion;
 pub mod pi;
+mod schedule;
+mod zeno;
 
 use serde::Serialize;
 
