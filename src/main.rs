@@ -10,6 +10,8 @@ use clap::Parser;
 use collide::output::diagnostic;
 
 fn main() -> ExitCode {
+    // Signals remove partial output files; a file-size limit is an error, not a silent death.
+    collide::output::guard_signals();
     let cli = match cli::Cli::try_parse() {
         Ok(cli) => cli,
         // Usage errors on stderr (cut to a sane length), --help and --version on stdout; a

@@ -16,6 +16,7 @@ mod plot;
 mod problems;
 mod properties;
 mod readme;
+mod resources;
 mod shell;
 mod tables;
 mod track;
