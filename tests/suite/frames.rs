@@ -346,3 +346,41 @@ fn frames_energies_are_in_the_unit_the_label_names() {
     assert!(text.contains("energies in eV"), "{text}");
     assert!(text.contains(&collide::number::num(ev("2"))), "{text}");
 }
+
+#[test]
+fn frames_moving_with_com_or_fin_keep_every_digit_of_a_small_restitution() {
+    // m = (1, 2), V = (1, 0): V_COM = 1/3, IN_COM = (2/3, -1/3), FIN_COM = -e IN_COM; finally
+    // at rest FIN2 - FIN1 = e (V1 - V2) = e. FIN was the difference of lab velocities, which
+    // kept only their rounding: (3.08e-33, 0) in the COM frame for e = 1e-150.
+    for e in [1e-150, 1e-17, 0.5] {
+        let t: Table = serde_json::from_str(&stdout(&[
+            "frames",
+            "-m",
+            "1,2",
+            "-v",
+            "1,0",
+            "-e",
+            &format!("{e:e}"),
+            "--format",
+            "json",
+        ]))
+        .unwrap();
+        let row = |n: &str| t.frames.iter().find(|r| r.name == n).unwrap();
+        let rel = 4.0 * f64::EPSILON;
+        let com = row("com");
+        assert_close(com.fin[0], -e * 2.0 / 3.0, rel, "COM FIN1");
+        assert_close(com.fin[1], e / 3.0, rel, "COM FIN2");
+        assert_eq!(row("rest-fin:1").fin[0], 0.0);
+        assert_close(row("rest-fin:1").fin[1], e, rel, "rest-fin:1 FIN2");
+        assert_close(row("rest-fin:2").fin[0], -e, rel, "rest-fin:2 FIN1");
+        assert_eq!(row("rest-fin:2").fin[1], 0.0);
+        // COM in the finally-at-rest frames: V_COM - FIN1 = -e w2 d = 2e/3 (d = V2 - V1 = -1,
+        // w2 = m2 / M = 2/3).
+        assert_close(
+            row("rest-fin:1").com[0],
+            2.0 * e / 3.0,
+            rel,
+            "rest-fin:1 COM",
+        );
+    }
+}
