@@ -466,10 +466,12 @@ impl Setup {
                 let s = |i: usize| self.bodies[i].size;
                 let n = m.len();
                 let (spec, which, mu, reach) = match who {
+                    // m1 (m2 / (m1 + m2)): the product m1 m2 would underflow (1e-200 each)
+                    // or overflow (1e200) where the reduced mass does not.
                     Contact::Pair(i) => (
                         self.law,
                         "",
-                        m[i] * m[i + 1] / (m[i] + m[i + 1]),
+                        m[i] * (m[i + 1] / (m[i] + m[i + 1])),
                         (s(i) + s(i + 1)) / 2.0,
                     ),
                     Contact::LeftWall => (self.wall, "wall ", m[0], s(0) / 2.0),
@@ -630,8 +632,12 @@ fn too_short(slots: &[Slot], scales: &Scales) -> ContactError {
     {
         let contact = closed::Linear::new(*k, *c, *mu);
         // The fastest rate of a heavily damped contact is c/mu = 2 zeta omega0; its time
-        // scale pi / (c/mu) is SHORTEST at this zeta.
+        // scale pi / (c/mu) is SHORTEST at this zeta. Below zeta = 1 the undamped contact
+        // itself is too short: then the scales are the trouble.
         let zeta_max = std::f64::consts::PI / (SHORTEST * 2.0 * contact.omega0);
+        if zeta_max <= 1.0 {
+            return ContactError::TooShort(scales.t_min);
+        }
         return ContactError::TooDamped {
             t: scales.t_min,
             zeta: contact.zeta,

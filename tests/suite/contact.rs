@@ -802,3 +802,16 @@ fn work_precision_refuses_the_flags_of_a_single_run() {
         refused(&args(&line), &format!("{flag} is for one run"));
     }
 }
+
+#[test]
+fn the_reduced_mass_of_tiny_or_huge_masses_does_not_underflow() {
+    // mu = m1 m2 / (m1 + m2) underflowed to 0 for masses 1e-200 (the contact "lasted 0e0" and
+    // was refused); 1e200 overflowed. Elastic, equal masses: the bodies swap velocities.
+    for (m, k) in [("1e-200,1e-200", "1"), ("1e200,1e200", "1e200")] {
+        let j = run(&args(&format!(
+            "-m {m} -x 0,1 --sizes 1,1 -v 1,0 --stiffness {k}"
+        )));
+        let v = floats(&j["v"]);
+        assert!(v[0].abs() < 1e-8 && (v[1] - 1.0).abs() < 1e-8, "{m}: {v:?}");
+    }
+}
