@@ -142,7 +142,9 @@ fn several_json(checked: &[Checked], listed: &[Listed]) -> serde_json::Value {
 }
 
 fn solve(scene: Scene) -> Result<Checked> {
-    let sections = scene.sections_needed();
+    let mut sections = scene.sections_needed();
+    // energy_unit = "kJ": every energy in kJ, as the header says.
+    sections.energy_scale = scene.case.units.energy_scale();
     let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.about.path.display()))?;
     let mut text = result.text(&scene.case, &scene.show);
@@ -172,6 +174,7 @@ fn solve_special(scene: SpecialScene) -> Result<Checked> {
         compute.insert(s);
     }
     let event = scene.event.special();
+    compute.energy_scale = event.units().energy_scale();
     let result = event
         .render(&compute, &scene.show, scene.exact)
         .with_context(at)?;

@@ -78,15 +78,7 @@ fn read_capped(path: &Path) -> Result<String, String> {
 /// Text with its control characters escaped (`\u{1b}`): a shared scene cannot send escape
 /// sequences to a terminal.
 fn printable(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
+    crate::number::printable(text)
 }
 
 /// `[expect]` as written: JSON paths of the report, each with its value and place.
