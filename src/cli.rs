@@ -18,7 +18,7 @@ use collide::space::typed::Listed;
 use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
-use collide::table::writer::RowFormat;
+use collide::table::writer::{Header, RowFormat};
 use collide::units::Dimension;
 
 /// The exit statuses, for `collide --help` and the man page: the same words as the guide's table
@@ -29,8 +29,9 @@ pub const EXIT_STATUS: &str = "Exit status:
 was checked rather than used (solve and scene then print the checks and no collision)
   2    bad input or usage: a message on stderr names the bad value and says what is expected, \
 and nothing is written to stdout
-  130  interrupted by SIGINT, SIGTERM or SIGHUP while writing a file (-o, --log, --plot): the \
-unfinished file is removed";
+  130  interrupted by Ctrl-C (SIGINT) while writing a file (-o, --log, --plot): the unfinished \
+file is removed first; another catchable signal N does the same and exits with 128+N (143 for \
+SIGTERM)";
 
 #[derive(Parser, Debug)]
 #[command(
@@ -165,8 +166,9 @@ pub struct PiArgs {
     #[arg(value_name = "N", value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub n: u32,
 
-    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes]
-    #[arg(long, overrides_with = "no_simulate")]
+    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes;
+    /// refused above 10]
+    #[arg(long, conflicts_with = "no_simulate")]
     pub simulate: bool,
 
     /// Give the count only, without simulating
@@ -258,9 +260,9 @@ pub struct TableArgs {
     #[arg(long, value_delimiter = ',', value_name = "COLUMNS", value_parser = ColumnParser)]
     pub columns: Vec<&'static Column>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = RowFormat::Csv)]
-    pub format: RowFormat,
+    /// Output format [default: from -o's extension (.csv, .jsonl, .ndjson), else csv]
+    #[arg(long, value_enum)]
+    pub format: Option<RowFormat>,
 
     /// Write to FILE atomically (a temporary file renamed into place when complete)
     #[arg(short, long, value_name = "FILE")]
@@ -269,6 +271,12 @@ pub struct TableArgs {
     /// Report each bad row on stderr and go on (default: stop at the first, exit 2)
     #[arg(long)]
     pub skip_bad: bool,
+
+    /// Which shards carry the header line (CSV, text) [default: always when -o names a file, so
+    /// each shard file reads on its own; first on stdout, so shards concatenate to the whole
+    /// table]
+    #[arg(long, value_enum)]
+    pub header: Option<Header>,
 }
 
 #[derive(Args, Debug)]
@@ -286,12 +294,14 @@ pub struct SweepArgs {
     )]
     pub vary: Vec<Vary>,
 
-    /// Only the K-th of N contiguous slices of the rows (K from 1); the shards concatenated in
-    /// order are the whole table (shard 1 carries the header)
+    /// Only the K-th of N contiguous slices of the rows (K from 1); on stdout the shards
+    /// concatenated in order are the whole table, and each shard file written with -o carries
+    /// the header (see --header)
     #[arg(long, value_name = "K/N", default_value = "1/1")]
     pub shard: Shard,
 
-    /// Refuse sweeps of more rows than this
+    /// Refuse sweeps of more rows than this (a typo must not start a 730 GB file: 1e8 CSV rows
+    /// are about 7 GB)
     #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_ROWS)]
     pub max_rows: u64,
 
@@ -512,13 +522,14 @@ pub struct SolveArgs {
 
 #[derive(Args, Debug)]
 pub struct SceneArgs {
-    /// Scene files (TOML)
+    /// Scene files (TOML); '-' for standard input
     #[arg(required = true, value_name = "FILE.toml", value_hint = clap::ValueHint::FilePath)]
     pub files: Vec<PathBuf>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    /// Output format of the reports [default: text] (a [sweep] scene run alone writes its table
+    /// in its own format)
+    #[arg(long, value_enum)]
+    pub format: Option<Format>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

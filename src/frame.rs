@@ -65,8 +65,9 @@ impl fmt::Display for Frame {
 /// Why a text is not a frame.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
-    "frame '{0}' is not a frame: expected lab, com, rest-in:1, rest-in:2, rest-fin:1, rest-fin:2, \
-     or an observer velocity such as 2.5"
+    "frame '{}' is not a frame: expected lab, com, rest-in:1, rest-in:2, rest-fin:1, rest-fin:2, \
+     or an observer velocity such as 2.5",
+    crate::number::printable(.0)
 )]
 pub struct FrameError(pub String);
 

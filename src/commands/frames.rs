@@ -45,7 +45,16 @@ fn render<L: Lab>(
 where
     L::N: Agree,
 {
-    let t: FramesTable<L::N> = frames::table(lab, list, reverse)?;
+    let t: FramesTable<L::N> =
+        frames::table(lab, list, reverse, case.units.energy_scale().as_ref()).map_err(
+            |e| match e {
+                // frames has --exact but no --show.
+                frames::FramesError::Unrepresentable(u) => frames::FramesError::Unrepresentable(
+                    u.with_way_out("use --exact or rescale the units"),
+                ),
+                e => e,
+            },
+        )?;
     Ok(match format {
         Format::Json => json::render(&t),
         Format::Text => frames::text(case, &t),

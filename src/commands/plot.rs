@@ -26,6 +26,13 @@ pub fn run(args: PlotArgs) -> Result<Outcome> {
             format!("{kind:?}").to_lowercase()
         );
     }
+    if let Some(unit) = args.case.energy_unit {
+        anyhow::bail!(
+            "--energy-unit {}: a picture labels its energy ellipses in the case's own units (mass \
+             unit x velocity unit^2); give the energies in {0} with collide solve",
+            unit.name
+        );
+    }
     let case = args.case.into_case(false)?;
     check_drawable(&case, &args.frame)?;
     let stdout = match (&args.output, args.term) {
@@ -82,7 +89,8 @@ fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
         Section::Energy,
         Section::Ellipses,
     ]);
-    Report::build(&Binary64::new(&case.collision, frame), &needed)?;
+    Report::build(&Binary64::new(&case.collision, frame), &needed)
+        .map_err(|u| u.with_way_out("rescale the units"))?;
     let p = Picture::new(case, frame, false);
     let fastest = [p.v_in.0, p.v_in.1, p.v_fin.0, p.v_fin.1]
         .iter()
