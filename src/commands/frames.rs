@@ -13,6 +13,12 @@ use super::Outcome;
 use crate::cli::{Format, FramesArgs};
 
 pub fn run(args: FramesArgs) -> Result<Outcome> {
+    if args.case.spatial() {
+        return super::space_solve::frames(&args);
+    }
+    for f in &args.frame {
+        f.on_line()?;
+    }
     let case = args.case.into_case(args.exact)?;
     let stuck = case.restitution().is_totally_inelastic();
     if args.reverse && stuck {

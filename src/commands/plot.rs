@@ -18,6 +18,7 @@ pub fn run(args: PlotArgs) -> Result<Outcome> {
     if args.case.spatial() {
         return plane(&args);
     }
+    args.frame.on_line()?;
     let kind = args.kind.unwrap_or(Kind::Velocity);
     if args.frames && kind != Kind::Velocity {
         anyhow::bail!(

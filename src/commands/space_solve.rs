@@ -2,6 +2,7 @@
 //! solve its unknowns, keep the physical solutions, render them.
 
 use anyhow::Result;
+use collide::frame::Frame;
 use collide::report::space::{self as report, Show, Style};
 use collide::report::{Section, json};
 use collide::space::outcome::{Outcome as Event, dot};
@@ -25,7 +26,6 @@ enum Verdict {
 
 pub fn run(args: &SolveArgs) -> Result<Outcome> {
     let refused = [
-        (args.frame != collide::frame::Frame::Lab, "--frame"),
         (args.plot.is_some(), "--plot"),
         (args.contact_time.is_some(), "--contact-time"),
         (args.case.gravity.is_some(), "--gravity"),
@@ -60,13 +60,24 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
              equation has no real root); check them"
         );
     }
+    // Judged in the lab; printed as the frame asked sees it.
+    let seen_from = |o: Event| -> Result<Event> {
+        let w = o.observer(&args.frame, posed.typed_values)?;
+        Ok(o.boost(&w))
+    };
     let judged: Vec<(Event, Vec<Check>, Verdict)> = all
         .into_iter()
         .map(|(o, c)| {
             let v = verdict(&o, &posed.statement);
-            (o, c, v)
+            Ok((seen_from(o)?, c, v))
         })
-        .collect();
+        .collect::<Result<_>>()?;
+    let frame_line = (args.frame != Frame::Lab).then(|| {
+        format!(
+            "Seen from: {} (every velocity less the observer's)\n",
+            args.frame.describe()
+        )
+    });
     let keep: Vec<&(Event, Vec<Check>, Verdict)> =
         if judged.iter().any(|(_, _, v)| *v == Verdict::Physical) {
             judged
@@ -107,6 +118,7 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
                     ));
                 }
                 out.push_str(&report::header(o, &style, &units));
+                out.push_str(frame_line.as_deref().unwrap_or_default());
                 out.push_str(&collide::report::text::header_units(&units));
                 out.push_str(&report::solved_text(o, &asked, &style));
                 out.push_str(&report::checks_text(checks, 0));
@@ -334,6 +346,66 @@ fn solved_json(o: &Event, unknowns: &[Unknown], style: &Style) -> serde_json::Va
         m.insert(key, value);
     }
     m.into()
+}
+
+/// `collide frames` in the plane, in space or for N bodies: the event seen from the standard
+/// frames (lab, each body initially at rest, COM, each body finally at rest) and any asked for,
+/// with the invariants checked equal in every frame before anything is printed.
+pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
+    let input = args.case.space_input(None, args.exact)?;
+    let posed = input.pose()?;
+    let solved = solve::solve(&posed.statement)?;
+    let all = outcomes(&posed, &solved);
+    let [(lab, _)] = all.as_slice() else {
+        anyhow::bail!("frames needs one collision; this case has {}", all.len());
+    };
+    let stuck = lab.e.as_ref().is_some_and(|e| e.is_zero());
+    let n = lab.bodies();
+    let mut list: Vec<Frame> = vec![Frame::Lab];
+    list.extend((1..=n).map(Frame::RestIn));
+    list.push(Frame::Com);
+    if !stuck {
+        list.extend((1..=n).map(Frame::RestFin));
+    }
+    list.extend(args.frame.iter().cloned());
+    let seen: Vec<(String, Vec<collide::rational::Q>, Event)> = list
+        .iter()
+        .map(|f| {
+            let w = lab.observer(f, posed.typed_values)?;
+            Ok((f.describe(), w.clone(), lab.boost(&w)))
+        })
+        .collect::<Result<_>>()?;
+    // The invariants hold exactly in every frame (exact arithmetic): check, never assume.
+    for (name, _, o) in &seen {
+        if o.crunch() != lab.crunch() || o.lost() != lab.lost() {
+            anyhow::bail!(
+                "internal check failed: the crunch or lost energy differs in the {name} frame; \
+                 nothing is printed"
+            );
+        }
+    }
+    let mut units = posed.units.clone();
+    if let Some(u) = args.case.energy_unit {
+        units = units.with_energy_unit(u)?;
+    }
+    let style = Style::new(args.exact, units.energy_scale());
+    let views: Vec<report::FrameView> = seen
+        .iter()
+        .map(|(name, w, o)| report::FrameView {
+            name: name.clone(),
+            w: w.clone(),
+            seen: o,
+        })
+        .collect();
+    let stdout = match args.format {
+        Format::Text => {
+            report::header(lab, &style, &units)
+                + &collide::report::text::header_units(&units)
+                + &report::frames_text(&views, args.reverse, &style, &units)?
+        }
+        Format::Json => json::render(&report::frames_json(&views, args.reverse, &style)?),
+    };
+    Ok(Outcome::print(stdout))
 }
 
 /// The plane picture of a case given on the command line (one solution, in the plane).

@@ -59,6 +59,8 @@ pub fn observer_velocity(c: &Collision, frame: &Frame) -> Dd {
         Frame::RestIn(i) => Dd::new(c.v_in[i - 1]),
         Frame::RestFin(i) => c.v_fin_dd()[i - 1],
         Frame::Velocity(n) => Dd::new(n.value()),
+        // Refused on a line by `Frame::on_line` before a solver sees it.
+        Frame::Vector(v) => Dd::new(v.first().map_or(0.0, crate::number::Number::value)),
     }
 }
 
