@@ -232,7 +232,18 @@ fn bad_frames_are_refused() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("'rest-in:3' is not a frame"));
+    // Two bodies on a line have no third body to be at rest with.
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("frame 'rest-in:3': two bodies on a line"),
+        "{err}"
+    );
+    let out = collide()
+        .args(["solve", "-m", "4,1", "-v", "60,10", "--frame", "rest-in:x"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("'rest-in:x' is not a frame"));
 }
 
 #[test]

@@ -5,6 +5,10 @@
 //!
 //! Every value is exact (`space::outcome`) and rounded once here: binary64 text and JSON carry the
 //! correctly rounded value, `--exact` fractions (or `≈` digits of irrational ones).
+//!
+//! - this module: one event's sections, its time reverse;
+//! - `frames`: the event from every standard frame;
+//! - `solved`: a problem's solutions (what was solved, which are physical, the checks).
 
 use std::cell::Cell;
 use std::fmt::Write;
@@ -16,13 +20,16 @@ use crate::number::num;
 use crate::quantity::{Exact, Scalar};
 use crate::rational::{Q, to_f64};
 use crate::space::outcome::{Outcome, angle_between, dot, polar};
-use crate::space::solve::{Check, Unknown};
+
 use crate::units::Units;
 
 use super::text::Block;
 
+pub mod frames;
+pub mod solved;
+
 /// Text lines fit a terminal of this width.
-const WIDTH: usize = 80;
+pub(crate) const WIDTH: usize = 80;
 
 /// What a planar report shows (`--show`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -127,7 +134,7 @@ impl Style {
 }
 
 /// `(a, b)`, or `a` on a line.
-fn vector(style: &Style, v: &[Q], approx: bool) -> String {
+pub(crate) fn vector(style: &Style, v: &[Q], approx: bool) -> String {
     let parts: Vec<String> = v.iter().map(|x| style.show(x, approx)).collect();
     if parts.len() == 1 {
         parts[0].clone()
@@ -137,7 +144,7 @@ fn vector(style: &Style, v: &[Q], approx: bool) -> String {
 }
 
 /// `4 @ 30°`: a vector's speed and direction (in the plane), or its speed (in space).
-fn speed_angle(v: &[Q]) -> String {
+pub(crate) fn speed_angle(v: &[Q]) -> String {
     let (speed, angle) = polar(v);
     match angle {
         Some(a) if v.len() == 2 => format!("{} @ {}°", num(speed), num(a)),
@@ -148,7 +155,7 @@ fn speed_angle(v: &[Q]) -> String {
 }
 
 /// The velocities' unit after a vector (` m/s`), when the case has one.
-fn unit_suffix(units: &Units) -> String {
+pub(crate) fn unit_suffix(units: &Units) -> String {
     units.velocity.map(|u| format!(" {u}")).unwrap_or_default()
 }
 
@@ -193,71 +200,8 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
 }
 
 /// `v2'`, `v1` and the like.
-fn name(i: usize, fin: bool) -> String {
+pub(crate) fn name(i: usize, fin: bool) -> String {
     format!("v{}{}", i + 1, if fin { "'" } else { "" })
-}
-
-/// The `Solved:` lines for the unknowns of one solution.
-pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
-    if unknowns.is_empty() {
-        return String::new();
-    }
-    let mut parts: Vec<String> = Vec::new();
-    let mut seen: Vec<(usize, bool)> = Vec::new();
-    for u in unknowns {
-        match *u {
-            Unknown::Mass(i) => parts.push(format!(
-                "m{} = {}",
-                i + 1,
-                style.show(&o.masses[i], o.approx)
-            )),
-            Unknown::Restitution => {
-                if let Some(e) = &o.e {
-                    parts.push(format!("e = {}", style.show(e, o.approx)));
-                }
-            }
-            Unknown::Component(i, fin, _)
-            | Unknown::Speed(i, fin)
-            | Unknown::Direction(i, fin, _) => {
-                if seen.contains(&(i, fin)) {
-                    continue;
-                }
-                seen.push((i, fin));
-                let v = if fin { &o.fin[i] } else { &o.v_in[i] };
-                let polar = speed_angle(v);
-                let polar = if polar.is_empty() {
-                    String::new()
-                } else {
-                    format!(" = {polar}")
-                };
-                parts.push(format!(
-                    "{} = {}{polar}",
-                    name(i, fin),
-                    vector(style, v, o.approx)
-                ));
-            }
-        }
-    }
-    let mut out = String::from("Solved:\n");
-    for p in parts {
-        let _ = writeln!(out, "  {p}");
-    }
-    out
-}
-
-/// The laws checked rather than used, when any fails or the problem gave more than it needed.
-pub fn checks_text(checks: &[Check], used: usize) -> String {
-    let mut out = String::new();
-    for c in checks.iter().skip(used).filter(|c| !c.ok) {
-        let _ = writeln!(
-            out,
-            "Check: {} does NOT hold: it misses by {} (of terms of size {})",
-            c.law.name(),
-            num(c.residual),
-            num(c.scale)
-        );
-    }
-    out
 }
 
 /// The report's sections as text.
@@ -470,161 +414,6 @@ pub fn reverse_json(o: &Outcome, style: &Style) -> Result<Value, Overflow> {
         m.insert("restitution".into(), style.json(e, a));
     }
     style.checked(Value::Object(m))
-}
-
-/// One frame of the frames table: its name, the observer's velocity and the event seen from it.
-pub struct FrameView<'a> {
-    pub name: String,
-    pub w: Vec<Q>,
-    pub seen: &'a Outcome,
-}
-
-/// The frames table (lecture Figs. 2.5 and 3.4 in the plane): per frame the observer's
-/// velocity, IN and FIN, the kinetic energies; then what is the same in every frame.
-pub fn frames_text(
-    frames: &[FrameView],
-    reverse: bool,
-    style: &Style,
-    units: &Units,
-) -> Result<String, Overflow> {
-    let mut out = String::new();
-    let Some(first) = frames.first() else {
-        return Ok(out);
-    };
-    let a = first.seen.approx;
-    let e = |q: Q| style.show(&style.energy(&q), a);
-    out.push('\n');
-    out.push_str(&super::text::wrap(
-        &format!(
-            "Frames (every velocity less the observer's w; energies in {})",
-            units.energy()
-        ),
-        WIDTH,
-        "  ",
-    ));
-    for (k, f) in frames.iter().enumerate() {
-        if k > 0 {
-            out.push('\n');
-        }
-        let _ = writeln!(out, "  {}   w = {}", f.name, vector(style, &f.w, a));
-        // Body by body: before and after side by side where they fit, else one to a line.
-        let cells: Vec<(String, String)> = (0..f.seen.bodies())
-            .map(|i| {
-                (
-                    format!(
-                        "{:<4} {}",
-                        name(i, false),
-                        vector(style, &f.seen.v_in[i], a)
-                    ),
-                    format!("{:<4} {}", name(i, true), vector(style, &f.seen.fin[i], a)),
-                )
-            })
-            .collect();
-        let left = cells.iter().map(|c| c.0.chars().count()).max().unwrap_or(0);
-        let right = cells.iter().map(|c| c.1.chars().count()).max().unwrap_or(0);
-        for (vin, fin) in &cells {
-            if 4 + left + 3 + right <= WIDTH {
-                let _ = writeln!(out, "    {vin:<left$}   {fin}");
-            } else {
-                let _ = writeln!(out, "    {vin}\n    {fin}");
-            }
-        }
-        let mut energies = format!(
-            "KE_IN {}   KE_FIN {}",
-            e(f.seen.ke_in()),
-            e(f.seen.ke_fin())
-        );
-        if reverse {
-            let same = f.seen.reversed() == *f.seen;
-            energies.push_str(if same {
-                "   reversed: the same event"
-            } else {
-                "   reversed: another event"
-            });
-        }
-        let _ = writeln!(out, "    {energies}");
-    }
-    let mut inv = Block::new("Invariants (the same in every frame)").fit(WIDTH);
-    inv.row("crunch", e(first.seen.crunch()), "");
-    let lost = first.seen.lost();
-    if !lost.is_zero() {
-        inv.row(
-            if lost.is_negative() {
-                "released"
-            } else {
-                "lost"
-            },
-            e(lost.abs()),
-            "",
-        );
-    }
-    if let Some(r) = &first.seen.e {
-        inv.row("e", style.show(r, a), "");
-    }
-    if first.seen.bodies() == 2 {
-        let rel = super::super::space::outcome::sub(&first.seen.v_in[0], &first.seen.v_in[1]);
-        inv.row("v1 - v2", vector(style, &rel, a), "");
-    }
-    inv.render(&mut out);
-    style.checked(out)
-}
-
-/// The frames table as JSON: `{"frames": [{"name", "w", "in", "fin", "energy"}], "invariants"}`.
-pub fn frames_json(frames: &[FrameView], reverse: bool, style: &Style) -> Result<Value, Overflow> {
-    let mut list = Vec::new();
-    for f in frames {
-        let a = f.seen.approx;
-        let vecs = |vs: &[Vec<Q>]| -> Value {
-            vs.iter()
-                .map(|v| v.iter().map(|x| style.json(x, a)).collect::<Vec<_>>())
-                .collect::<Vec<_>>()
-                .into()
-        };
-        let e = |q: Q| style.json(&style.energy(&q), a);
-        let mut m = Map::new();
-        m.insert("name".into(), f.name.clone().into());
-        m.insert(
-            "w".into(),
-            f.w.iter()
-                .map(|x| style.json(x, a))
-                .collect::<Vec<_>>()
-                .into(),
-        );
-        m.insert("in".into(), vecs(&f.seen.v_in));
-        m.insert("fin".into(), vecs(&f.seen.fin));
-        m.insert(
-            "energy".into(),
-            json!({"in": e(f.seen.ke_in()), "fin": e(f.seen.ke_fin()), "com": e(f.seen.ke_com())}),
-        );
-        if reverse {
-            m.insert(
-                "reverse_equals_original".into(),
-                (f.seen.reversed() == *f.seen).into(),
-            );
-        }
-        list.push(Value::Object(m));
-    }
-    let mut inv = Map::new();
-    if let Some(first) = frames.first() {
-        let a = first.seen.approx;
-        let e = |q: Q| style.json(&style.energy(&q), a);
-        inv.insert("crunch".into(), e(first.seen.crunch()));
-        inv.insert("lost".into(), e(first.seen.lost()));
-        if let Some(r) = &first.seen.e {
-            inv.insert("restitution".into(), style.json(r, a));
-        }
-        if first.seen.bodies() == 2 {
-            let rel = super::super::space::outcome::sub(&first.seen.v_in[0], &first.seen.v_in[1]);
-            inv.insert(
-                "relative_velocity".into(),
-                rel.iter()
-                    .map(|x| style.json(x, a))
-                    .collect::<Vec<_>>()
-                    .into(),
-            );
-        }
-    }
-    style.checked(json!({"frames": list, "invariants": inv}))
 }
 
 /// The report as a JSON object.
