@@ -76,6 +76,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                 AnyScene::Special(scene) => Some(solve_special(scene)?),
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
+                AnyScene::Space(scene) => Some(solve_space(scene)?),
             })
         };
         match one() {
@@ -213,6 +214,29 @@ fn solve_contact(scene: ContactScene) -> Result<Checked> {
     let json = contact_report::json(&run).with_context(at)?;
     let text = contact_report::text(&scene.setup, &run);
     check(scene.about, text, json)
+}
+
+fn solve_space(scene: collide::scene::SpaceScene) -> Result<Checked> {
+    use collide::report::space::solved::{Options, render};
+    let at = || format!("{}", scene.about.path.display());
+    let posed = scene.input.pose().with_context(at)?;
+    let solved = collide::space::solve::solve(&posed.statement).with_context(at)?;
+    let rendered = render(
+        &posed,
+        &solved,
+        &Options {
+            frame: &scene.frame,
+            show: scene.show,
+            exact: scene.input.exact,
+            reverse: scene.reverse,
+            fin_given: scene.input.fin.is_some(),
+            energy_unit: scene.energy_unit,
+        },
+    )
+    .with_context(at)?;
+    let mut checked = check(scene.about, rendered.text, rendered.json)?;
+    checked.inconsistent = rendered.inconsistent;
+    Ok(checked)
 }
 
 /// Checks a scene's expectations against its report; a key that names nothing in the report is

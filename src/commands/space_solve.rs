@@ -3,9 +3,9 @@
 
 use anyhow::Result;
 use collide::frame::Frame;
+use collide::report::json;
 use collide::report::space::solved::{Options, render};
-use collide::report::space::{self as report, Show, Style};
-use collide::report::{Section, json};
+use collide::report::space::{self as report, Style};
 use collide::space::outcome::Outcome as Event;
 use collide::space::pose::outcomes;
 use collide::space::solve;
@@ -33,7 +33,7 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
         &solved,
         &Options {
             frame: &args.frame,
-            show: show(&args.show)?,
+            show: collide::scene::show_of(&args.show).map_err(|m| anyhow::anyhow!("--show {m}"))?,
             exact: args.exact,
             reverse: args.reverse,
             fin_given: args.fin.is_some(),
@@ -47,46 +47,6 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
         },
         status: u8::from(rendered.inconsistent),
     })
-}
-
-/// The sections asked for, among those that mean something here.
-fn show(list: &[Section]) -> Result<Show> {
-    if list.is_empty() {
-        return Ok(Show::default());
-    }
-    let mut s = Show {
-        vectors: false,
-        momentum: false,
-        forms: false,
-        energy: false,
-        angles: false,
-    };
-    for section in list {
-        match section {
-            Section::Vectors => s.vectors = true,
-            Section::Momentum => s.momentum = true,
-            Section::Forms => s.forms = true,
-            Section::Energy => s.energy = true,
-            Section::Angles => s.angles = true,
-            Section::All => {
-                s = Show {
-                    vectors: true,
-                    momentum: true,
-                    forms: true,
-                    energy: true,
-                    angles: true,
-                }
-            }
-            other => anyhow::bail!(
-                "--show {}: in the plane, in space and for N bodies the sections are vectors, \
-                 momentum, forms, energy, angles and all",
-                clap::ValueEnum::to_possible_value(other)
-                    .map(|v| v.get_name().to_string())
-                    .unwrap_or_default()
-            ),
-        }
-    }
-    Ok(s)
 }
 
 /// `collide frames` in the plane, in space or for N bodies: the event seen from the standard

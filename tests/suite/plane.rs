@@ -633,3 +633,53 @@ fn frames_in_the_plane_agree_with_solve_seen_from_each_frame() {
         );
     }
 }
+
+#[test]
+fn planar_scenes_check_their_hand_derived_numbers() {
+    let mut files: Vec<String> = std::fs::read_dir("scenarios")
+        .unwrap()
+        .map(|e| e.unwrap().path().display().to_string())
+        .filter(|p| p.contains("/plane-") && p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 5, "{files:?}");
+    let mut args = vec!["scene"];
+    args.extend(files.iter().map(String::as_str));
+    args.extend(["--format", "json"]);
+    let all: Value = serde_json::from_str(&stdout(&args)).unwrap();
+    for s in all.as_array().unwrap() {
+        assert_eq!(s["failed"], serde_json::json!([]), "{}", s["scene"]);
+        assert!(s["checks"].as_u64().unwrap() >= 2, "{}", s["scene"]);
+    }
+}
+
+#[test]
+fn planar_scene_errors_name_file_and_line() {
+    let dir = std::env::temp_dir().join(format!("collide-plane-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (body, needle) in [
+        (
+            "masses = [1, 1]\nvelocities = [[4, 0], 0]\nnormal = [1, 1]\nnorml = 3\n",
+            ":4:1: unknown field `norml`",
+        ),
+        (
+            "masses = [1, 1]\nvelocities = [[4, \"x\"], 0]\nnormal = [1, 1]\n",
+            ":2:14: velocities: '(4,x)': component 'x' is not a number",
+        ),
+        (
+            "masses = [1, 1, 1]\nvelocities = [[4, 0], 0]\nrestitution = 0\n",
+            "give one per body",
+        ),
+        (
+            "masses = [1, 1]\nvelocities = [[4, 0], 0]\nnormal = [1, 1]\n[expect]\nfinn = 3\n",
+            ":5:8: [expect] \"finn\": unknown quantity 'finn'",
+        ),
+    ] {
+        let path = dir.join("bad.toml");
+        std::fs::write(&path, body).unwrap();
+        let (code, out, err) = run(&["scene", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{body}: {out}");
+        assert!(err.contains(needle), "{body}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -41,6 +41,30 @@ pub struct Show {
     pub angles: bool,
 }
 
+impl Show {
+    /// No section.
+    pub fn none() -> Show {
+        Show {
+            vectors: false,
+            momentum: false,
+            forms: false,
+            energy: false,
+            angles: false,
+        }
+    }
+
+    /// Every section.
+    pub fn all() -> Show {
+        Show {
+            vectors: true,
+            momentum: true,
+            forms: true,
+            energy: true,
+            angles: true,
+        }
+    }
+}
+
 impl Default for Show {
     fn default() -> Show {
         Show {
@@ -494,12 +518,15 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
         }
         m.insert("energy".into(), Value::Object(energy));
     }
-    if show.angles
-        && o.dim >= 2
-        && o.bodies() == 2
-        && let Some(t) = angle_between(&o.fin[0], &o.fin[1])
-    {
-        m.insert("angle_between_deg".into(), json!(t));
+    if show.angles && o.dim >= 2 && o.bodies() == 2 {
+        if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
+            m.insert("angle_between_deg".into(), json!(t));
+        }
+        // How far each body turned, from v to v' (0 for a body at rest before or after).
+        let turned: Vec<f64> = (0..2)
+            .map(|i| angle_between(&o.v_in[i], &o.fin[i]).unwrap_or(0.0))
+            .collect();
+        m.insert("turned_deg".into(), json!(turned));
     }
     style.checked(Value::Object(m))
 }
