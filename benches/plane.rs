@@ -8,8 +8,11 @@ use std::time::Instant;
 
 use collide::space::impact::{bounded, by_normal_parts, exact, general};
 
+/// Masses, velocities, line of impact, restitution.
+type Case = ([f64; 2], [[f64; 2]; 2], [f64; 2], f64);
+
 /// A small linear congruential generator: the same cases every run.
-fn cases(n: usize) -> Vec<([f64; 2], [[f64; 2]; 2], [f64; 2], f64)> {
+fn cases(n: usize) -> Vec<Case> {
     let mut x: u64 = 2026;
     let mut next = || {
         x = x
@@ -29,11 +32,7 @@ fn cases(n: usize) -> Vec<([f64; 2], [[f64; 2]; 2], [f64; 2], f64)> {
         .collect()
 }
 
-fn time<F: Fn(&([f64; 2], [[f64; 2]; 2], [f64; 2], f64)) -> [[f64; 2]; 2]>(
-    name: &str,
-    cases: &[([f64; 2], [[f64; 2]; 2], [f64; 2], f64)],
-    f: F,
-) {
+fn time<F: Fn(&Case) -> [[f64; 2]; 2]>(name: &str, cases: &[Case], f: F) {
     let start = Instant::now();
     let mut sum = 0.0;
     for c in cases {
