@@ -22,3 +22,4 @@ mod resources;
 mod shell;
 mod tables;
 mod track;
+mod width;
