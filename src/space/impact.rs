@@ -76,10 +76,12 @@ pub fn general<const D: usize>(
     n: [f64; D],
     e: f64,
 ) -> [[f64; D]; 2] {
-    fast(m, v, n, e).unwrap_or_else(|| exact(m, v, n, e))
+    bounded(m, v, n, e).unwrap_or_else(|| exact(m, v, n, e))
 }
 
-fn fast<const D: usize>(
+/// The double-double evaluation alone: `None` where its error bound cannot decide a rounding
+/// (then `exact` does).
+pub fn bounded<const D: usize>(
     m: [f64; 2],
     v: [[f64; D]; 2],
     n: [f64; D],

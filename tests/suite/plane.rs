@@ -283,31 +283,6 @@ fn contradicting_final_velocities_exit_1() {
     assert!(out.contains("momentum (y) does NOT hold"), "{out}");
 }
 
-#[test]
-fn text_fits_80_columns() {
-    for args in [
-        vec!["-m", "1,1", "-v", "(4,0),0", "--normal", "30deg"],
-        vec![
-            "-m",
-            "1,3",
-            "-v",
-            "(1.5,2.25,3),0",
-            "--normal",
-            "(1,2,2)",
-            "--show",
-            "all",
-        ],
-        vec!["-m", "1,1", "-v", "(5,0),0", "--fin", "3 @ ?,?", "-e", "1"],
-    ] {
-        let mut a = vec!["solve"];
-        a.extend(args.iter());
-        let out = stdout(&a);
-        for line in out.lines() {
-            assert!(line.chars().count() <= 80, "{a:?}: {line}");
-        }
-    }
-}
-
 /// A random rational that binary64 holds exactly (an integer over a power of two).
 fn dyadic() -> impl Strategy<Value = (i64, u32)> {
     (-2000i64..2000, 0u32..6)

@@ -35,6 +35,12 @@ const COMMANDS: &[&str] = &[
     "collide sweep -m 4,1 -v 60,10 --vary e=0:1:3 --format text",
     "collide batch scenarios/cases.csv --format text --skip-bad",
     "collide plot -m 4,1 -v 60,10 --term",
+    // The plane and space.
+    "collide solve -m 1,1 -v (4,0),0 --normal 30deg",
+    "collide solve -m 1,3 -v (1.5,2.25,3),0 --normal (1,2,2) --show all --reverse",
+    "collide solve -m 1,1 -v (5,0),0 --fin '3 @ ?,?' -e 1",
+    "collide frames -m 1,3 -v (1,2),0 --normal 45deg",
+    "collide scene scenarios/plane-car-and-van.toml",
     // Errors: usage errors, bad values, long messages.
     "collide solve -m -v 60,10",
     "collide solve -m 4 1 -v 60,10",

@@ -7,7 +7,7 @@ use std::fmt::Write;
 use num_traits::Signed;
 use serde_json::{Map, Value, json};
 
-use super::{Overflow, Style, WIDTH, name, vector};
+use super::{Overflow, Style, name, vector};
 use crate::rational::Q;
 use crate::space::outcome::{Outcome, sub};
 use crate::units::Units;
@@ -41,7 +41,7 @@ pub fn text(
             "Frames (every velocity less the observer's w; energies in {})",
             units.energy()
         ),
-        WIDTH,
+        crate::terminal::width(),
         "  ",
     ));
     for (k, f) in frames.iter().enumerate() {
@@ -65,7 +65,7 @@ pub fn text(
         let left = cells.iter().map(|c| c.0.chars().count()).max().unwrap_or(0);
         let right = cells.iter().map(|c| c.1.chars().count()).max().unwrap_or(0);
         for (vin, fin) in &cells {
-            if 4 + left + 3 + right <= WIDTH {
+            if 4 + left + 3 + right <= crate::terminal::width() {
                 let _ = writeln!(out, "    {vin:<left$}   {fin}");
             } else {
                 let _ = writeln!(out, "    {vin}\n    {fin}");
@@ -86,7 +86,7 @@ pub fn text(
         }
         let _ = writeln!(out, "    {energies}");
     }
-    let mut inv = Block::new("Invariants (the same in every frame)").fit(WIDTH);
+    let mut inv = Block::new("Invariants (the same in every frame)");
     inv.row("crunch", e(first.seen.crunch()), "");
     let lost = first.seen.lost();
     if !lost.is_zero() {

@@ -28,9 +28,6 @@ use super::text::Block;
 pub mod frames;
 pub mod solved;
 
-/// Text lines fit a terminal of this width.
-pub(crate) const WIDTH: usize = 80;
-
 /// What a planar report shows (`--show`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Show {
@@ -234,7 +231,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
     let a = o.approx;
     let unit = unit_suffix(units);
     if show.vectors {
-        let mut b = Block::new("Velocities (IN, then FIN)").fit(WIDTH);
+        let mut b = Block::new("Velocities (IN, then FIN)");
         for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
             for (i, v) in vs.iter().enumerate() {
                 b.row(
@@ -266,8 +263,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         if let Some(parts) = o.normal_parts() {
             let a = a || !parts.exact;
             let mut b =
-                Block::new("Along the line of impact (the normal parts collide as on a rail)")
-                    .fit(WIDTH);
+                Block::new("Along the line of impact (the normal parts collide as on a rail)");
             let com =
                 (&o.masses[0] * &parts.v_in[0] + &o.masses[1] * &parts.v_in[1]) / o.total_mass();
             b.row(
@@ -289,8 +285,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         }
     }
     if show.momentum {
-        let mut b =
-            Block::new(format!("Momentum (P = sum m v, in {})", units.impulse())).fit(WIDTH);
+        let mut b = Block::new(format!("Momentum (P = sum m v, in {})", units.impulse()));
         for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
             for (i, v) in vs.iter().enumerate() {
                 let p: Vec<Q> = v.iter().map(|x| x * &o.masses[i]).collect();
@@ -317,8 +312,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
                 .fold(Q::ZERO, |s, (m, (xi, yi))| s + m * dot(xi, yi))
         };
         let com: Vec<Vec<Q>> = vec![o.v_com(); o.bodies()];
-        let mut b =
-            Block::new("Quadratic forms (X.M.Y in R^(dN), M = diag(m1 I, ..., mN I))").fit(WIDTH);
+        let mut b = Block::new("Quadratic forms (X.M.Y in R^(dN), M = diag(m1 I, ..., mN I))");
         b.row("V_IN.M.V_IN", style.show(&form(&o.v_in, &o.v_in), a), "");
         b.row("V_FIN.M.V_FIN", style.show(&form(&o.fin, &o.fin), a), "");
         b.row(
@@ -335,8 +329,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
     }
     if show.energy {
         let e = |q: Q| style.show(&style.energy(&q), a);
-        let mut b =
-            Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", units.energy())).fit(WIDTH);
+        let mut b = Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", units.energy()));
         b.row("KE_IN", e(o.ke_in()), "");
         b.row("KE_FIN", e(o.ke_fin()), "");
         b.row("KE_COM = 1/2 M_total |V_COM|^2", e(o.ke_com()), "");
@@ -357,7 +350,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         b.render(&mut out);
     }
     if show.angles && o.dim >= 2 && o.bodies() == 2 {
-        let mut b = Block::new("Angles").fit(WIDTH);
+        let mut b = Block::new("Angles");
         if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
             b.row("between v1' and v2'", format!("{}°", num(t)), "");
         }
@@ -379,7 +372,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
 pub fn reverse_text(o: &Outcome, style: &Style) -> Result<String, Overflow> {
     let r = o.reversed();
     let a = o.approx;
-    let mut b = Block::new("Time reversed (t -> -t: V -> -V, IN and FIN trade places)").fit(WIDTH);
+    let mut b = Block::new("Time reversed (t -> -t: V -> -V, IN and FIN trade places)");
     for (i, v) in r.v_in.iter().enumerate() {
         b.row(
             format!("v{}  = -v{}'", i + 1, i + 1),

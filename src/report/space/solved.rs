@@ -14,9 +14,7 @@ use crate::space::solve::{Check, Solved, Statement, Unknown, Velocity};
 use crate::units::{EnergyUnit, EnergyUnitError, Units};
 
 use super::super::text::{header_units, wrap};
-use super::{
-    Overflow, Show, Style, WIDTH, header, name, reverse_json, reverse_text, speed_angle, vector,
-};
+use super::{Overflow, Show, Style, header, name, reverse_json, reverse_text, speed_angle, vector};
 
 /// The `Solved:` lines for the unknowns of one solution.
 pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
@@ -237,7 +235,11 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
                 v.describe()
             );
         } else if *v != Verdict::Physical {
-            text.push_str(&wrap(&format!("Note: {}", v.describe()), WIDTH, "  "));
+            text.push_str(&wrap(
+                &format!("Note: {}", v.describe()),
+                crate::terminal::width(),
+                "  ",
+            ));
         }
         text.push_str(&header(o, &style, &units));
         text.push_str(frame_line.as_deref().unwrap_or_default());
@@ -245,10 +247,12 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
         text.push_str(&solved_text(o, &asked, &style));
         text.push_str(&checks_text(checks, 0));
         let mut j = if inconsistent {
-            text.push_str(
+            text.push_str(&wrap(
                 "The given values contradict each other, so no collision is printed: check them, \
-                 or mark one '?' to solve for it.\n",
-            );
+                 or mark one '?' to solve for it.",
+                crate::terminal::width(),
+                "",
+            ));
             json!({ "consistent": false })
         } else {
             text.push_str(&super::text(o, opts.show, &style, &units)?);
@@ -318,7 +322,7 @@ fn receding(o: &Outcome, along: &Q, style: &Style, units: &Units) -> Result<Rend
              so they do not collide (no FIN).",
             style.show(along, o.approx)
         ),
-        WIDTH,
+        crate::terminal::width(),
         "  ",
     ));
     let a = o.approx;
