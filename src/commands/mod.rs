@@ -13,6 +13,7 @@ mod shell;
 mod solve;
 mod table;
 mod track;
+mod view;
 
 use anyhow::Result;
 use collide::case::Case;
@@ -47,6 +48,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Pi(args) => pi::run(args),
         Command::Contact(args) => contact::run(args),
         Command::Plot(args) => plot::run(args),
+        Command::View(args) => view::run(args),
         Command::Completions { shell } => shell::completions(shell),
         Command::Man => shell::man(),
     }

@@ -18,3 +18,4 @@ mod readme;
 mod shell;
 mod tables;
 mod track;
+mod view;
