@@ -257,7 +257,7 @@
       ? "diag(" + short(m[0][0]) + ", " + short(m[1][1]) + ")"
       : "[[" + m.map((r) => r.map(short).join(", ")).join("], [") + "]]";
     el(svg, "text", { x: a.x, y: 20, class: "title" },
-      "M = " + tensor + ",  e = " + short(p.e) + ",  " + (frameLabel || frameWords(currentFrame())) + " frame");
+      "M = " + tensor + ",  e = " + (frameLabel ? short(p.e) : $("e").value.trim()) + ",  " + (frameLabel || frameWords(currentFrame())) + " frame");
     const defs = el(svg, "defs");
     const clip = el(defs, "clipPath", { id: "plane-clip" });
     el(clip, "rect", { x: a.x, y: a.y, width: a.w, height: a.h });
@@ -286,7 +286,7 @@
         if (Math.abs(f.w - p.w) <= 1e-12 * (Math.abs(f.w) + Math.abs(p.w))) continue;
         el(o, "line", { x1: r2(X(f.in[0])), y1: r2(Y(f.in[1])), x2: r2(X(f.fin[0])), y2: r2(Y(f.fin[1])), stroke: "#6b7280", "stroke-dasharray": "3 4" });
         for (const [v, c] of [[f.in, "var(--in)"], [f.com, "var(--com)"], [f.fin, "var(--fin)"]]) el(o, "circle", { cx: r2(X(v[0])), cy: r2(Y(v[1])), r: 3.5, fill: c });
-        el(o, "text", { x: r2(X(f.com[0]) + 6), y: r2(Y(f.com[1]) + 13), class: "tick" }, f.label);
+        el(o, "text", { x: r2(X(f.com[0]) + 7), y: r2(Y(f.com[1]) + 4), class: "tick" }, f.name);
       }
     }
     // The time reverse: IN' = -FIN, FIN' = -IN.
@@ -593,7 +593,9 @@
     const line = clipLine(d[1], -d[0], 0, { x0: -r, x1: r, y0: -r, y1: r });
     if (line) el(svg, "line", { x1: r2(a.X(line[0][0])), y1: r2(a.Y(line[0][1])), x2: r2(a.X(line[1][0])), y2: r2(a.Y(line[1][1])), stroke: "#9ca3af", "stroke-width": 1.6, "stroke-dasharray": "6 4" });
     el(svg, "polyline", { points: pts(path.map((q) => [a.X(q[0]), a.Y(q[1])])), fill: "none", stroke: "var(--rev)", "stroke-width": 2.2 });
-    el(svg, "text", { x: sq.x + 6, y: sq.y + 14, class: "tick" }, scaled ? "elastic: a reflection in the line" : "x\u2081 = x\u2082: the bodies meet");
+    const note = !scaled ? "on the dashed line x\u2081 = x\u2082 the bodies meet"
+      : p.e === 1 ? "e = 1: the path reflects in the dashed line" : "only e = 1 reflects the path in the line";
+    el(svg, "text", { x: sq.x + 6, y: sq.y + sq.h - 8, class: "tick", "paint-order": "stroke", stroke: "#fff", "stroke-width": 3 }, note);
     dual.map = { reach, x, map2, space: a };
     drawDualTime();
   }
@@ -818,8 +820,8 @@
     const amp = a.amplification;
     if (amp && a.masses.length > 1) {
       para("Velocity amplification: the top ball leaves at <span class=\"num\">" + num(amp.ratio) + "</span> &times; the bottom ball's impact speed", "big");
-      para("(" + num(amp.top_velocity) + " against " + num(amp.drop_speed) + "; for elastic balls each much lighter than the one below the limit is 2<sup>" +
-        a.masses.length + "</sup> &minus; 1 = " + amp.limit + ")");
+      para("(it leaves at " + num(amp.top_velocity) + "; the bottom ball hit the floor at " + num(amp.drop_speed) +
+        "). For elastic balls, each much lighter than the one below, the limit is 2<sup>" + a.masses.length + "</sup> &minus; 1 = " + amp.limit + ".");
       if (a.gravity > 0) para("so it rises <span class=\"num\">" + num(amp.ratio * amp.ratio) + "</span> &times; as high above the collision as the stack fell");
     } else if (amp) {
       para("The ball rebounds at <span class=\"num\">" + num(amp.ratio) + "</span> &times; its impact speed", "big");
