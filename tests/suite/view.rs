@@ -674,6 +674,14 @@ fn browser_stack_equals_collide_track_and_prints_the_amplification() {
         steps[1]["numbers"]
     );
     assert!(steps[2]["command"].as_str().unwrap().contains(" -e 0.9 "));
+    let ms: Vec<String> = steps[1..]
+        .iter()
+        .map(|s| format!("{:.1}", s["ms"].as_f64().unwrap_or(f64::NAN)))
+        .collect();
+    eprintln!(
+        "stack: run + redraw {} ms (3 balls, e = 0.9, a ball)",
+        ms.join(", ")
+    );
     // The bouncing ball with e = 0.5 at the floor comes to rest: a Zeno sequence.
     assert!(
         steps[3]["state"]

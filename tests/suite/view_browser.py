@@ -163,12 +163,14 @@ def main():
                 for field, value in step.get("fill", {}).items():
                     page.fill("#" + field, value)
                     page.dispatch_event("#" + field, "change")
-                out["stack"].append({"state": text("#track-state"), "command": text("#track-command"),
+                ms = page.evaluate("collideView.stackMs")
+                out["stack"].append({"ms": ms if ms == ms else None,
+                                     "state": text("#track-state"), "command": text("#track-command"),
                                      "scene": text("#track-scene"), "numbers": text("#stack-numbers"),
                                      "error": page.eval_on_selector("#track-error", "e => e.hidden ? '' : e.textContent")})
         out["seconds"] = time.time() - started
         ctx.close()
-    json.dump(out, sys.stdout)
+    json.dump(out, sys.stdout, allow_nan=False)
 
 
 if __name__ == "__main__":

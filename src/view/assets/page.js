@@ -7,9 +7,9 @@
   const data = JSON.parse($("setup").textContent);
   const reduceMotion = window.matchMedia && window.matchMedia("(prefers-reduced-motion: reduce)").matches;
 
-  // What tests and curious users can read: whether the core is running, and how long each
-  // recompute + redraw of a drag took (milliseconds, performance.now()).
-  const view = { ready: false, timings: [], lastUpdateMs: NaN };
+  // What tests and curious users can read: whether the core is running, how long each recompute
+  // + redraw of a drag took, and the last run + redraw of the stack (milliseconds).
+  const view = { ready: false, timings: [], lastUpdateMs: NaN, stackMs: NaN };
   window.collideView = view;
 
   // ---------------------------------------------------------------- the core (WebAssembly)
@@ -200,10 +200,11 @@
       x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
       y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
     };
-    add([0, 0]);
+    const zoom = $("zoom").checked;
+    if (!zoom) add([0, 0]);
     for (const p of pictures) {
       [p.in, p.com, p.fin].forEach(add);
-      for (const k of ["in", "com", "fin"]) {
+      for (const k of zoom ? [] : ["in", "com", "fin"]) {
         const e = p.ellipses[k];
         const [q1, q2] = e.axes;
         const hx = Math.hypot(e.a * q1[0], e.b * q2[0]);
@@ -297,22 +298,32 @@
     }
     // The points and their coordinates (the IN-FIN chord lies on the momentum line).
     const labels = el(svg, "g", {});
+    // Labels beside their points, moved down a line where they would overlap another.
+    const placed = [];
     const point = (v, colour, name, id, r) => {
       const [sx, sy] = S(v);
       el(svg, "circle", { id, cx: r2(sx), cy: r2(sy), r, fill: colour, stroke: "#fff", "stroke-width": 2 });
+      const text = name + " (" + short(v[0]) + ", " + short(v[1]) + ")";
       const right = sx < a.x + a.w - 150;
+      const width = 7.2 * text.length;
+      const x0 = right ? sx + 10 : sx - 10 - width;
+      let y = sy - 9;
+      while (placed.some((q) => Math.abs(q.y - y) < 14 && x0 < q.x1 && q.x0 < x0 + width)) y += 15;
+      placed.push({ x0, x1: x0 + width, y });
       el(labels, "text", {
-        x: r2(sx + (right ? 10 : -10)), y: r2(sy - 9), "text-anchor": right ? "start" : "end",
+        x: r2(sx + (right ? 10 : -10)), y: r2(y), "text-anchor": right ? "start" : "end",
         class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4,
-      }, name + " (" + short(v[0]) + ", " + short(v[1]) + ")");
+      }, text);
     };
+    point(p.in, "var(--in)", "IN", "point-in", 7);
     point(p.com, "var(--com)", "COM", "point-com", 5);
     point(p.fin, "var(--fin)", "FIN", "point-fin", 5.5);
     if (p.reverse) {
       point(p.reverse.in, "var(--rev)", "IN\u2032", "point-rev-in", 0.1);
       point(p.reverse.fin, "var(--rev)", "FIN\u2032", "point-rev-fin", 0.1);
     }
-    point(p.in, "var(--in)", "IN", "point-in", 7);
+    // IN on top, to be grabbed.
+    svg.appendChild(svg.querySelector("#point-in"));
     svg.appendChild(labels);
   }
 
@@ -497,6 +508,7 @@
     $("e-range").addEventListener("input", () => { $("e").value = String(Number($("e-range").value)); solveCase(false); });
     $("reverse").addEventListener("change", () => solveCase(false));
     $("overlay").addEventListener("change", () => solveCase(false));
+    $("zoom").addEventListener("change", () => solveCase(false));
   }
   function valueOf(text) {
     const t = text.trim();
@@ -695,6 +707,7 @@
   }
   function runStack() {
     if (!core) return;
+    const t0 = performance.now();
     const answer = core(trackRequest());
     for (const [, id] of trackFields) $(id).removeAttribute("aria-invalid");
     const box = $("track-error");
@@ -710,6 +723,7 @@
     stackAnswer = answer;
     stack.t = Math.min(stack.t, answer.until);
     renderStack();
+    view.stackMs = performance.now() - t0;
   }
   function renderStack() {
     const a = stackAnswer;
