@@ -451,11 +451,12 @@ fn rel(s: Spread) -> Spread {
     }
 }
 
-/// Times `method` over `cases`: passes over the whole family for about `budget_ms`, at least 5.
+/// Times `method` over `cases`: passes over the whole family for about `budget_ms` (at least one
+/// pass, so a family slower than the budget takes one pass).
 pub fn time(method: Method, cases: &[Collision], budget_ms: u64) -> (f64, f64, f64) {
     let mut per_pass = Vec::new();
     let start = Instant::now();
-    while per_pass.len() < 5 || (start.elapsed().as_millis() as u64) < budget_ms {
+    while per_pass.is_empty() || (start.elapsed().as_millis() as u64) < budget_ms {
         let t = Instant::now();
         for c in cases {
             black_box(solve(method, black_box(c)));
@@ -471,6 +472,53 @@ pub fn time(method: Method, cases: &[Collision], budget_ms: u64) -> (f64, f64, f
         per_pass[0],
         per_pass[per_pass.len() - 1],
     )
+}
+
+/// Cases per family timed by [`Cost::measure`].
+const SAMPLE: usize = 8;
+
+/// What a report costs besides its timing passes, measured before it runs.
+#[derive(Clone, Copy, Debug)]
+pub struct Cost {
+    /// Seconds a case costs: its exact reference, and each method's solve, errors and share of
+    /// a timing pass.
+    pub per_case: f64,
+    /// Families of a report (the lecture family among them).
+    pub families: usize,
+}
+
+impl Cost {
+    /// Measured on a sample of [`SAMPLE`] cases a family, drawn from `seed` like the report's
+    /// (the same distributions), so that a report too large for its budget is refused before
+    /// its cases are even drawn.
+    pub fn measure(seed: u64, methods: &[Method]) -> Cost {
+        let sample = families(seed, SAMPLE);
+        let cases: usize = sample.iter().map(|f| f.cases.len()).sum();
+        let start = Instant::now();
+        for f in &sample {
+            for c in &f.cases {
+                let r = Reference::of(c);
+                for &m in methods {
+                    black_box(errors(&solve(m, c), &r));
+                    black_box(solve(m, black_box(c)));
+                }
+            }
+        }
+        Cost {
+            per_case: start.elapsed().as_secs_f64() / cases.max(1) as f64,
+            families: sample.len(),
+        }
+    }
+
+    /// Cases of a report with `n` a family (the lecture family has its five).
+    pub fn cases(&self, n: u64) -> u64 {
+        5 + (self.families as u64 - 1) * n
+    }
+
+    /// Seconds a report with `n` cases a family spends besides its timing passes.
+    pub fn seconds(&self, n: u64) -> f64 {
+        self.per_case * self.cases(n) as f64
+    }
 }
 
 /// The whole report: every method on every family.

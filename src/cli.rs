@@ -14,11 +14,12 @@ use collide::inertia::InertiaTensor;
 use collide::number::{Given, Number, NumberList};
 use collide::report::Section;
 use collide::restitution::Restitution;
+use collide::space::typed::Listed;
 use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
-use collide::table::writer::RowFormat;
-use collide::units::{Dimension, Pair, parse_pair};
+use collide::table::writer::{Header, RowFormat};
+use collide::units::Dimension;
 
 /// The exit statuses, for `collide --help` and the man page: the same words as the guide's table
 /// (docs/cli.md, "Exit status"), which `tests/suite/shell.rs` compares with both.
@@ -28,8 +29,9 @@ pub const EXIT_STATUS: &str = "Exit status:
 was checked rather than used (solve and scene then print the checks and no collision)
   2    bad input or usage: a message on stderr names the bad value and says what is expected, \
 and nothing is written to stdout
-  130  interrupted by SIGINT, SIGTERM or SIGHUP while writing a file (-o, --log, --plot): the \
-unfinished file is removed";
+  130  interrupted by Ctrl-C (SIGINT) while writing a file (-o, --log, --plot): the unfinished \
+file is removed first; another catchable signal N does the same and exits with 128+N (143 for \
+SIGTERM)";
 
 #[derive(Parser, Debug)]
 #[command(
@@ -144,9 +146,10 @@ pub struct PlotArgs {
     #[command(flatten)]
     pub case: CaseArgs,
 
-    /// Which picture
-    #[arg(long, value_enum, default_value_t = collide::plot::Kind::Velocity)]
-    pub kind: collide::plot::Kind,
+    /// Which picture [default: velocity; for vectors in the plane, the paths and momentum
+    /// triangles]
+    #[arg(long, value_enum)]
+    pub kind: Option<collide::plot::Kind>,
 
     /// The frame to draw in: lab, com, rest-in:1, ..., or an observer velocity
     #[arg(long, default_value = "lab", allow_hyphen_values = true)]
@@ -244,8 +247,9 @@ pub struct PiArgs {
     #[arg(value_name = "N", value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub n: u32,
 
-    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes]
-    #[arg(long, overrides_with = "no_simulate")]
+    /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes;
+    /// refused above 10]
+    #[arg(long, conflicts_with = "no_simulate")]
     pub simulate: bool,
 
     /// Give the count only, without simulating
@@ -344,9 +348,9 @@ pub struct TableArgs {
     #[arg(long, value_delimiter = ',', value_name = "COLUMNS", value_parser = ColumnParser)]
     pub columns: Vec<&'static Column>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = RowFormat::Csv)]
-    pub format: RowFormat,
+    /// Output format [default: from -o's extension (.csv, .jsonl, .ndjson), else csv]
+    #[arg(long, value_enum)]
+    pub format: Option<RowFormat>,
 
     /// Write to FILE atomically (a temporary file renamed into place when complete)
     #[arg(short, long, value_name = "FILE")]
@@ -355,6 +359,12 @@ pub struct TableArgs {
     /// Report each bad row on stderr and go on (default: stop at the first, exit 2)
     #[arg(long)]
     pub skip_bad: bool,
+
+    /// Which shards carry the header line (CSV, text) [default: always when -o names a file, so
+    /// each shard file reads on its own; first on stdout, so shards concatenate to the whole
+    /// table]
+    #[arg(long, value_enum)]
+    pub header: Option<Header>,
 }
 
 #[derive(Args, Debug)]
@@ -372,12 +382,14 @@ pub struct SweepArgs {
     )]
     pub vary: Vec<Vary>,
 
-    /// Only the K-th of N contiguous slices of the rows (K from 1); the shards concatenated in
-    /// order are the whole table (shard 1 carries the header)
+    /// Only the K-th of N contiguous slices of the rows (K from 1); on stdout the shards
+    /// concatenated in order are the whole table, and each shard file written with -o carries
+    /// the header (see --header)
     #[arg(long, value_name = "K/N", default_value = "1/1")]
     pub shard: Shard,
 
-    /// Refuse sweeps of more rows than this
+    /// Refuse sweeps of more rows than this (a typo must not start a 730 GB file: 1e8 CSV rows
+    /// are about 7 GB)
     #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_ROWS)]
     pub max_rows: u64,
 
@@ -494,20 +506,42 @@ pub struct AccuracyArgs {
 /// The case: tensor (masses or a general inertia), velocities, restitution.
 #[derive(Args, Debug, Clone)]
 pub struct CaseArgs {
-    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'; '?' for an unknown (solve)
-    #[arg(short, long, value_name = "M1,M2", value_parser = |s: &str| parse_pair(s, Dimension::Mass, "masses M1,M2"),
+    /// Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'; '?' for an unknown (solve);
+    /// more than two bodies: M1,M2,M3,...
+    #[arg(short, long, value_name = "M1,M2", value_parser = |s: &str| Listed::parse(s, Dimension::Mass, "masses M1,M2"),
           allow_hyphen_values = true, required_unless_present = "inertia")]
-    pub masses: Option<Pair>,
+    pub masses: Option<Listed>,
 
     /// A general symmetric positive definite inertia tensor instead of masses, e.g. '4,0.5;0.5,1'
     #[arg(long, value_name = "M11,M12;M21,M22", value_parser = parse_inertia,
           allow_hyphen_values = true, conflicts_with = "masses")]
     pub inertia: Option<InertiaTensor>,
 
-    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'; '?' for an unknown (solve)
-    #[arg(short, long, value_name = "V1,V2", value_parser = |s: &str| parse_pair(s, Dimension::Velocity, "velocities V1,V2"),
+    /// Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'; '?' for an unknown (solve);
+    /// vectors in the plane or in space: '(4,1),(-1,0.5)', '6 m/s @ 30deg,0', '15 m/s @ N30E,?'
+    #[arg(short, long, value_name = "V1,V2", value_parser = |s: &str| Listed::parse(s, Dimension::Velocity, "velocities V1,V2"),
           allow_hyphen_values = true)]
-    pub velocities: Pair,
+    pub velocities: Listed,
+
+    /// The line of impact between bodies 1 and 2 (from 1 to 2): components '(1,1)' (any
+    /// length) or an angle '30deg', 'N30E'; the impulse acts along it (plane and space)
+    #[arg(long, value_name = "N", allow_hyphen_values = true, conflicts_with = "radii",
+          value_parser = |s: &str| s.parse::<collide::space::pose::NormalGiven>())]
+    pub normal: Option<collide::space::pose::NormalGiven>,
+
+    /// Radii of two smooth disks (with --impact-parameter): the line of impact from the geometry
+    #[arg(long, value_name = "R1,R2", requires = "impact_parameter",
+          value_parser = |s: &str| -> Result<[Number; 2], String> {
+              let [a, b] = collide::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
+              Ok([a.parse().map_err(|e: collide::number::NumberError| e.to_string())?,
+                  b.parse().map_err(|e: collide::number::NumberError| e.to_string())?])
+          })]
+    pub radii: Option<[Number; 2]>,
+
+    /// Distance from body 2's centre to the line of body 1's relative motion (positive: to its
+    /// left): sin(phi) = B / (R1 + R2), the line of impact at phi from the relative velocity
+    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "radii")]
+    pub impact_parameter: Option<Number>,
 
     /// Coefficient of restitution e >= 0: 'elastic' (1), 'inelastic' (0), above 1 superelastic (energy released), or '?' (solve)
     /// [default: elastic; unknown when --fin is given]
@@ -535,13 +569,9 @@ pub struct SolveArgs {
     #[command(flatten)]
     pub case: CaseArgs,
 
-    /// Sections to print, comma-separated
-    #[arg(
-        long,
-        value_enum,
-        value_delimiter = ',',
-        default_value = "vectors,forms,energy"
-    )]
+    /// Sections to print, comma-separated [default: vectors,forms,energy; in the plane, in
+    /// space and for N bodies: vectors,energy,angles]
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "SECTIONS")]
     pub show: Vec<Section>,
 
     /// Exact rational arithmetic from the numbers as typed: fractions out, radii to 20 digits
@@ -566,8 +596,8 @@ pub struct SolveArgs {
     /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
     /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest
     #[arg(long, value_name = "F1,F2", allow_hyphen_values = true,
-          value_parser = |s: &str| parse_pair(s, Dimension::Velocity, "final velocities F1,F2"))]
-    pub fin: Option<Pair>,
+          value_parser = |s: &str| Listed::parse(s, Dimension::Velocity, "final velocities F1,F2"))]
+    pub fin: Option<Listed>,
 
     /// Also draw the velocity diagram: to FILE.svg, or 'term' for the terminal
     #[arg(long, value_name = "FILE.svg|term")]
@@ -580,13 +610,14 @@ pub struct SolveArgs {
 
 #[derive(Args, Debug)]
 pub struct SceneArgs {
-    /// Scene files (TOML)
+    /// Scene files (TOML); '-' for standard input
     #[arg(required = true, value_name = "FILE.toml", value_hint = clap::ValueHint::FilePath)]
     pub files: Vec<PathBuf>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    /// Output format of the reports [default: text] (a [sweep] scene run alone writes its table
+    /// in its own format)
+    #[arg(long, value_enum)]
+    pub format: Option<Format>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

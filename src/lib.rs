@@ -51,6 +51,9 @@ pub mod problem;
 pub mod unknowns;
 pub mod wall;
 
+// 3b. the plane and space
+pub mod space;
+
 // 4. how it is computed
 pub mod solver;
 

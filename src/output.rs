@@ -1,57 +1,198 @@
 //! Where output goes: stdout, or a file written atomically (a temporary file beside it renamed
-//! into place when complete, removed if not, also on SIGINT, SIGTERM and SIGHUP; only SIGKILL,
-//! which no program can catch, can leave one behind), and a progress bar for long runs.
+//! into place when complete, removed if not), and a progress bar for long runs.
+//!
+//! Every signal that ends a process by default and can be caught (SIGINT, SIGTERM, SIGHUP,
+//! SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGIO, SIGPWR, SIGSYS, SIGTRAP,
+//! SIGABRT, the real-time signals) removes the temporary files, then ends the process by the same
+//! signal, so that a shell sees it (status 128 + N: 130 for SIGINT). SIGXFSZ is ignored, so that a
+//! write beyond the file-size limit (`ulimit -f`) fails with EFBIG and is reported as an error
+//! (exit 2), the temporary file removed. SIGPIPE stays ignored, as Rust sets it: a closed pipe is
+//! the error EPIPE, which ends a run quietly. Only SIGKILL (and SIGSTOP), which no program can
+//! catch, and faults (SIGSEGV, SIGBUS, SIGFPE, SIGILL) can leave a temporary file behind.
 
+use std::ffi::CString;
 use std::fs::File;
 use std::io::{self, BufWriter, IsTerminal, Write};
+use std::os::unix::ffi::OsStrExt;
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, Once};
+use std::sync::Once;
+use std::sync::atomic::{AtomicPtr, Ordering};
 use std::time::{Duration, Instant};
 
-/// Temporary files being written, removed by the signal handler if the run is interrupted.
-static PARTIALS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+use libc::c_char;
 
-/// Registers `tmp` for removal on SIGINT, SIGTERM or SIGHUP (installing the handler once).
-fn register(tmp: &Path) {
-    static HANDLER: Once = Once::new();
-    HANDLER.call_once(|| {
-        // The handler runs on its own thread: it takes the list, removes the files and exits
-        // with the shell's status for an interrupted command (128 + SIGINT).
-        let _ = ctrlc::set_handler(|| {
-            let files = PARTIALS
-                .lock()
-                .map(|mut v| std::mem::take(&mut *v))
-                .unwrap_or_default();
-            for f in files {
-                let _ = std::fs::remove_file(f);
-            }
-            std::process::exit(130);
-        });
-    });
-    if let Ok(mut v) = PARTIALS.lock() {
-        v.push(tmp.to_path_buf());
+/// Temporary files being written, as C strings the signal handler can pass to `unlink` (it may
+/// take no lock and allocate nothing). A string is never freed: a handler on another thread may
+/// be reading it while its slot is cleared (a few bytes per file, a few files per run).
+static PARTIALS: [AtomicPtr<c_char>; SLOTS] =
+    [const { AtomicPtr::new(std::ptr::null_mut()) }; SLOTS];
+
+/// Files that can be written at once (a run writes at most three: a table or report, a log, a
+/// picture).
+const SLOTS: usize = 64;
+
+/// The signals that end a process by default and that a program can catch, but for faults
+/// (SIGSEGV, SIGBUS, SIGFPE, SIGILL: Rust's stack-overflow report handles the first two) and
+/// SIGPIPE and SIGXFSZ (ignored).
+fn terminating() -> Vec<libc::c_int> {
+    let mut s = vec![
+        libc::SIGHUP,
+        libc::SIGINT,
+        libc::SIGQUIT,
+        libc::SIGTERM,
+        libc::SIGUSR1,
+        libc::SIGUSR2,
+        libc::SIGALRM,
+        libc::SIGVTALRM,
+        libc::SIGPROF,
+        libc::SIGXCPU,
+        libc::SIGIO,
+        libc::SIGSYS,
+        libc::SIGTRAP,
+        libc::SIGABRT,
+    ];
+    #[cfg(any(target_os = "linux", target_os = "android"))]
+    {
+        s.extend([libc::SIGPWR, libc::SIGSTKFLT]);
+        s.extend(libc::SIGRTMIN()..=libc::SIGRTMAX());
+    }
+    s
+}
+
+/// Removes the temporary files, then ends the process by `sig` with its default action.
+extern "C" fn on_signal(sig: libc::c_int) {
+    for slot in &PARTIALS {
+        let p = slot.load(Ordering::SeqCst);
+        if !p.is_null() {
+            // SAFETY: `p` is a NUL-terminated string that is never freed; unlink is
+            // async-signal-safe.
+            unsafe { libc::unlink(p) };
+        }
+    }
+    // SAFETY: sigaction, sigemptyset, sigaddset, pthread_sigmask, raise and _exit are
+    // async-signal-safe; the structures are local and initialised.
+    unsafe {
+        let mut default: libc::sigaction = std::mem::zeroed();
+        default.sa_sigaction = libc::SIG_DFL;
+        libc::sigemptyset(&mut default.sa_mask);
+        libc::sigaction(sig, &default, std::ptr::null_mut());
+        let mut set: libc::sigset_t = std::mem::zeroed();
+        libc::sigemptyset(&mut set);
+        libc::sigaddset(&mut set, sig);
+        libc::pthread_sigmask(libc::SIG_UNBLOCK, &set, std::ptr::null_mut());
+        libc::raise(sig);
+        libc::_exit(128 + sig);
     }
 }
 
-/// `tmp` is renamed or removed: no longer the handler's.
-fn unregister(tmp: &Path) {
-    if let Ok(mut v) = PARTIALS.lock() {
-        v.retain(|p| p != tmp);
+/// Installs the handler of every terminating signal and ignores SIGXFSZ (once; also done by the
+/// first temporary file). A signal ignored when the program started (`nohup`) stays ignored.
+pub fn guard_signals() {
+    static HANDLERS: Once = Once::new();
+    HANDLERS.call_once(|| {
+        // SAFETY: the handler only calls async-signal-safe functions (see `on_signal`); the
+        // structures are initialised before use.
+        unsafe {
+            for sig in terminating() {
+                let mut old: libc::sigaction = std::mem::zeroed();
+                if libc::sigaction(sig, std::ptr::null(), &mut old) != 0
+                    || old.sa_sigaction == libc::SIG_IGN
+                {
+                    continue;
+                }
+                let mut action: libc::sigaction = std::mem::zeroed();
+                action.sa_sigaction = on_signal as extern "C" fn(libc::c_int) as usize;
+                libc::sigemptyset(&mut action.sa_mask);
+                action.sa_flags = libc::SA_RESTART;
+                libc::sigaction(sig, &action, std::ptr::null_mut());
+            }
+            libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+        }
+    });
+}
+
+/// Registers `tmp` for removal by the signal handler; its slot.
+fn register(tmp: &Path) -> io::Result<usize> {
+    guard_signals();
+    let name = CString::new(tmp.as_os_str().as_bytes()).map_err(io::Error::other)?;
+    let p = name.into_raw();
+    for (i, slot) in PARTIALS.iter().enumerate() {
+        if slot
+            .compare_exchange(std::ptr::null_mut(), p, Ordering::SeqCst, Ordering::SeqCst)
+            .is_ok()
+        {
+            return Ok(i);
+        }
     }
+    // SAFETY: `p` came from `into_raw` just above and was published nowhere.
+    drop(unsafe { CString::from_raw(p) });
+    Err(io::Error::other(format!(
+        "more than {SLOTS} files are being written at once"
+    )))
+}
+
+/// The file of `slot` is renamed or removed: no longer the handler's (its string is leaked).
+fn unregister(slot: usize) {
+    PARTIALS[slot].store(std::ptr::null_mut(), Ordering::SeqCst);
+}
+
+/// A write error, with what to do about a full file-size limit.
+fn explain(e: io::Error) -> io::Error {
+    if e.raw_os_error() == Some(libc::EFBIG) {
+        return io::Error::new(
+            e.kind(),
+            format!("{e}: the file-size limit (ulimit -f) was reached; nothing was written"),
+        );
+    }
+    e
 }
 
 /// Where bytes go: stdout; a regular file written atomically (a temporary file beside it renamed
-/// into place when the run completes, removed if it does not); or a device, FIFO or other
-/// non-regular file (`-o /dev/null`), written directly and never replaced.
+/// into place when the run completes, removed if it does not); or written directly and never
+/// replaced: a device, FIFO or other non-regular file (`-o /dev/null`), a descriptor the shell
+/// opened (`/dev/stdout`, `/dev/stderr`, `/dev/fd/N`: written as `>&N` would), or an existing
+/// file in a folder that cannot hold the temporary file (written in place, as `>` would).
 pub enum Output {
     Stdout(io::StdoutLock<'static>),
     File {
         tmp: PathBuf,
+        slot: usize,
         path: PathBuf,
         file: BufWriter<File>,
         done: bool,
     },
     Direct(BufWriter<File>),
+}
+
+/// The descriptor a name such as `/dev/stdout`, `/dev/fd/3` or `/proc/self/fd/3` stands for.
+fn descriptor(path: &Path) -> Option<libc::c_int> {
+    let s = path.to_str()?;
+    match s {
+        "/dev/stdin" => return Some(0),
+        "/dev/stdout" => return Some(1),
+        "/dev/stderr" => return Some(2),
+        _ => {}
+    }
+    let n = s
+        .strip_prefix("/dev/fd/")
+        .or_else(|| s.strip_prefix("/proc/self/fd/"))?;
+    n.parse().ok().filter(|n: &libc::c_int| *n >= 0)
+}
+
+/// A new descriptor for the open file of `fd` (as the shell's `>&N`).
+fn duplicate(fd: libc::c_int) -> io::Result<File> {
+    // SAFETY: F_DUPFD_CLOEXEC only reads `fd` (an invalid one is the error EBADF) and returns a
+    // new descriptor that nothing else owns.
+    let new = unsafe { libc::fcntl(fd, libc::F_DUPFD_CLOEXEC, 0) };
+    if new < 0 {
+        return Err(io::Error::last_os_error());
+    }
+    // SAFETY: `new` is a fresh descriptor owned by the returned file alone.
+    Ok(unsafe { std::os::fd::FromRawFd::from_raw_fd(new) })
+}
+
+fn direct(file: File) -> Output {
+    Output::Direct(BufWriter::with_capacity(1 << 20, file))
 }
 
 impl Output {
@@ -60,15 +201,25 @@ impl Output {
         let Some(path) = path.filter(|p| *p != Path::new("-")) else {
             return Ok(Output::Stdout(io::stdout().lock()));
         };
+        guard_signals();
+        // A descriptor the shell opened (a pipe, a terminal, a file opened with `>` or `>>`):
+        // written through a copy of it, never replaced.
+        if let Some(fd) = descriptor(path) {
+            return duplicate(fd).map(direct);
+        }
+        // A device, FIFO or other non-regular file, named directly or through links (the
+        // kernel follows them, `/proc`'s too): written directly.
+        if let Ok(m) = std::fs::metadata(path)
+            && !m.is_file()
+        {
+            let file = std::fs::OpenOptions::new().write(true).open(path)?;
+            return Ok(direct(file));
+        }
         // Follow symlinks (a dangling one too) to the file they name, so the rename replaces
         // that file, not the link.
         let path = through_links(path)?;
         let mut keep = None;
         let path = match std::fs::metadata(&path) {
-            Ok(m) if !m.is_file() => {
-                let file = std::fs::OpenOptions::new().write(true).open(&path)?;
-                return Ok(Output::Direct(BufWriter::with_capacity(1 << 20, file)));
-            }
             Ok(m) => {
                 // Refuse where the shell's `>` would (a file we may not write), and give the
                 // new file the old one's permission bits.
@@ -87,35 +238,65 @@ impl Output {
             name.pop();
         }
         let tmp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
-        register(&tmp);
-        let created = File::create(&tmp).inspect_err(|_| unregister(&tmp))?;
-        if let Some(permissions) = keep {
-            created.set_permissions(permissions)?;
-        }
+        let slot = register(&tmp)?;
+        let created = match File::create(&tmp) {
+            Ok(f) => f,
+            // A file we may write in a folder we may not: written in place, as `>` would.
+            Err(e) if keep.is_some() && e.kind() == io::ErrorKind::PermissionDenied => {
+                unregister(slot);
+                let file = std::fs::OpenOptions::new()
+                    .write(true)
+                    .truncate(true)
+                    .open(&path)?;
+                diagnostic(format_args!(
+                    "note: {} is written in place, as the shell's > would (its folder is not \
+                     writable, so no temporary file can be renamed into place): an interrupted \
+                     run leaves it incomplete",
+                    path.display()
+                ));
+                return Ok(direct(file));
+            }
+            Err(e) => {
+                unregister(slot);
+                return Err(e);
+            }
+        };
         let file = BufWriter::with_capacity(1 << 20, created);
-        Ok(Output::File {
+        let out = Output::File {
             tmp,
+            slot,
             path,
             file,
             done: false,
-        })
+        };
+        // Dropped on an error: the temporary file is removed.
+        if let (Some(permissions), Output::File { file, .. }) = (keep, &out) {
+            file.get_ref().set_permissions(permissions)?;
+        }
+        Ok(out)
+    }
+
+    /// Whether the output is a file replaced as a whole (not stdout, a device or a descriptor).
+    pub fn is_file(&self) -> bool {
+        matches!(self, Output::File { .. })
     }
 
     /// Flushes, and renames a file into place.
     pub fn commit(mut self) -> io::Result<()> {
         match &mut self {
-            Output::Stdout(s) => s.flush(),
-            Output::Direct(f) => f.flush(),
+            Output::Stdout(s) => s.flush().map_err(explain),
+            Output::Direct(f) => f.flush().map_err(explain),
             Output::File {
                 tmp,
+                slot,
                 path,
                 file,
                 done,
             } => {
-                file.flush()?;
+                file.flush().map_err(explain)?;
                 file.get_ref().sync_all()?;
                 std::fs::rename(&*tmp, path)?;
-                unregister(tmp);
+                unregister(*slot);
                 *done = true;
                 Ok(())
             }
@@ -129,29 +310,35 @@ impl Write for Output {
             Output::Stdout(s) => s.write(buf),
             Output::File { file, .. } | Output::Direct(file) => file.write(buf),
         }
+        .map_err(explain)
     }
     fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
         match self {
             Output::Stdout(s) => s.write_all(buf),
             Output::File { file, .. } | Output::Direct(file) => file.write_all(buf),
         }
+        .map_err(explain)
     }
     fn flush(&mut self) -> io::Result<()> {
         match self {
             Output::Stdout(s) => s.flush(),
             Output::File { file, .. } | Output::Direct(file) => file.flush(),
         }
+        .map_err(explain)
     }
 }
 
 impl Drop for Output {
     fn drop(&mut self) {
         if let Output::File {
-            tmp, done: false, ..
+            tmp,
+            slot,
+            done: false,
+            ..
         } = self
         {
             let _ = std::fs::remove_file(&*tmp);
-            unregister(tmp);
+            unregister(*slot);
         }
     }
 }

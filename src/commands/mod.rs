@@ -11,6 +11,7 @@ mod plot;
 mod scene;
 mod shell;
 mod solve;
+mod space_solve;
 mod table;
 mod track;
 mod view;
@@ -18,6 +19,8 @@ mod view;
 use anyhow::Result;
 use collide::case::Case;
 use collide::problem::Problem;
+use collide::space;
+use collide::space::typed::Listed;
 
 use crate::cli::{CaseArgs, Command, LayoutArgs};
 
@@ -55,25 +58,83 @@ pub fn run(command: Command) -> Result<Outcome> {
 }
 
 impl CaseArgs {
+    /// Whether the case is one for the plane-and-space solver: not two bodies, vectors, or a
+    /// line of impact.
+    pub fn spatial(&self) -> bool {
+        self.masses.as_ref().is_some_and(|m| m.pair.is_none())
+            || self.velocities.pair.is_none()
+            || self.normal.is_some()
+            || self.radii.is_some()
+    }
+
     /// The typed problem (masses or tensor, velocities, restitution, units), for exact
-    /// arithmetic or not.
-    pub fn problem(&self, fin: Option<&collide::units::Pair>, exact: bool) -> Problem {
-        Problem {
-            masses: self.masses.clone(),
-            velocities: self.velocities.clone(),
-            fin: fin.cloned(),
+    /// arithmetic or not: two bodies on a line (the plane and N bodies are `space_input`).
+    pub fn problem(&self, fin: Option<&Listed>, exact: bool) -> Result<Problem> {
+        let pair = |l: &Listed| {
+            l.pair.clone().ok_or_else(|| {
+                anyhow::anyhow!(
+                    "'{}': N bodies, vectors and lines of impact are for `collide solve` (and \
+                     scenes); this takes two bodies on a line",
+                    l.text
+                )
+            })
+        };
+        if self.normal.is_some() || self.radii.is_some() {
+            anyhow::bail!(
+                "--normal and --radii describe a collision in the plane or in space: for \
+                 `collide solve` (and scenes)"
+            );
+        }
+        Ok(Problem {
+            masses: self.masses.as_ref().map(pair).transpose()?,
+            velocities: pair(&self.velocities)?,
+            fin: fin.map(pair).transpose()?,
             restitution: self.restitution.clone(),
             si: self.si,
             gravity: self.gravity.clone(),
             energy_unit: self.energy_unit,
             exact,
+        })
+    }
+
+    /// The typed problem in the plane or in space (or N bodies on a line).
+    pub fn space_input(&self, fin: Option<&Listed>, exact: bool) -> Result<space::pose::Input> {
+        use collide::space::typed::{parse_list, parse_masses};
+        if self.inertia.is_some() {
+            anyhow::bail!(
+                "--inertia is a two-body tensor on a line: give --masses for N bodies or vectors"
+            );
         }
+        let masses = match &self.masses {
+            Some(m) => parse_masses(&m.text)?,
+            None => anyhow::bail!("give --masses M1,M2,..."),
+        };
+        let normal = match (&self.normal, &self.radii, &self.impact_parameter) {
+            (Some(n), _, _) => Some(n.clone()),
+            (None, Some(radii), Some(b)) => Some(space::pose::NormalGiven::Geometry {
+                radii: radii.clone(),
+                b: b.clone(),
+            }),
+            _ => None,
+        };
+        Ok(space::pose::Input {
+            masses,
+            v_in: parse_list(&self.velocities.text)?,
+            fin: fin.map(|f| parse_list(&f.text)).transpose()?,
+            normal,
+            e: self
+                .restitution
+                .clone()
+                .map(|g| g.map(|r| r.number().clone())),
+            si: self.si,
+            exact,
+        })
     }
 
     /// The case, with units resolved, for exact arithmetic or not; `?` (an unknown) is for
     /// `collide solve`.
     pub fn into_case(self, exact: bool) -> Result<Case> {
-        Ok(self.problem(None, exact).into_case(self.inertia)?)
+        Ok(self.problem(None, exact)?.into_case(self.inertia)?)
     }
 }
 

@@ -15,27 +15,52 @@ use super::Outcome;
 use crate::cli::PlotArgs;
 
 pub fn run(args: PlotArgs) -> Result<Outcome> {
-    if args.frames && args.kind != Kind::Velocity {
+    if args.case.spatial() {
+        return plane(&args);
+    }
+    args.frame.on_line()?;
+    let kind = args.kind.unwrap_or(Kind::Velocity);
+    if args.frames && kind != Kind::Velocity {
         anyhow::bail!(
             "--frames overlays the standard frames on the velocity diagram; --kind {} draws \
              world lines in one frame (choose it with --frame)",
-            format!("{:?}", args.kind).to_lowercase()
+            format!("{kind:?}").to_lowercase()
+        );
+    }
+    if let Some(unit) = args.case.energy_unit {
+        anyhow::bail!(
+            "--energy-unit {}: a picture labels its energy ellipses in the case's own units (mass \
+             unit x velocity unit^2); give the energies in {0} with collide solve",
+            unit.name
         );
     }
     let case = args.case.into_case(false)?;
     check_drawable(&case, &args.frame)?;
     let stdout = match (&args.output, args.term) {
-        (_, true) => draw(
-            &case,
-            &args.frame,
-            args.kind,
-            args.frames,
-            Path::new("term"),
-        )?,
-        (Some(path), false) => draw(&case, &args.frame, args.kind, args.frames, path)?,
-        (None, false) => plot::svg(&case, &args.frame, args.kind, args.frames),
+        (_, true) => draw(&case, &args.frame, kind, args.frames, Path::new("term"))?,
+        (Some(path), false) => draw(&case, &args.frame, kind, args.frames, path)?,
+        (None, false) => plot::svg(&case, &args.frame, kind, args.frames),
     };
     Ok(Outcome::print(stdout))
+}
+
+/// The picture of a collision in the plane: the paths through the point of impact and the
+/// momentum triangles (`plot::plane`).
+fn plane(args: &PlotArgs) -> Result<Outcome> {
+    if args.kind.is_some() || args.frames || args.term || args.frame != Frame::Lab {
+        anyhow::bail!(
+            "--kind, --frames, --frame and --term draw two bodies on a line; a case in the \
+             plane is drawn as its paths and momentum triangles (collide plot ... -o FILE.svg)"
+        );
+    }
+    let svg = super::space_solve::plane_svg(&args.case)?;
+    match &args.output {
+        Some(path) => {
+            write_file(path, svg.as_bytes())?;
+            Ok(Outcome::print(String::new()))
+        }
+        None => Ok(Outcome::print(svg)),
+    }
 }
 
 /// Draws to `target` (an SVG file, or `term`); returns what to print (the terminal picture, or
@@ -65,7 +90,8 @@ fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
         Section::Energy,
         Section::Ellipses,
     ]);
-    Report::build(&Binary64::new(&case.collision, frame), &needed)?;
+    Report::build(&Binary64::new(&case.collision, frame), &needed)
+        .map_err(|u| u.with_way_out("rescale the units"))?;
     let p = Picture::new(case, frame, false);
     let fastest = [p.v_in.0, p.v_in.1, p.v_fin.0, p.v_fin.1]
         .iter()

@@ -2,6 +2,7 @@
 //! `[sweep]` scene run alone, its table written).
 
 use anyhow::{Context, Result};
+use clap::ValueEnum;
 use collide::report::Section;
 use collide::report::scene::{self as report, Checked, Listed};
 use collide::report::{AnyReport, contact as contact_report, json, solved, track as track_report};
@@ -13,30 +14,51 @@ use super::{Outcome, plot, table};
 use crate::cli::{Format, SceneArgs, TableArgs};
 
 pub fn run(args: SceneArgs) -> Result<Outcome> {
+    let stdin = args.files.iter().filter(|p| p.as_os_str() == "-").count();
+    if stdin > 1 {
+        anyhow::bail!("standard input ('-') is read once: give '-' once among the scene files");
+    }
+    // Each file is read once: a FIFO or a pipe (`<(cat x.toml)`, `/dev/stdin`) cannot be read
+    // twice.
+    let loaded: Vec<Result<AnyScene>> =
+        args.files.iter().map(|p| Ok(Scene::load_any(p)?)).collect();
     // A [sweep] scene writes a table, and comes alone.
-    if let [path] = args.files.as_slice()
-        && let AnyScene::Case(
+    if let [
+        Ok(AnyScene::Case(
             scene @ Scene {
                 sweep: Some(sw), ..
             },
-        ) = &Scene::load_any(path)?
+        )),
+    ] = loaded.as_slice()
     {
+        if let Some(format) = args.format {
+            anyhow::bail!(
+                "{}: a [sweep] scene writes its table in the format its [sweep] names ({}); \
+                 --format {} is for reports: set format = \"jsonl\" in [sweep] for JSON Lines",
+                scene.about.path.display(),
+                sw.format.name(),
+                name(format)
+            );
+        }
         let table = TableArgs {
             columns: sw.columns.clone(),
-            format: sw.format,
+            format: Some(sw.format),
             output: None,
             skip_bad: sw.skip_bad,
+            header: None,
         };
         return table::run_sweep(&scene.case, &sw.grid, Shard::WHOLE, &table);
     }
-    // Load and solve every scene first. With several files a bad one is reported on stderr by
-    // name and the others still run; the exit status is the worst (2 for a bad file).
+    let format = args.format.unwrap_or(Format::Text);
+    let several = args.files.len() > 1;
+    // Solve every scene. With several files a bad one is reported on stderr by name and the
+    // others still run; the exit status is the worst (2 for a bad file).
     let mut listed = Vec::new();
     let mut checked = Vec::new();
     let mut bad = 0usize;
-    for p in &args.files {
-        let mut one = || -> Result<Option<Checked>> {
-            Ok(match Scene::load_any(p)? {
+    for scene in loaded {
+        let one = || -> Result<Option<Checked>> {
+            Ok(match scene? {
                 // Among several files a [sweep] scene is listed, not written.
                 AnyScene::Case(Scene {
                     sweep: Some(sw),
@@ -54,11 +76,12 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                 AnyScene::Special(scene) => Some(solve_special(scene)?),
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
+                AnyScene::Space(scene) => Some(solve_space(scene)?),
             })
         };
         match one() {
             Ok(c) => checked.extend(c),
-            Err(e) if args.files.len() == 1 => return Err(e),
+            Err(e) if !several => return Err(e),
             Err(e) => {
                 bad += 1;
                 collide::output::diagnostic(format_args!("error: {e:#}"));
@@ -72,12 +95,13 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
         );
     }
     let failed = checked.iter().any(Checked::failed);
-    let stdout = match args.format {
+    let stdout = match format {
+        Format::Json if several => json::render(&several_json(&checked, &listed)),
         Format::Json => json::render(&report::json(&checked)),
-        Format::Text if checked.len() == 1 => report::text(&checked[0]),
-        Format::Text => report::summary(&checked, &listed),
+        Format::Text if several => report::summary(&checked, &listed),
+        Format::Text => report::text(&checked[0]),
     };
-    let stdout = if bad > 0 && args.format == Format::Text && checked.len() != 1 {
+    let stdout = if bad > 0 && format == Format::Text && several {
         let files = if bad == 1 { "file" } else { "files" };
         stdout + &format!("{bad} scene {files} could not be solved (see stderr)\n")
     } else {
@@ -95,8 +119,33 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
     })
 }
 
+/// Several scenes as JSON: an array of the solved ones, then one object for each [sweep] scene
+/// (listed with its rows, not written; a [sweep] scene writes its table only when run alone).
+fn several_json(checked: &[Checked], listed: &[Listed]) -> serde_json::Value {
+    let mut all = match report::json(checked) {
+        serde_json::Value::Array(a) => a,
+        one => vec![one],
+    };
+    for t in listed {
+        all.push(serde_json::json!({
+            "scene": t.path.display().to_string(),
+            "title": t.title,
+            "table": {
+                "rows": t.rows,
+                "written": false,
+                "note": "a [sweep] scene writes its table when run alone",
+            },
+            "checks": 0,
+            "failed": [],
+        }));
+    }
+    serde_json::Value::Array(all)
+}
+
 fn solve(scene: Scene) -> Result<Checked> {
-    let sections = scene.sections_needed();
+    let mut sections = scene.sections_needed();
+    // energy_unit = "kJ": every energy in kJ, as the header says.
+    sections.energy_scale = scene.case.units.energy_scale();
     let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.about.path.display()))?;
     let mut text = result.text(&scene.case, &scene.show);
@@ -126,6 +175,7 @@ fn solve_special(scene: SpecialScene) -> Result<Checked> {
         compute.insert(s);
     }
     let event = scene.event.special();
+    compute.energy_scale = event.units().energy_scale();
     let result = event
         .render(&compute, &scene.show, scene.exact)
         .with_context(at)?;
@@ -166,6 +216,29 @@ fn solve_contact(scene: ContactScene) -> Result<Checked> {
     check(scene.about, text, json)
 }
 
+fn solve_space(scene: collide::scene::SpaceScene) -> Result<Checked> {
+    use collide::report::space::solved::{Options, render};
+    let at = || format!("{}", scene.about.path.display());
+    let posed = scene.input.pose().with_context(at)?;
+    let solved = collide::space::solve::solve(&posed.statement).with_context(at)?;
+    let rendered = render(
+        &posed,
+        &solved,
+        &Options {
+            frame: &scene.frame,
+            show: scene.show,
+            exact: scene.input.exact,
+            reverse: scene.reverse,
+            fin_given: scene.input.fin.is_some(),
+            energy_unit: scene.energy_unit,
+        },
+    )
+    .with_context(at)?;
+    let mut checked = check(scene.about, rendered.text, rendered.json)?;
+    checked.inconsistent = rendered.inconsistent;
+    Ok(checked)
+}
+
 /// Checks a scene's expectations against its report; a key that names nothing in the report is
 /// an error with its line.
 fn check(about: About, text: String, json: serde_json::Value) -> Result<Checked> {
@@ -189,4 +262,11 @@ fn check(about: About, text: String, json: serde_json::Value) -> Result<Checked>
         checks,
         inconsistent: false,
     })
+}
+
+/// A flag value's name as typed (`jsonl`, `json`).
+fn name(value: impl ValueEnum) -> String {
+    value
+        .to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_string())
 }

@@ -16,11 +16,19 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
+    if args.case.spatial() {
+        return super::space_solve::run(&args);
+    }
+    args.frame.on_line()?;
     let posed = args
         .case
-        .problem(args.fin.as_ref(), args.exact)
+        .problem(args.fin.as_ref(), args.exact)?
         .solve(args.case.inertia.clone())?;
-    let mut sections = Sections::new(args.show.clone());
+    let mut sections = Sections::new(if args.show.is_empty() {
+        collide::report::Section::DEFAULT.to_vec()
+    } else {
+        args.show.clone()
+    });
     sections.contact_time = args.contact_time.clone();
     let units = posed.units().clone();
     sections.heights = Some(collide::units::HeightScale::new(

@@ -7,7 +7,7 @@ use collide::table::batch;
 use collide::table::columns::Column;
 use collide::table::engine::{RowsError, Summary, write_batch, write_sweep};
 use collide::table::sweep::{Grid, Param, Shard};
-use collide::table::writer::RowWriter;
+use collide::table::writer::{Header, RowFormat, RowWriter};
 
 use super::Outcome;
 use crate::cli::{BatchArgs, SweepArgs, TableArgs};
@@ -20,12 +20,25 @@ pub fn sweep(args: SweepArgs) -> Result<Outcome> {
 
 /// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
 pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> Result<Outcome> {
+    if let Some(unit) = case.units.energy_as {
+        // A table's columns carry no unit: its energies are the case's own.
+        anyhow::bail!(
+            "--energy-unit {} (energy_unit in a scene): a table's energies are in the case's own \
+             unit, {}, and its columns carry no unit label; drop it, or convert the columns",
+            unit.name,
+            collide::units::Units {
+                energy_as: None,
+                ..case.units.clone()
+            }
+            .energy()
+        );
+    }
     let general = !case.inertia().is_diagonal();
     if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
         anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
     }
-    let writer = RowWriter::new(columns(&table.columns, general), table.format);
     let mut out = open(table)?;
+    let writer = writer(columns(&table.columns, general), table, &out)?;
     let rows = shard.rows(grid.total);
     let mut progress = Progress::new(Some(rows.end - rows.start));
     let result = write_sweep(
@@ -46,11 +59,12 @@ pub fn batch(args: BatchArgs) -> Result<Outcome> {
         args.input_format,
         args.restitution.value(),
     )?;
-    let writer = RowWriter::new(
-        columns(&args.table.columns, input.general),
-        args.table.format,
-    );
     let mut out = open(&args.table)?;
+    let writer = writer(
+        columns(&args.table.columns, input.general),
+        &args.table,
+        &out,
+    )?;
     let mut progress = Progress::new(None);
     let result = write_batch(input, &writer, args.table.skip_bad, &mut out, &mut progress);
     finish(result, out, &progress, &args.table)
@@ -62,6 +76,41 @@ fn columns(chosen: &[&'static Column], general: bool) -> Vec<&'static Column> {
     } else {
         chosen.to_vec()
     }
+}
+
+/// How the rows are written: `--format`, else the format `-o`'s extension names (`.csv`,
+/// `.jsonl`, `.ndjson`), else CSV; a format the name contradicts is refused (`-o x.jsonl` wrote
+/// CSV). The header goes in every shard written to a file (each reads on its own), only in the
+/// first on stdout or a device (the shards concatenated are the whole table), unless `--header`
+/// says otherwise.
+fn writer(columns: Vec<&'static Column>, table: &TableArgs, out: &Output) -> Result<RowWriter> {
+    let named = table
+        .output
+        .as_deref()
+        .and_then(|p| p.extension())
+        .and_then(|e| e.to_str())
+        .and_then(|e| match e.to_ascii_lowercase().as_str() {
+            "csv" => Some(RowFormat::Csv),
+            "jsonl" | "ndjson" => Some(RowFormat::Jsonl),
+            _ => None,
+        });
+    let format = match (table.format, named) {
+        (Some(f), Some(n)) if f != n => anyhow::bail!(
+            "-o {} names a {} file, but --format is {}: name the file for its format, or leave \
+             out --format",
+            target(table),
+            n.name(),
+            f.name()
+        ),
+        (Some(f), _) | (None, Some(f)) => f,
+        (None, None) => RowFormat::Csv,
+    };
+    let header = table.header.unwrap_or(if out.is_file() {
+        Header::Always
+    } else {
+        Header::First
+    });
+    Ok(RowWriter::new(columns, format).with_header(header))
 }
 
 /// Where the table goes (`-o FILE`, atomically, or stdout).

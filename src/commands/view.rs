@@ -144,6 +144,11 @@ fn from_scene(setup: &mut Setup, path: &std::path::Path) -> Result<()> {
             };
             setup.focus = Focus::Stack;
         }
+        AnyScene::Space(_) => bail!(
+            "{}: a collision in the plane or in space: the page's panel for it is to come; run \
+             it with collide scene",
+            path.display()
+        ),
         AnyScene::Special(_) | AnyScene::Contact(_) => bail!(
             "{}: the page draws a collision of two movable bodies or a [track]; this scene is \
              another kind (a wall, a separation or contact forces): run it with collide scene",

@@ -3,6 +3,7 @@
 //! the terminal.
 
 pub mod accuracy;
+pub mod plane;
 pub mod spacetime;
 pub mod svg;
 pub mod term;

@@ -24,6 +24,9 @@ pub struct Block {
     indent: &'static str,
     rows: Vec<Option<Vec<String>>>,
     right: Vec<usize>,
+    /// Lines wider than this put their last cell (a note) on a line of its own, under the
+    /// value (`fit`).
+    width: Option<usize>,
 }
 
 impl Block {
@@ -34,6 +37,7 @@ impl Block {
             indent: "  ",
             rows: Vec::new(),
             right: Vec::new(),
+            width: None,
         }
     }
 
@@ -44,7 +48,16 @@ impl Block {
             indent: "",
             rows: Vec::new(),
             right: right.to_vec(),
+            width: None,
         }
+    }
+
+    /// Keeps lines within `width` columns: where a row would be wider, its last cell goes on a
+    /// line of its own under the second column, and the other rows' last cells align without
+    /// it.
+    pub fn fit(mut self, width: usize) -> Block {
+        self.width = Some(width);
+        self
     }
 
     /// `label  value  note`.
@@ -74,9 +87,11 @@ impl Block {
     pub fn render(&self, out: &mut String) {
         let rows = || self.rows.iter().flatten();
         let columns = rows().map(Vec::len).max().unwrap_or(0);
+        let stacked = self.stacked();
         let widths: Vec<usize> = (0..columns)
             .map(|i| {
                 rows()
+                    .filter(|r| !(stacked && r.len() >= 3 && i + 1 == r.len()))
                     .filter_map(|r| r.get(i))
                     .map(|c| c.chars().count())
                     .max()
@@ -90,6 +105,11 @@ impl Block {
             let Some(row) = row else {
                 out.push('\n');
                 continue;
+            };
+            let (row, moved) = if stacked && row.len() >= 3 {
+                (&row[..row.len() - 1], row.last())
+            } else {
+                (&row[..], None)
             };
             let cells: Vec<String> = row
                 .iter()
@@ -106,8 +126,60 @@ impl Block {
                 .collect();
             let line = format!("{}{}", self.indent, cells.join("  "));
             let _ = writeln!(out, "{}", line.trim_end());
+            if let Some(note) = moved.filter(|n| !n.is_empty()) {
+                let under = self.indent.len() + widths.first().map_or(0, |w| w + 2);
+                let _ = writeln!(out, "{}{note}", " ".repeat(under));
+            }
         }
     }
+
+    /// Whether the block is wider than the width asked for (`fit`): then every row's last cell
+    /// (a note) goes on a line of its own.
+    fn stacked(&self) -> bool {
+        let Some(limit) = self.width else {
+            return false;
+        };
+        let rows = || self.rows.iter().flatten();
+        let columns = rows().map(Vec::len).max().unwrap_or(0);
+        let widths: Vec<usize> = (0..columns)
+            .map(|i| {
+                rows()
+                    .filter_map(|r| r.get(i))
+                    .map(|c| c.chars().count())
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
+        rows().any(|r| {
+            let cells: usize = r
+                .iter()
+                .zip(&widths)
+                .map(|(c, w)| if c.is_empty() { 0 } else { *w + 2 })
+                .sum();
+            self.indent.len() + cells > limit + 2
+        })
+    }
+}
+
+/// `text` wrapped at spaces to lines of at most `width` characters (a word longer than that
+/// keeps its own line: numbers are never cut), each line after the first indented by `indent`.
+pub fn wrap(text: &str, width: usize, indent: &str) -> String {
+    let mut out = String::new();
+    let mut line = String::new();
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        let len = line.chars().count();
+        if len > 0 && len + 1 + word.chars().count() > width {
+            out.push_str(line.trim_end());
+            out.push('\n');
+            line = indent.to_string();
+        } else if len > 0 && !line.ends_with(' ') {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    out.push_str(line.trim_end());
+    out.push('\n');
+    out
 }
 
 /// A value for the header (`Number::brief`).
@@ -163,7 +235,7 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         momentum(case, m, &report.notes).render(&mut out);
     }
     if let Some(f) = &report.forms {
-        forms(case, f, report.energy.as_ref()).render(&mut out);
+        forms(case, f, report.energy.as_ref(), &report.notes).render(&mut out);
     }
     if let Some(en) = &report.energy {
         energy(case, en, &report.notes).render(&mut out);
@@ -235,12 +307,8 @@ fn reverse<N: Scalar>(case: &Case, r: &Reverse<N>) -> Block {
         b.row("e'", r.restitution.show(), why);
         b.row("KE_IN' = KE_FIN", r.energy.ke_in.show(), "");
         b.row("KE_FIN' = KE_IN", r.energy.fin.show(), "");
-        let amount = if superelastic {
-            r.energy.gained.neg()
-        } else {
-            r.energy.gained.clone()
-        };
-        b.row(gained, amount.show(), from);
+        let amount = r.energy.gained.as_ref().or(r.energy.lost.as_ref());
+        b.row(gained, amount.map(N::show).unwrap_or_default(), from);
     }
     b
 }
@@ -336,7 +404,12 @@ fn momentum<N: Scalar>(case: &Case, p: &Momentum<N>, notes: &Notes<N>) -> Block 
     b
 }
 
-fn forms<N: Scalar>(case: &Case, f: &Forms<N>, energy: Option<&Energy<N>>) -> Block {
+fn forms<N: Scalar>(
+    case: &Case,
+    f: &Forms<N>,
+    energy: Option<&Energy<N>>,
+    notes: &Notes<N>,
+) -> Block {
     let mut b = Block::new("Quadratic forms (X.M.Y)");
     let e = case.restitution();
     if e.is_totally_inelastic() {
@@ -364,9 +437,10 @@ fn forms<N: Scalar>(case: &Case, f: &Forms<N>, energy: Option<&Energy<N>>) -> Bl
             f.in_m_in.show(),
             "elastic: one energy ellipse",
         );
-        // The lecture's check: crunch = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4 when elastic.
+        // The lecture's check: crunch = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4 when elastic, in the
+        // forms' own unit (the energy section's may be another, --energy-unit).
         let crunch = energy
-            .map(|en| format!(" = {}", en.crunch.show()))
+            .map(|_| format!(" = {}", notes.crunch.show()))
             .unwrap_or_default();
         b.row(
             "V_IN.M.V_IN/4 - V_FIN.M.V_IN/4",
@@ -533,4 +607,13 @@ fn products<N: Scalar>(p: &Products<N>) -> Block {
         "outer product",
     );
     b
+}
+
+#[cfg(test)]
+mod wrap_tests {
+    #[test]
+    fn wraps_at_spaces_and_never_cuts_a_word() {
+        let t = super::wrap("aaa bbb ccc ddddddddddd e", 8, "  ");
+        assert_eq!(t, "aaa bbb\n  ccc\n  ddddddddddd\n  e\n");
+    }
 }

@@ -39,12 +39,17 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
         String::new()
     };
     let n = t.bodies.len();
+    // A wall's restitution only where there is a wall (issue 28: "1 at walls" with none).
+    let at_walls = if t.left_wall.is_some() || t.right_wall.is_some() {
+        format!(", {} at walls", num(t.e_wall))
+    } else {
+        String::new()
+    };
     let _ = writeln!(
         out,
-        "{n} {}, {walls}{gravity}; e = {} between bodies, {} at walls",
+        "{n} {}, {walls}{gravity}; e = {} between bodies{at_walls}",
         if n == 1 { "body" } else { "bodies" },
         num(t.e),
-        num(t.e_wall)
     );
     let why = match &run.stop {
         Stop::Done => match limits.until {

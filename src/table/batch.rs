@@ -1,8 +1,10 @@
 //! Cases for `collide batch`: CSV with a header naming `m1,m2,v1,v2` and optionally `e` (or
 //! `m11,m12,m22` for a general tensor), or JSON Lines with the same keys. Read as a stream, one
-//! row at a time: memory stays constant whatever the input size.
+//! row at a time: memory stays constant whatever the input size. A line is at most
+//! [`MAX_LINE_BYTES`] (`/dev/zero` is refused at once); a read error (a directory,
+//! `/proc/self/mem`) ends the run; an empty input is a table of no rows; a UTF-8 byte-order mark
+//! is skipped; a column or key given twice is refused.
 
-use std::collections::HashMap;
 use std::fs::File;
 use std::io::{self, BufRead, BufReader, Read};
 use std::path::Path;
@@ -18,6 +20,39 @@ use crate::restitution::Restitution;
 pub enum InputFormat {
     Csv,
     Jsonl,
+}
+
+/// Longest line of an input, in bytes (4 MiB: a row of cases is a few dozen bytes; a longer
+/// line is a binary file or `/dev/zero`, which would otherwise be read into memory whole).
+pub const MAX_LINE_BYTES: usize = 4 << 20;
+
+/// A reader that fails once a line grows beyond [`MAX_LINE_BYTES`], and after that.
+struct LineCap<R> {
+    inner: R,
+    /// Bytes since the last newline.
+    run: usize,
+}
+
+impl<R: Read> Read for LineCap<R> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        if self.run <= MAX_LINE_BYTES {
+            let n = self.inner.read(buf)?;
+            match buf[..n].iter().rposition(|&b| b == b'\n') {
+                Some(i) => self.run = n - 1 - i,
+                None => self.run += n,
+            }
+            if self.run <= MAX_LINE_BYTES {
+                return Ok(n);
+            }
+        }
+        Err(io::Error::new(
+            io::ErrorKind::InvalidData,
+            format!(
+                "a line is longer than {MAX_LINE_BYTES} bytes (4 MiB): not a table of cases \
+                 (a binary file, or /dev/zero?)"
+            ),
+        ))
+    }
 }
 
 const DIAGONAL: [&str; 4] = ["m1", "m2", "v1", "v2"];
@@ -50,6 +85,11 @@ struct Layout {
 impl Layout {
     fn of(names: &[String]) -> Result<Layout, LayoutError> {
         let find = |n: &str| names.iter().position(|h| h == n);
+        for (i, n) in names.iter().enumerate() {
+            if names[..i].contains(n) {
+                return Err(LayoutError::Twice(n.clone()));
+            }
+        }
         for n in names {
             if !DIAGONAL.contains(&n.as_str()) && !GENERAL.contains(&n.as_str()) && n != "e" {
                 return Err(LayoutError::Unknown(n.clone()));
@@ -133,12 +173,22 @@ pub struct Batch {
     /// Whether the input gives a general tensor (so the default columns are m11, m12, m22).
     pub general: bool,
     rows: Box<dyn Iterator<Item = Result<(u64, RowCase), RowError>>>,
+    /// An error ended the input.
+    ended: bool,
 }
 
 impl Iterator for Batch {
     type Item = Result<(u64, RowCase), RowError>;
+    /// The next row; nothing more after an error that ends the input ([`RowProblem::Read`]).
     fn next(&mut self) -> Option<Self::Item> {
-        self.rows.next()
+        if self.ended {
+            return None;
+        }
+        let next = self.rows.next();
+        if let Some(Err(e)) = &next {
+            self.ended = e.problem.ends_input();
+        }
+        next
     }
 }
 
@@ -159,17 +209,32 @@ pub fn open(
             p.display().to_string(),
         ),
     };
-    let mut reader = BufReader::with_capacity(1 << 20, reader);
+    let mut reader = BufReader::with_capacity(
+        1 << 20,
+        LineCap {
+            inner: reader,
+            run: 0,
+        },
+    );
+    let read_error = |error| BatchError::Read {
+        name: name.clone(),
+        error,
+    };
+    // A byte-order mark (as some editors write) is no part of the first line.
+    if reader
+        .fill_buf()
+        .map_err(read_error)?
+        .starts_with(b"\xEF\xBB\xBF")
+    {
+        reader.consume(3);
+    }
     let format = match format {
         Some(f) => f,
         None => match path.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
             Some("jsonl" | "ndjson") => InputFormat::Jsonl,
             Some("csv") => InputFormat::Csv,
             _ => {
-                let head = reader.fill_buf().map_err(|error| BatchError::Read {
-                    name: name.clone(),
-                    error,
-                })?;
+                let head = reader.fill_buf().map_err(read_error)?;
                 let first = head.iter().find(|b| !b.is_ascii_whitespace());
                 if first == Some(&b'{') {
                     InputFormat::Jsonl
@@ -199,6 +264,14 @@ fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<B
         .iter()
         .map(String::from)
         .collect();
+    // An empty input (no header, no rows): a table of no rows, as an empty JSON Lines input.
+    if header.is_empty() {
+        return Ok(Batch {
+            general: false,
+            rows: Box::new(std::iter::empty()),
+            ended: false,
+        });
+    }
     let layout = Layout::of(&header).map_err(|e| BatchError::Layout {
         name: name.to_string(),
         place: "line 1 (header)".into(),
@@ -208,7 +281,11 @@ fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<B
     let rows = r.into_records().map(move |rec| {
         let rec = rec.map_err(|e| RowError {
             place: format!("line {}", e.position().map_or(0, |p| p.line())),
-            problem: RowProblem::NotCsv(e.to_string()),
+            problem: if e.is_io_error() {
+                RowProblem::Unreadable(e.to_string())
+            } else {
+                RowProblem::NotCsv(e.to_string())
+            },
         })?;
         let line = rec.position().map_or(0, |p| p.line());
         if rec.len() != header.len() {
@@ -225,6 +302,7 @@ fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<B
     Ok(Batch {
         general,
         rows: Box::new(rows),
+        ended: false,
     })
 }
 
@@ -236,17 +314,19 @@ fn jsonl_rows(
     // Lines as bytes, each decoded on its own: a line that is not UTF-8 is a bad row at its
     // line, not the end of the input.
     let mut lines = reader.split(b'\n').enumerate().map(|(i, bytes)| {
-        let line = bytes.map_err(|e| e.to_string()).and_then(|mut b| {
-            if b.last() == Some(&b'\r') {
-                b.pop();
-            }
-            String::from_utf8(b).map_err(|e| {
-                format!(
-                    "the line is not valid UTF-8 (bad byte at column {})",
-                    e.utf8_error().valid_up_to() + 1
-                )
-            })
-        });
+        let line = bytes
+            .map_err(|e| RowProblem::Unreadable(e.to_string()))
+            .and_then(|mut b| {
+                if b.last() == Some(&b'\r') {
+                    b.pop();
+                }
+                String::from_utf8(b).map_err(|e| {
+                    RowProblem::Read(format!(
+                        "the line is not valid UTF-8 (bad byte at column {})",
+                        e.utf8_error().valid_up_to() + 1
+                    ))
+                })
+            });
         (i, line)
     });
     // The first readable object decides the layout; every object must have the same keys.
@@ -254,19 +334,21 @@ fn jsonl_rows(
     let mut general = false;
     let mut head = Vec::new();
     for (i, l) in lines.by_ref() {
-        let first = match &l {
-            Ok(text) if !text.trim().is_empty() => Some(text.clone()),
-            _ => None,
-        };
-        head.push((i, l));
-        let Some(first) = first else { continue };
         let at = |problem: RowProblem| BatchError::Layout {
             name: name.to_string(),
             place: format!("line {}", i + 1),
             problem,
         };
+        // A read error ends the input (it looped for ever on a directory).
+        let first = match &l {
+            Ok(text) if !text.trim().is_empty() => Some(text.clone()),
+            Err(e) if e.ends_input() => return Err(at(e.clone())),
+            _ => None,
+        };
+        head.push((i, l));
+        let Some(first) = first else { continue };
         let keys = object(&first)
-            .map(|o| o.into_keys().collect::<Vec<_>>())
+            .map(|o| o.into_iter().map(|(k, _)| k).collect::<Vec<_>>())
             .map_err(at)?;
         let l = Layout::of(&keys).map_err(|e| at(e.into()))?;
         general = l.general;
@@ -282,45 +364,100 @@ fn jsonl_rows(
         };
         let l = match l {
             Ok(l) => l,
-            Err(e) => return Some(Err(err(RowProblem::Read(e)))),
+            Err(e) => return Some(Err(err(e))),
         };
         if l.trim().is_empty() {
             return None;
         }
         let layout = layout.as_ref()?;
         Some((|| {
-            let o = object(&l).map_err(err)?;
-            let keys: Vec<String> = o.keys().cloned().collect();
+            let (keys, values): (Vec<String>, Vec<String>) =
+                object(&l).map_err(err)?.into_iter().unzip();
             let this = Layout::of(&keys).map_err(|e| err(e.into()))?;
             if this.general != layout.general {
                 return Err(err(RowProblem::OtherLayout));
             }
-            let values: HashMap<usize, String> = keys
-                .iter()
-                .enumerate()
-                .map(|(k, key)| (k, o[key].clone()))
-                .collect();
-            this.case(|k| values.get(&k).map(String::as_str), line, default_e)
+            this.case(|k| values.get(k).map(String::as_str), line, default_e)
         })())
     });
     Ok(Batch {
         general,
         rows: Box::new(rows),
+        ended: false,
     })
 }
 
-/// A JSON object of numbers (or strings holding numbers), as text.
-fn object(line: &str) -> Result<HashMap<String, String>, RowProblem> {
-    let v: serde_json::Value =
+/// A JSON object of numbers (or strings holding numbers), as text, its keys in order (a key
+/// given twice is refused by `Layout::of`: JSON readers differ on which value they keep).
+fn object(line: &str) -> Result<Vec<(String, String)>, RowProblem> {
+    let Fields(fields) =
         serde_json::from_str(line).map_err(|e| RowProblem::NotJson(e.to_string()))?;
-    let o = v.as_object().ok_or(RowProblem::NotObject)?;
-    o.iter()
+    fields
+        .ok_or(RowProblem::NotObject)?
+        .into_iter()
         .map(|(k, v)| match v {
-            serde_json::Value::Number(n) => Ok((k.clone(), n.to_string())),
-            serde_json::Value::String(s) => Ok((k.clone(), s.clone())),
-            other => Err(RowProblem::NotNumber(k.clone(), other.to_string())),
+            serde_json::Value::Number(n) => Ok((k, n.to_string())),
+            serde_json::Value::String(s) => Ok((k, s)),
+            other => Err(RowProblem::NotNumber(k, other.to_string())),
         })
         .collect()
+}
+
+/// A JSON value read as an object's fields in order, every one kept (`serde_json::Map` keeps
+/// the last of a key given twice); `None` for a value that is not an object.
+struct Fields(Option<Vec<(String, serde_json::Value)>>);
+
+impl<'de> serde::Deserialize<'de> for Fields {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Fields, D::Error> {
+        d.deserialize_any(FieldsVisitor)
+    }
+}
+
+struct FieldsVisitor;
+
+impl<'de> serde::de::Visitor<'de> for FieldsVisitor {
+    type Value = Fields;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Fields, A::Error> {
+        let mut fields = Vec::new();
+        while let Some(field) = map.next_entry()? {
+            fields.push(field);
+        }
+        Ok(Fields(Some(fields)))
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Fields, A::Error> {
+        while seq.next_element::<serde::de::IgnoredAny>()?.is_some() {}
+        Ok(Fields(None))
+    }
+
+    fn visit_bool<E>(self, _: bool) -> Result<Fields, E> {
+        Ok(Fields(None))
+    }
+
+    fn visit_i64<E>(self, _: i64) -> Result<Fields, E> {
+        Ok(Fields(None))
+    }
+
+    fn visit_u64<E>(self, _: u64) -> Result<Fields, E> {
+        Ok(Fields(None))
+    }
+
+    fn visit_f64<E>(self, _: f64) -> Result<Fields, E> {
+        Ok(Fields(None))
+    }
+
+    fn visit_str<E>(self, _: &str) -> Result<Fields, E> {
+        Ok(Fields(None))
+    }
+
+    fn visit_unit<E>(self) -> Result<Fields, E> {
+        Ok(Fields(None))
+    }
 }
 
 #[cfg(test)]

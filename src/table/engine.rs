@@ -86,7 +86,7 @@ pub fn chunk(
                 writer.row(&values, &mut buf, &mut fields);
                 out.rows += 1;
             }
-            Err(e) if skip_bad => out.skipped.push(e),
+            Err(e) if skip_bad && !e.problem.ends_input() => out.skipped.push(e),
             Err(e) => {
                 out.stop = Some(e);
                 break;
@@ -156,7 +156,7 @@ fn batched<C>(chunks: impl Iterator<Item = C>) -> impl Iterator<Item = Vec<C>> {
 }
 
 /// Solves the rows of `shard` of a sweep of `case` over `grid` and writes them (with the header
-/// when `shard` is the first) to `out`.
+/// when the writer puts one in this shard: by default, the first) to `out`.
 pub fn write_sweep(
     case: &Case,
     grid: &Grid,
@@ -179,7 +179,7 @@ pub fn write_sweep(
         e: c.restitution.value(),
     };
     let rows = shard.rows(grid.total);
-    if shard.k == 1 {
+    if writer.heads(shard.k) {
         let mut header = Vec::new();
         writer.header(&mut header);
         out.write_all(&header)?;
@@ -215,8 +215,9 @@ pub fn write_sweep(
     write_chunks(chunk_ranges, solve, out, progress)
 }
 
-/// Solves every case of `input` and writes its rows, with the header, to `out`. The input is read
-/// a batch of chunks at a time: memory stays bounded whatever its size.
+/// Solves every case of `input` and writes its rows, with the header (unless `Header::Never`),
+/// to `out`. The input is read a batch of chunks at a time: memory stays bounded whatever its
+/// size.
 pub fn write_batch(
     input: Batch,
     writer: &RowWriter,
@@ -224,9 +225,11 @@ pub fn write_batch(
     out: &mut dyn Write,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
-    let mut header = Vec::new();
-    writer.header(&mut header);
-    out.write_all(&header)?;
+    if writer.heads(1) {
+        let mut header = Vec::new();
+        writer.header(&mut header);
+        out.write_all(&header)?;
+    }
     let mut input = input.peekable();
     let chunks = std::iter::from_fn(move || {
         input.peek()?;

@@ -61,6 +61,10 @@ pub enum RowProblem {
     NotCsv(String),
     #[error("cannot read: {0}")]
     Read(String),
+    /// The input itself cannot be read any further (a directory, an I/O error, a line beyond
+    /// the length limit): the run ends here, `--skip-bad` or not.
+    #[error("the input cannot be read: {0}")]
+    Unreadable(String),
     #[error("not JSON: {0}")]
     NotJson(String),
     #[error("expected a JSON object such as {{\"m1\": 4, \"m2\": 1, \"v1\": 60, \"v2\": 10}}")]
@@ -82,6 +86,13 @@ pub enum RowProblem {
          use collide solve --exact"
     )]
     Unrepresentable(&'static str),
+}
+
+impl RowProblem {
+    /// Whether the input ends here: nothing after it can be read.
+    pub fn ends_input(&self) -> bool {
+        matches!(self, RowProblem::Unreadable(_))
+    }
 }
 
 /// What is wrong with one value of a row: a field of an input row, a value of a `--vary`.
@@ -106,6 +117,8 @@ pub enum LayoutError {
     Missing(&'static str),
     #[error("give m1, m2 or m11, m12, m22, not both")]
     Both,
+    #[error("column '{0}' is given twice: give each column once")]
+    Twice(String),
 }
 
 /// The columns an input may have.

@@ -17,8 +17,9 @@ use crate::inertia::Mass;
 use crate::number::{Number, NumberError};
 use crate::restitution::Restitution;
 
-/// The default cap on a sweep's rows (`--max-rows`, `max_rows` in a scene).
-pub const DEFAULT_MAX_ROWS: u64 = 10_000_000_000;
+/// The default cap on a sweep's rows (`--max-rows`, `max_rows` in a scene): 1e8 rows, about
+/// 7 GB of CSV; more must be asked for.
+pub const DEFAULT_MAX_ROWS: u64 = 100_000_000;
 
 /// A parameter a sweep can vary.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -73,6 +74,10 @@ pub enum VaryError {
     LogSign(String),
     #[error("'{0}': the list is empty; {VARY_FORM}")]
     EmptyList(String),
+    #[error(
+        "'{0}': the list has an empty entry (two commas in a row, or one at an end); give a value between every two commas"
+    )]
+    EmptyEntry(String),
 }
 
 /// Values more numerous than this are computed when needed instead of stored (a huge --vary is
@@ -331,15 +336,16 @@ impl FromStr for Vary {
                     }
                 }
             }
+            [list] if list.trim().is_empty() => return Err(VaryError::EmptyList(text)),
             [list] => {
+                // `e=1,,2` dropped the empty entry: a typo, refused rather than guessed.
+                if list.split(',').any(|t| t.trim().is_empty()) {
+                    return Err(VaryError::EmptyEntry(text));
+                }
                 let values = list
                     .split(',')
-                    .filter(|t| !t.trim().is_empty())
                     .map(|t| num(t).map(|n| n.value()))
                     .collect::<Result<Vec<f64>, VaryError>>()?;
-                if values.is_empty() {
-                    return Err(VaryError::EmptyList(text));
-                }
                 Values::List(values)
             }
             _ => return Err(VaryError::Form(text)),

@@ -17,6 +17,41 @@ pub enum RowFormat {
     Text,
 }
 
+/// Which pieces of a table carry its header line (`--header`): a sharded table's shards, read
+/// on their own (each file a table: Dask, Polars and the csv crate take a file's first line as
+/// its header), or concatenated (`cat`: only the first may have it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Header {
+    /// Every shard (each file reads on its own)
+    Always,
+    /// Only shard 1 (the shards concatenated are the whole table, byte for byte)
+    First,
+    /// None (rows only)
+    Never,
+}
+
+impl Header {
+    /// Whether the piece `k` (1 for the first or only one) has the header.
+    pub fn in_piece(self, k: u64) -> bool {
+        match self {
+            Header::Always => true,
+            Header::First => k == 1,
+            Header::Never => false,
+        }
+    }
+}
+
+impl RowFormat {
+    /// The name as typed (`--format jsonl`).
+    pub fn name(self) -> &'static str {
+        match self {
+            RowFormat::Csv => "csv",
+            RowFormat::Jsonl => "jsonl",
+            RowFormat::Text => "text",
+        }
+    }
+}
+
 /// Width of a text column: the longest shortest-round-trip binary64 ("-1.2345678901234567e-308").
 const TEXT_WIDTH: usize = 24;
 
@@ -24,11 +59,27 @@ const TEXT_WIDTH: usize = 24;
 pub struct RowWriter {
     columns: Vec<&'static Column>,
     format: RowFormat,
+    header: Header,
 }
 
 impl RowWriter {
+    /// A writer whose header goes in the first piece of a table only ([`Header::First`]).
     pub fn new(columns: Vec<&'static Column>, format: RowFormat) -> RowWriter {
-        RowWriter { columns, format }
+        RowWriter {
+            columns,
+            format,
+            header: Header::First,
+        }
+    }
+
+    /// The same writer with the header in the pieces `header` names.
+    pub fn with_header(self, header: Header) -> RowWriter {
+        RowWriter { header, ..self }
+    }
+
+    /// Whether piece `k` of a table (shard `k`; 1 for a whole table) starts with the header.
+    pub fn heads(&self, k: u64) -> bool {
+        self.header.in_piece(k)
     }
 
     pub fn columns(&self) -> &[&'static Column] {

@@ -22,6 +22,8 @@
 mod engine;
 pub mod motion;
 pub mod pi;
+mod schedule;
+mod zeno;
 
 use serde::Serialize;
 
@@ -196,6 +198,14 @@ pub enum TrackError {
          (e.g. tons and km/s instead of kg and m/s)"
     )]
     TooLarge,
+    #[error(
+        "the bodies fill the space between the walls (their sizes add up to {sizes}, the walls \
+         are {width} apart): none can move, so any velocity means infinitely many collisions at \
+         t = 0; leave a gap, or give every body velocity 0"
+    )]
+    Jammed { sizes: f64, width: f64 },
+    #[error(transparent)]
+    Broken(#[from] Broken),
 }
 
 /// A list given with the wrong number of values (one per body is needed).
@@ -327,6 +337,27 @@ impl Track {
         Ok(())
     }
 
+    /// Refuses bodies that fill the space between two walls to within rounding (the free space
+    /// `(right - left) - sum of sizes` at most `motion::slack` of the walls and sizes) while any
+    /// of them moves: rigid bodies with no room collide without end at t = 0 (48 s to the 1e9
+    /// cap, reported as 1e9 collisions at t = 0). Soft contacts (`collide contact`) have room.
+    pub fn jammed(&self) -> Result<(), TrackError> {
+        let (Some(l), Some(r)) = (self.left_wall, self.right_wall) else {
+            return Ok(());
+        };
+        if self.bodies.iter().all(|b| b.v == 0.0) {
+            return Ok(());
+        }
+        let sizes: f64 = self.bodies.iter().map(|b| b.size).sum();
+        if (r - l) - sizes <= motion::slack(l.abs() + r.abs() + sizes) {
+            return Err(TrackError::Jammed {
+                sizes,
+                width: r - l,
+            });
+        }
+        Ok(())
+    }
+
     /// Total momentum `sum m v`.
     pub fn momentum(&self, v: &[f64]) -> f64 {
         self.bodies
@@ -352,7 +383,14 @@ impl Track {
     /// Runs the track through the one engine (`engine`); `log` sees every collision. A state
     /// that cannot be (bodies through each other or a wall beyond rounding, an elastic run that
     /// changed its energy) stops the run with [`Broken`] instead of being reported.
-    pub fn run(&self, limits: Limits, log: Option<&mut dyn FnMut(&Event)>) -> Result<Run, Broken> {
+    ///
+    /// A jammed layout ([`Track::jammed`]) is refused before anything runs.
+    pub fn run(
+        &self,
+        limits: Limits,
+        log: Option<&mut dyn FnMut(&Event)>,
+    ) -> Result<Run, TrackError> {
+        self.jammed()?;
         let run = engine::Sim::new(self).run(limits, log)?;
         engine::budgets_hold(self, &run)?;
         Ok(run)

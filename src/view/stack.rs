@@ -204,8 +204,9 @@ impl TrackInput {
     }
 }
 
-fn broken(e: crate::track::Broken) -> InputError {
-    InputError::new("masses", e)
+/// A run refused or stopped (a jammed layout, a state that cannot be).
+fn broken(e: crate::track::TrackError) -> InputError {
+    InputError::new("positions", e)
 }
 
 /// Eight times the first collision's time (two significant digits), so that a dropped stack

@@ -586,61 +586,6 @@ fn a_scene_draws_only_beside_itself_and_replaces_only_svg() {
 }
 
 #[test]
-fn interrupted_runs_leave_no_partial_file() {
-    // SIGINT, SIGTERM and SIGHUP remove the temporary file of a long `-o` run (SIGKILL cannot
-    // be caught; README says so). The run is a 100 M-row sweep, stopped once its file exists.
-    for signal in ["INT", "TERM", "HUP"] {
-        let dir = std::env::temp_dir().join(format!("collide-sig-{}-{signal}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let out = dir.join("big.csv");
-        let bin = assert_cmd::cargo::cargo_bin("collide");
-        let mut child = std::process::Command::new(bin)
-            .args([
-                "sweep",
-                "-m",
-                "4,1",
-                "-v",
-                "60,10",
-                "--vary",
-                "v1=1:100:1000",
-                "--vary",
-                "v2=1:10:1000",
-                "--vary",
-                "e=0:1:100",
-                "--max-rows",
-                "100000000",
-                "-o",
-            ])
-            .arg(&out)
-            .spawn()
-            .unwrap();
-        let partial = || {
-            std::fs::read_dir(&dir)
-                .unwrap()
-                .filter_map(|e| e.ok())
-                .any(|e| e.file_name().to_string_lossy().ends_with(".partial"))
-        };
-        let mut waited = 0;
-        while !partial() && waited < 600 {
-            std::thread::sleep(std::time::Duration::from_millis(50));
-            waited += 1;
-        }
-        assert!(partial(), "{signal}: the run never started writing");
-        std::process::Command::new("kill")
-            .args([format!("-{signal}"), child.id().to_string()])
-            .status()
-            .unwrap();
-        let status = child.wait().unwrap();
-        assert!(!status.success(), "{signal}");
-        assert!(
-            !partial() && !out.exists(),
-            "{signal}: a file was left behind"
-        );
-        std::fs::remove_dir_all(&dir).unwrap();
-    }
-}
-
-#[test]
 fn toml_numbers_follow_the_command_line_rule() {
     // `1e-400` in a scene was read as 0; the command line refuses it. Same rule, with the line.
     let p = scratch("tiny.toml", "masses = [4, 1e-400]\nvelocities = [60, 10]\n");
@@ -660,4 +605,347 @@ fn toml_numbers_follow_the_command_line_rule() {
     );
     let (code, _, err) = run(&["scene", p.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
+}
+
+// Issue 24 §2: files. Nothing written where it must not be, nothing left behind.
+
+/// A fresh empty folder for one test.
+fn folder(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("collide-files-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_scene_picture_cannot_leave_the_scene_folder() {
+    let dir = folder("plot-escape");
+    let scenes = dir.join("scenes");
+    let other = dir.join("other");
+    std::fs::create_dir_all(&scenes).unwrap();
+    std::fs::create_dir_all(&other).unwrap();
+    // An SVG picture elsewhere, which an absolute path or `..` overwrote.
+    let important = other.join("important.svg");
+    std::fs::write(&important, "<svg>mine</svg>").unwrap();
+    std::os::unix::fs::symlink(&other, scenes.join("link")).unwrap();
+    for output in [
+        important.display().to_string(),
+        "../other/important.svg".to_string(),
+        "sub/../../other/important.svg".to_string(),
+        "link/important.svg".to_string(),
+    ] {
+        let p = scenes.join("escape.toml");
+        std::fs::write(
+            &p,
+            format!("masses = [4, 1]\nvelocities = [60, 10]\n[plot]\noutput = \"{output}\"\n"),
+        )
+        .unwrap();
+        let (code, out, err) = run(&["scene", p.to_str().unwrap()]);
+        assert_eq!(code, 2, "{output}: {out}");
+        assert!(out.is_empty(), "{output}: {out}");
+        assert!(err.contains("[plot]") && err.contains(&output), "{err}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(&important).unwrap(),
+        "<svg>mine</svg>"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Starts a 100 M-row sweep into `out` and waits until its temporary file exists; `limit` runs
+/// in the child before it starts (a resource limit, another user).
+fn start_writing(
+    dir: &std::path::Path,
+    out: &std::path::Path,
+    limit: impl Fn() -> std::io::Result<()> + Send + Sync + 'static,
+) -> std::process::Child {
+    use std::os::unix::process::CommandExt;
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    let mut cmd = std::process::Command::new(bin);
+    cmd.args([
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "v1=1:100:1000",
+        "--vary",
+        "v2=1:10:1000",
+        "--vary",
+        "e=0:1:100",
+        "--max-rows",
+        "100000000",
+        "-o",
+    ])
+    .arg(out)
+    .current_dir(dir)
+    .stdout(std::process::Stdio::null())
+    .stderr(std::process::Stdio::piped());
+    // SAFETY: `limit` only makes system calls (setrlimit, setuid), which are safe after fork.
+    unsafe { cmd.pre_exec(limit) };
+    cmd.spawn().unwrap()
+}
+
+/// Whether `dir` holds a `.partial` file.
+fn partial_in(dir: &std::path::Path) -> bool {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .any(|e| e.file_name().to_string_lossy().ends_with(".partial"))
+}
+
+/// No core files from the signals that dump core by default, and every signal at its default
+/// disposition (a test runner under `nohup` ignores SIGHUP, and its children inherit that).
+fn no_core() -> std::io::Result<()> {
+    let zero = libc::rlimit {
+        rlim_cur: 0,
+        rlim_max: 0,
+    };
+    // SAFETY: setrlimit reads the structure above; signal is async-signal-safe (after fork).
+    unsafe {
+        libc::setrlimit(libc::RLIMIT_CORE, &zero);
+        for sig in 1..=libc::SIGRTMAX() {
+            if sig != libc::SIGKILL && sig != libc::SIGSTOP {
+                libc::signal(sig, libc::SIG_DFL);
+            }
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn every_terminating_signal_removes_the_partial_file() {
+    use std::os::unix::process::ExitStatusExt;
+    // SIGQUIT, SIGUSR1, SIGALRM left 100-170 MB `.FILE.PID.partial` files; each signal must
+    // remove it and end the run by that same signal (the shell's 128 + N). SIGINT, SIGTERM and
+    // SIGHUP removed it before (and exited 130); SIGKILL cannot be caught (README says so).
+    let mut signals = vec![
+        libc::SIGQUIT,
+        libc::SIGUSR1,
+        libc::SIGUSR2,
+        libc::SIGALRM,
+        libc::SIGVTALRM,
+        libc::SIGPROF,
+        libc::SIGXCPU,
+        libc::SIGIO,
+        libc::SIGPWR,
+        libc::SIGABRT,
+        libc::SIGRTMIN(),
+        libc::SIGRTMAX(),
+    ];
+    signals.extend([libc::SIGINT, libc::SIGTERM, libc::SIGHUP]);
+    for sig in signals {
+        let dir = folder(&format!("sig-{sig}"));
+        let out = dir.join("big.csv");
+        let mut child = start_writing(&dir, &out, no_core);
+        let mut waited = 0;
+        while !partial_in(&dir) && waited < 600 {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            waited += 1;
+        }
+        assert!(
+            partial_in(&dir),
+            "signal {sig}: the run never started writing"
+        );
+        // SAFETY: kill sends a signal to our own child.
+        unsafe { libc::kill(child.id() as libc::pid_t, sig) };
+        // Never wait for the whole 7 GB run: a signal that did not end it is a failure.
+        let mut waited = 0;
+        let status = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                break status;
+            }
+            if waited == 600 {
+                child.kill().unwrap();
+                panic!("signal {sig} did not end the run");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            waited += 1;
+        };
+        assert_eq!(status.signal(), Some(sig), "signal {sig}: {status:?}");
+        assert!(
+            !partial_in(&dir) && !out.exists(),
+            "signal {sig}: a file was left behind"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
+
+#[test]
+fn a_file_size_limit_is_an_error_and_leaves_nothing() {
+    // `ulimit -f 1000; collide sweep ... -o out.csv` died by SIGXFSZ (exit 153), no message, a
+    // partial file left behind.
+    let dir = folder("fsize");
+    let out = dir.join("out.csv");
+    let child = start_writing(&dir, &out, || {
+        let limit = libc::rlimit {
+            rlim_cur: 100_000,
+            rlim_max: 100_000,
+        };
+        // SAFETY: setrlimit reads the structure above.
+        unsafe { libc::setrlimit(libc::RLIMIT_FSIZE, &limit) };
+        Ok(())
+    });
+    let result = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{:?}: {err}", result.status);
+    assert!(
+        err.contains("cannot write") && err.contains("ulimit -f"),
+        "{err}"
+    );
+    assert!(!partial_in(&dir) && !out.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn standard_streams_are_written_directly_when_they_are_pipes() {
+    // `-o /dev/stdout` followed /proc/self/fd/1 to "pipe:[N]" and failed with "No such file or
+    // directory". Here stdout and stderr are pipes.
+    let whole = common::stdout(&["sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3"]);
+    for name in ["/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"] {
+        let (code, out, err) = run(&[
+            "sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3", "-o", name,
+        ]);
+        assert_eq!((code, out.as_str()), (0, whole.as_str()), "{name}: {err}");
+    }
+    let (code, out, err) = run(&[
+        "track",
+        "-m",
+        "1,3",
+        "-x",
+        "1,2",
+        "-v",
+        "0,-1",
+        "--left-wall",
+        "0",
+        "--log",
+        "/dev/stderr",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("After 5 collisions"), "{out}");
+    // m/M = 1/3: theta = pi/6, 5 collisions, each a line after the header.
+    assert!(err.starts_with("n,t,who,v_before,v_after\n"), "{err}");
+    assert_eq!(err.lines().count(), 6, "{err}");
+}
+
+#[test]
+fn a_writable_file_in_a_read_only_folder_is_written_in_place() {
+    use std::os::unix::fs::PermissionsExt;
+    use std::os::unix::process::CommandExt;
+    // It said only "Permission denied": the temporary file cannot be created beside it.
+    let dir = folder("read-only");
+    let file = dir.join("f.csv");
+    std::fs::write(&file, "old\n").unwrap();
+    std::fs::set_permissions(&file, std::fs::Permissions::from_mode(0o666)).unwrap();
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o555)).unwrap();
+    let mut cmd = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"));
+    cmd.args([
+        "sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3", "-o",
+    ])
+    .arg(&file);
+    // Root writes anywhere: run as nobody, for whom the folder is read-only.
+    // SAFETY: geteuid, setgid and setuid are system calls, safe after fork.
+    if unsafe { libc::geteuid() } == 0 {
+        unsafe {
+            cmd.pre_exec(|| {
+                if libc::setgid(65534) != 0 || libc::setuid(65534) != 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+                Ok(())
+            })
+        };
+    }
+    let result = cmd.output().unwrap();
+    let err = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(0), "{err}");
+    assert!(err.contains("in place"), "{err}");
+    let whole = common::stdout(&["sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3"]);
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), whole);
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o755)).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+// Issue 24 §3: every input read once, every run bounded.
+
+#[test]
+fn a_scene_is_read_once_from_a_fifo_a_pipe_or_standard_input() {
+    use crate::resources::{DEADLINE, Feeder, folder, mkfifo, watched};
+    use std::io::Write;
+    use std::process::Stdio;
+    // `collide scene FIFO` hung (the file was opened twice); `<(cat x.toml)` and `cat x.toml |
+    // collide scene /dev/stdin` read it empty the second time: "missing field velocities".
+    let text = std::fs::read("scenarios/fig-1-3-elastic.toml").unwrap();
+    let expected = common::stdout(&["scene", "scenarios/fig-1-3-elastic.toml"]);
+    let dir = folder("scene-fifo");
+    let fifo = dir.join("scene.toml");
+    mkfifo(&fifo);
+    let feeder = Feeder::start(&fifo, text.clone(), false);
+    let f = watched(&["scene", fifo.to_str().unwrap()], Stdio::null(), DEADLINE);
+    feeder.release();
+    assert!(!f.timed_out, "a FIFO scene hung");
+    assert_eq!(
+        (f.code, f.stdout.as_str()),
+        (Some(0), expected.as_str()),
+        "{}",
+        f.stderr
+    );
+    for name in ["/dev/stdin", "-"] {
+        let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"))
+            .args(["scene", name])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(&text).unwrap();
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{name}: {err}");
+        assert_eq!(String::from_utf8_lossy(&out.stdout), expected, "{name}");
+    }
+    // The issue's process substitution, where a shell is at hand.
+    if std::path::Path::new("/bin/bash").exists() {
+        let bin = assert_cmd::cargo::cargo_bin("collide");
+        let out = std::process::Command::new("/bin/bash")
+            .arg("-c")
+            .arg(format!(
+                "'{}' scene <(cat scenarios/fig-1-3-elastic.toml)",
+                bin.display()
+            ))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        assert_eq!(String::from_utf8_lossy(&out.stdout), expected);
+    }
+    // A bad scene on standard input is named <stdin>; '-' is read once.
+    let (code, _, err) = run(&["scene", "-", "-"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("'-' once"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn accuracy_keeps_to_its_budget_or_says_what_fits() {
+    use crate::resources::{bounded, refused};
+    // `accuracy --cases 100000 --budget-ms 1` took 38 s and 270 MB: the exact references alone
+    // took far longer than the budget.
+    let f = refused(
+        &["accuracy", "--cases", "100000", "--budget-ms", "1"],
+        "--cases 100000 would spend about",
+    );
+    assert!(f.stderr.contains("or fewer"), "{}", f.stderr);
+    // The refusal comes before the cases are drawn: a few MB, not hundreds.
+    assert!(f.max_rss_kb < 50 * 1024, "{} kB", f.max_rss_kb);
+    // A small report within a small budget runs.
+    let f = bounded(&[
+        "accuracy",
+        "--cases",
+        "4",
+        "--budget-ms",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(f.code, Some(0), "{}", f.stderr);
 }

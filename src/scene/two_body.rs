@@ -1,42 +1,27 @@
-//! Scene files: a case in TOML, with the sections to show and the numbers to expect.
-//!
-//! ```toml
-//! title = "60 mph 4-ton SUV rear-ends 10 mph 1-ton VW"
-//! masses = [4, 1]
-//! velocities = [60, 10]
-//! restitution = "elastic"
-//! show = ["vectors", "energy"]
-//! [expect]
-//! fin = [40, 90]
-//! "energy.crunch" = 1000
-//! "ellipses.com.a" = { value = 55.90, abs = 0.005 }
-//! ```
-//! Every problem (unknown key, wrong type, bad value, missing field) is reported with the file,
-//! line and column.
+//! Two-body scenes: a collision (with an optional `[sweep]` or `[plot]`), a separation or a ball
+//! against a wall.
 
-use std::collections::BTreeMap;
 use std::fmt;
 use std::ops::Range;
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 use serde::Deserialize;
 use toml::Spanned;
 
+use super::{About, AnyScene, ExpectTable, SceneError, from_toml, located};
 use crate::case::Case;
-use crate::contact::{Damping, LawKind, Laws, Method, Settings, Setup};
-use crate::expect::{ExpectError, Expectation};
+use crate::expect::ExpectError;
 use crate::frame::Frame;
 use crate::inertia::InertiaTensor;
-use crate::number::{Given, Number, NumberError};
+use crate::number::{Given, Number};
 use crate::problem::{Posed, Problem};
 use crate::report::special::Special;
 use crate::report::{Section, Sections};
-use crate::restitution::{Restitution, RestitutionError};
+use crate::restitution::Restitution;
 use crate::separation::Separation;
 use crate::table::columns::Column;
 use crate::table::sweep::{DEFAULT_MAX_ROWS, Grid};
 use crate::table::writer::RowFormat;
-use crate::track::{Limits, Track};
 use crate::units::{Dimension, Pair, PairError, parse_pair};
 use crate::unknowns::Solved;
 use crate::wall::WallCase;
@@ -140,176 +125,6 @@ impl<'de, T: Deserialize<'de>> Deserialize<'de> for Two<T> {
     }
 }
 
-/// What every scene has besides its physics: where it is, what it is called, and the numbers it
-/// expects.
-#[derive(Clone, Debug)]
-pub struct About {
-    pub path: PathBuf,
-    pub title: Option<String>,
-    pub source: Option<String>,
-    pub expect: Vec<Expectation>,
-}
-
-/// Largest scene file read (`/dev/zero` or a stray binary is refused, not read forever).
-pub const MAX_SCENE_BYTES: u64 = 1 << 20;
-
-/// A scene file's text, at most [`MAX_SCENE_BYTES`].
-fn read_capped(path: &Path) -> Result<String, String> {
-    use std::io::Read;
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read scene file: {e}"))?;
-    let mut bytes = Vec::new();
-    file.take(MAX_SCENE_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read scene file: {e}"))?;
-    if bytes.len() as u64 > MAX_SCENE_BYTES {
-        return Err(format!(
-            "the scene file is larger than {} bytes (1 MiB): a scene is a short TOML file",
-            MAX_SCENE_BYTES
-        ));
-    }
-    String::from_utf8(bytes).map_err(|e| {
-        format!(
-            "the scene file is not UTF-8 text (invalid byte at offset {})",
-            e.utf8_error().valid_up_to()
-        )
-    })
-}
-
-/// Text with its control characters escaped (`\u{1b}`): a shared scene cannot send escape
-/// sequences to a terminal.
-fn printable(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
-}
-
-/// `[expect]` as written: JSON paths of the report, each with its value and place.
-type ExpectTable = BTreeMap<String, Spanned<toml::Value>>;
-
-impl About {
-    /// `known` says whether a key's first part names a quantity of the scene's report.
-    fn new(
-        (path, text): (&Path, &str),
-        title: Option<String>,
-        source: Option<String>,
-        table: Option<ExpectTable>,
-        known: impl Fn(&str) -> Result<(), ExpectError>,
-    ) -> Result<About, SceneError> {
-        let mut expect = Vec::new();
-        for (key, value) in table.unwrap_or_default() {
-            let span = value.span();
-            let e = known(key.split('.').next().unwrap_or_default())
-                .and_then(|()| Expectation::from_toml(&key, value.into_inner()))
-                .map_err(|m| {
-                    located(
-                        path,
-                        text,
-                        Some(span.clone()),
-                        format!("[expect] \"{key}\": {m}"),
-                    )
-                })?;
-            expect.push(e.at_line(line_col(text, span.start).0));
-        }
-        Ok(About {
-            path: path.to_path_buf(),
-            title: title.as_deref().map(printable),
-            source: source.as_deref().map(printable),
-            expect,
-        })
-    }
-}
-
-/// A problem at `span` of a scene file's `text`.
-fn located(path: &Path, text: &str, span: Option<Range<usize>>, message: String) -> SceneError {
-    SceneError {
-        path: path.to_path_buf(),
-        at: span.map(|s| line_col(text, s.start)),
-        message,
-    }
-}
-
-/// The file's text as `T`, or the first problem, located.
-fn from_toml<T: serde::de::DeserializeOwned>(path: &Path, text: &str) -> Result<T, SceneError> {
-    let value = toml::from_str(text)
-        .map_err(|e| located(path, text, e.span(), e.message().trim().to_string()))?;
-    // The TOML reader rounds `1e-400` to 0 and `1e400` to inf before we see it: the number
-    // literals are checked as written, by the same rule as the command line.
-    for (at, literal) in toml_numbers(text) {
-        let digits = literal.replace('_', "");
-        if let Err(
-            e
-            @ (NumberError::Overflow(_) | NumberError::Underflow(_) | NumberError::TooLong { .. }),
-        ) = digits.parse::<Number>()
-        {
-            return Err(located(
-                path,
-                text,
-                Some(at..at + literal.len()),
-                e.to_string(),
-            ));
-        }
-    }
-    Ok(value)
-}
-
-/// The number literals of a TOML text with their byte offsets: runs of number characters that
-/// start a value (a digit, or a sign or `.` before one), outside strings and comments.
-fn toml_numbers(text: &str) -> Vec<(usize, &str)> {
-    let b = text.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    let word = |c: u8| c.is_ascii_alphanumeric() || matches!(c, b'_' | b'.' | b'+' | b'-' | b':');
-    while i < b.len() {
-        match b[i] {
-            b'#' => {
-                while i < b.len() && b[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            q @ (b'"' | b'\'') => {
-                let triple = b[i..].starts_with(&[q, q, q]);
-                i += if triple { 3 } else { 1 };
-                while i < b.len() {
-                    if q == b'"' && b[i] == b'\\' {
-                        i += 2;
-                        continue;
-                    }
-                    if triple && b[i..].starts_with(&[q, q, q]) {
-                        i += 3;
-                        break;
-                    }
-                    if !triple && (b[i] == q || b[i] == b'\n') {
-                        i += 1;
-                        break;
-                    }
-                    i += 1;
-                }
-            }
-            c if word(c) => {
-                let start = i;
-                while i < b.len() && word(b[i]) {
-                    i += 1;
-                }
-                let run = &text[start..i];
-                let first_digit = run
-                    .trim_start_matches(['+', '-', '.'])
-                    .starts_with(|c: char| c.is_ascii_digit());
-                if first_digit && !run.contains(':') {
-                    out.push((start, run));
-                }
-            }
-            _ => i += 1,
-        }
-    }
-    out
-}
-
 /// A loaded, validated scene.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -356,63 +171,7 @@ impl SpecialEvent {
     }
 }
 
-/// A scene file of either kind.
-#[derive(Clone, Debug)]
-#[allow(clippy::large_enum_variant)] // one per file, loaded once
-pub enum AnyScene {
-    Case(Scene),
-    Special(SpecialScene),
-    Track(TrackScene),
-    Contact(ContactScene),
-}
-
-/// A problem in a scene file, located.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SceneError {
-    pub path: PathBuf,
-    /// 1-based line and column, when known.
-    pub at: Option<(usize, usize)>,
-    pub message: String,
-}
-
-impl fmt::Display for SceneError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.at {
-            Some((line, col)) => {
-                write!(f, "{}:{line}:{col}: {}", self.path.display(), self.message)
-            }
-            None => write!(f, "{}: {}", self.path.display(), self.message),
-        }
-    }
-}
-
-impl std::error::Error for SceneError {}
-
-/// 1-based line and column of byte offset `at` in `text`.
-pub fn line_col(text: &str, at: usize) -> (usize, usize) {
-    let before = &text[..at.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
-}
-
 impl Scene {
-    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]` or a `[contact]`.
-    pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
-        let text = read_capped(path).map_err(|message| SceneError {
-            path: path.to_path_buf(),
-            at: None,
-            message,
-        })?;
-        if has_table(&text, "contact") {
-            ContactScene::parse(path, &text).map(AnyScene::Contact)
-        } else if has_table(&text, "track") {
-            TrackScene::parse(path, &text).map(AnyScene::Track)
-        } else {
-            Scene::parse_any(path, &text)
-        }
-    }
-
     /// Parses the text of a two-body scene (a collision); `path` names it in errors.
     pub fn parse(path: &Path, text: &str) -> Result<Scene, SceneError> {
         match Scene::parse_any(path, text)? {
@@ -427,7 +186,7 @@ impl Scene {
     }
 
     /// Parses the text of a two-body scene: a collision, or a separation.
-    fn parse_any(path: &Path, text: &str) -> Result<AnyScene, SceneError> {
+    pub(super) fn parse_any(path: &Path, text: &str) -> Result<AnyScene, SceneError> {
         let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
         let file: SceneFile = from_toml(path, text)?;
         let masses = match (&file.masses, &file.inertia) {
@@ -507,6 +266,9 @@ impl Scene {
                     .map_err(|e| err(Some(t.span()), format!("contact_time: {e}")))?,
             ),
         };
+        if let Some(f) = &file.frame {
+            f.on_line().map_err(|e| err(None, e.to_string()))?;
+        }
         let mut show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         show.contact_time = contact_time;
         let units = posed.units().clone();
@@ -630,11 +392,39 @@ const TOP_LEVEL: &str = "in, com, fin, v_com, restitution, inertia, frame.w, mom
 /// file's folder), must be an `.svg`, and may replace only an SVG file: scenes are shared as
 /// graders, and one must not be able to overwrite a user's other files.
 fn confine_plot(scene: &Path, mut p: PlotTable) -> Result<PlotTable, String> {
-    if p.output.is_relative() {
-        let folder = scene.parent().unwrap_or(Path::new(""));
-        p.output = folder.join(&p.output);
+    let typed = p.output.display().to_string();
+    let beside = p
+        .output
+        .components()
+        .all(|c| matches!(c, Component::Normal(_) | Component::CurDir));
+    if !beside {
+        return Err(format!(
+            "output '{typed}' must be a file name relative to the scene's folder, without '..' \
+             (a scene's picture goes beside the scene)"
+        ));
     }
+    // A scene read from standard input or a pipe has no folder of its own: the current one.
+    let folder = match scene.parent() {
+        Some(f) if std::fs::metadata(scene).is_ok_and(|m| m.is_file()) => f,
+        _ => Path::new(""),
+    };
+    p.output = folder.join(&p.output);
     let shown = p.output.display().to_string();
+    // Nor through a symlinked subfolder.
+    let real = |f: &Path| {
+        std::fs::canonicalize(if f.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            f
+        })
+    };
+    if let (Ok(base), Some(Ok(parent))) = (real(folder), p.output.parent().map(real))
+        && !parent.starts_with(&base)
+    {
+        return Err(format!(
+            "output '{typed}' leads out of the scene's folder (through a symbolic link)"
+        ));
+    }
     if p.output
         .extension()
         .is_none_or(|x| !x.eq_ignore_ascii_case("svg"))
@@ -832,307 +622,5 @@ mod tests {
         assert!(e.message.contains("unknown quantity 'energyy'"), "{e}");
         assert_eq!(e.at.map(|a| a.0), Some(4));
         assert!(report_key("frame").is_ok());
-    }
-
-    #[test]
-    fn line_and_column() {
-        assert_eq!(line_col("ab\ncd", 0), (1, 1));
-        assert_eq!(line_col("ab\ncd", 4), (2, 2));
-    }
-}
-
-/// `[track]` in a scene: bodies on a track (`collide track`).
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct TrackFile {
-    title: Option<String>,
-    source: Option<String>,
-    track: TrackTable,
-    expect: Option<ExpectTable>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct TrackTable {
-    masses: Spanned<Vec<Number>>,
-    positions: Spanned<Vec<Number>>,
-    velocities: Spanned<Vec<Number>>,
-    sizes: Option<Spanned<Vec<Number>>>,
-    left_wall: Option<Number>,
-    right_wall: Option<Number>,
-    restitution: Option<Restitution>,
-    wall_restitution: Option<Restitution>,
-    gravity: Option<Number>,
-    until: Option<Number>,
-    max_collisions: Option<u64>,
-}
-
-/// A track scene, validated.
-#[derive(Clone, Debug)]
-pub struct TrackScene {
-    pub about: About,
-    pub track: Track,
-    pub limits: Limits,
-}
-
-/// Top-level keys of `collide track --format json`.
-pub const TRACK_KEYS: [&str; 11] = [
-    "collisions",
-    "pair_collisions",
-    "wall_collisions",
-    "simultaneous",
-    "time",
-    "x",
-    "v",
-    "stop",
-    "momentum",
-    "energy",
-    "pi",
-];
-
-/// Whether scene text holds a table `name` (`[track]`, `[contact]`).
-pub fn has_table(text: &str, name: &str) -> bool {
-    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key(name))
-}
-
-impl TrackScene {
-    pub fn parse(path: &Path, text: &str) -> Result<TrackScene, SceneError> {
-        let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
-        let file: TrackFile = from_toml(path, text)?;
-        let t = file.track;
-        let bodies = layout(
-            (path, text),
-            "track",
-            [&t.masses, &t.positions, &t.velocities],
-            t.sizes.as_ref(),
-        )?;
-        for r in [&t.restitution, &t.wall_restitution].into_iter().flatten() {
-            if r.is_superelastic() {
-                let e = RestitutionError::Superelastic(r.to_string());
-                return Err(err(None, format!("[track] {e}")));
-            }
-        }
-        let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
-        let track = Track {
-            bodies,
-            left_wall: t.left_wall.map(|n| n.value()),
-            right_wall: t.right_wall.map(|n| n.value()),
-            e,
-            e_wall: t.wall_restitution.map_or(e, |r| r.value()),
-            gravity: t.gravity.map_or(0.0, |g| g.value()),
-        };
-        track
-            .check()
-            .map_err(|e| err(Some(t.masses.span()), format!("[track] {e}")))?;
-        let limits = Limits {
-            until: t.until.map(|u| u.value()),
-            max_collisions: t
-                .max_collisions
-                .unwrap_or(crate::track::DEFAULT_MAX_COLLISIONS),
-        };
-        limits
-            .check()
-            .map_err(|e| err(None, format!("[track] {e}")))?;
-        let about = About::new(
-            (path, text),
-            file.title,
-            file.source,
-            file.expect,
-            among(&TRACK_KEYS),
-        )?;
-        Ok(TrackScene {
-            about,
-            track,
-            limits,
-        })
-    }
-}
-
-/// `[expect]` keys of a report whose top-level keys are `keys`.
-fn among(keys: &'static [&'static str]) -> impl Fn(&str) -> Result<(), ExpectError> {
-    move |top| {
-        if keys.contains(&top) {
-            Ok(())
-        } else {
-            Err(ExpectError::UnknownQuantity {
-                top: top.to_string(),
-                expected: keys.join(", "),
-            })
-        }
-    }
-}
-
-/// The bodies of a `[track]` or `[contact]` table, with a miscount or a bad body located.
-fn layout(
-    (path, text): (&Path, &str),
-    table: &str,
-    [masses, positions, velocities]: [&Spanned<Vec<Number>>; 3],
-    sizes: Option<&Spanned<Vec<Number>>>,
-) -> Result<Vec<crate::track::Body>, SceneError> {
-    let err = |span: Range<usize>, message: String| located(path, text, Some(span), message);
-    crate::track::bodies(
-        masses.get_ref(),
-        positions.get_ref(),
-        velocities.get_ref(),
-        sizes.map(|s| s.get_ref().as_slice()),
-    )
-    .map_err(|e| match e {
-        crate::track::BodiesError::Miscount(m) => {
-            let list = match m.list {
-                "positions" => positions,
-                "velocities" => velocities,
-                _ => sizes.unwrap_or(masses),
-            };
-            err(
-                list.span(),
-                format!(
-                    "[{table}] {}: {} values for {} bodies",
-                    m.list, m.got, m.bodies
-                ),
-            )
-        }
-        crate::track::BodiesError::Track(e) => err(masses.span(), format!("[{table}] {e}")),
-    })
-}
-
-/// `[contact]` in a scene: bodies pushing with contact forces (`collide contact`).
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ContactFile {
-    title: Option<String>,
-    source: Option<String>,
-    contact: ContactTable,
-    expect: Option<ExpectTable>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ContactTable {
-    masses: Spanned<Vec<Number>>,
-    positions: Spanned<Vec<Number>>,
-    velocities: Spanned<Vec<Number>>,
-    sizes: Option<Spanned<Vec<Number>>>,
-    left_wall: Option<Number>,
-    right_wall: Option<Number>,
-    law: Option<LawKind>,
-    stiffness: Option<Number>,
-    damping: Option<Number>,
-    zeta: Option<Number>,
-    restitution: Option<Number>,
-    wall_stiffness: Option<Number>,
-    wall_damping: Option<Number>,
-    wall_zeta: Option<Number>,
-    wall_restitution: Option<Number>,
-    method: Option<Spanned<String>>,
-    dt: Option<Number>,
-    tol: Option<Number>,
-    until: Option<Number>,
-    max_steps: Option<u64>,
-}
-
-/// A contact scene, validated.
-#[derive(Clone, Debug)]
-pub struct ContactScene {
-    pub about: About,
-    pub setup: Setup,
-    pub settings: Settings,
-}
-
-/// Top-level keys of `collide contact --format json`.
-pub const CONTACT_KEYS: [&str; 12] = [
-    "law",
-    "method",
-    "dt",
-    "tol",
-    "time",
-    "x",
-    "v",
-    "contacts",
-    "energy",
-    "stats",
-    "impulse_model",
-    "stop",
-];
-
-impl ContactScene {
-    pub fn parse(path: &Path, text: &str) -> Result<ContactScene, SceneError> {
-        let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
-        let file: ContactFile = from_toml(path, text)?;
-        let t = file.contact;
-        let bodies = layout(
-            (path, text),
-            "contact",
-            [&t.masses, &t.positions, &t.velocities],
-            t.sizes.as_ref(),
-        )?;
-        let value = |n: &Option<Number>| n.as_ref().map(Number::value);
-        let damping = |keys: [&str; 3], [c, z, e]: [&Option<Number>; 3]| {
-            if [c, z, e].iter().filter(|n| n.is_some()).count() > 1 {
-                return Err(err(
-                    None,
-                    format!("[contact] give at most one of {}", keys.join(", ")),
-                ));
-            }
-            Ok(Damping::given(value(c), value(z), value(e)))
-        };
-        let laws = Laws {
-            kind: t.law.unwrap_or(LawKind::Linear),
-            k: value(&t.stiffness).unwrap_or(1.0),
-            damping: damping(
-                ["damping", "zeta", "restitution"],
-                [&t.damping, &t.zeta, &t.restitution],
-            )?,
-            wall_k: value(&t.wall_stiffness),
-            wall_damping: damping(
-                ["wall_damping", "wall_zeta", "wall_restitution"],
-                [&t.wall_damping, &t.wall_zeta, &t.wall_restitution],
-            )?,
-        };
-        let setup = Setup::new(bodies, (value(&t.left_wall), value(&t.right_wall)), laws);
-        setup
-            .slots()
-            .map_err(|e| err(Some(t.masses.span()), format!("[contact] {e}")))?;
-        let method = match &t.method {
-            None => None,
-            Some(m) if m.get_ref() == "auto" => None,
-            Some(m) => Some(Method::parse(m.get_ref()).ok_or_else(|| {
-                let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
-                err(
-                    Some(m.span()),
-                    format!(
-                        "[contact] method '{}': expected auto, {}",
-                        m.get_ref(),
-                        names.join(", ")
-                    ),
-                )
-            })?),
-        };
-        let until = value(&t.until);
-        Limits {
-            until,
-            max_collisions: 0,
-        }
-        .check()
-        .map_err(|e| err(None, format!("[contact] {e}")))?;
-        let settings = Settings {
-            method,
-            dt: value(&t.dt),
-            tol: value(&t.tol),
-            until,
-            max_steps: t.max_steps.unwrap_or(crate::contact::DEFAULT_MAX_STEPS),
-            trace: false,
-        };
-        let about = About::new(
-            (path, text),
-            file.title,
-            file.source,
-            file.expect,
-            among(&CONTACT_KEYS),
-        )?;
-        Ok(ContactScene {
-            about,
-            setup,
-            settings,
-        })
     }
 }

@@ -1,0 +1,140 @@
+//! `collide solve` in the plane, in space, or for N bodies on a line: pose the typed problem,
+//! solve its unknowns, keep the physical solutions, render them.
+
+use anyhow::Result;
+use collide::frame::Frame;
+use collide::report::json;
+use collide::report::space::solved::{Options, render};
+use collide::report::space::{self as report, Style};
+use collide::space::outcome::Outcome as Event;
+use collide::space::pose::outcomes;
+use collide::space::solve;
+
+use super::Outcome;
+use crate::cli::{Format, SolveArgs};
+
+pub fn run(args: &SolveArgs) -> Result<Outcome> {
+    let refused = [
+        (args.plot.is_some(), "--plot"),
+        (args.contact_time.is_some(), "--contact-time"),
+        (args.case.gravity.is_some(), "--gravity"),
+    ];
+    if let Some((_, flag)) = refused.iter().find(|(on, _)| *on) {
+        anyhow::bail!(
+            "{flag} is not available in the plane, in space or for N bodies yet (it describes \
+             two bodies on a line)"
+        );
+    }
+    let input = args.case.space_input(args.fin.as_ref(), args.exact)?;
+    let posed = input.pose()?;
+    let solved = solve::solve(&posed.statement)?;
+    let rendered = render(
+        &posed,
+        &solved,
+        &Options {
+            frame: &args.frame,
+            show: collide::scene::show_of(&args.show).map_err(|m| anyhow::anyhow!("--show {m}"))?,
+            exact: args.exact,
+            reverse: args.reverse,
+            fin_given: args.fin.is_some(),
+            energy_unit: args.case.energy_unit,
+        },
+    )?;
+    Ok(Outcome {
+        stdout: match args.format {
+            Format::Text => rendered.text,
+            Format::Json => json::render(&rendered.json),
+        },
+        status: u8::from(rendered.inconsistent),
+    })
+}
+
+/// `collide frames` in the plane, in space or for N bodies: the event seen from the standard
+/// frames (lab, each body initially at rest, COM, each body finally at rest) and any asked for,
+/// with the invariants checked equal in every frame before anything is printed.
+pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
+    let input = args.case.space_input(None, args.exact)?;
+    let posed = input.pose()?;
+    let solved = solve::solve(&posed.statement)?;
+    let all = outcomes(&posed, &solved);
+    let [(lab, _)] = all.as_slice() else {
+        anyhow::bail!("frames needs one collision; this case has {}", all.len());
+    };
+    let stuck = lab.e.as_ref().is_some_and(|e| e.is_zero());
+    let n = lab.bodies();
+    let mut list: Vec<Frame> = vec![Frame::Lab];
+    list.extend((1..=n).map(Frame::RestIn));
+    list.push(Frame::Com);
+    if !stuck {
+        list.extend((1..=n).map(Frame::RestFin));
+    }
+    list.extend(args.frame.iter().cloned());
+    let seen: Vec<(String, Vec<collide::rational::Q>, Event)> = list
+        .iter()
+        .map(|f| {
+            let w = lab.observer(f, posed.typed_values)?;
+            Ok((f.describe(), w.clone(), lab.boost(&w)))
+        })
+        .collect::<Result<_>>()?;
+    // The invariants hold exactly in every frame (exact arithmetic): check, never assume.
+    for (name, _, o) in &seen {
+        if o.crunch() != lab.crunch() || o.lost() != lab.lost() {
+            anyhow::bail!(
+                "internal check failed: the crunch or lost energy differs in the {name} frame; \
+                 nothing is printed"
+            );
+        }
+    }
+    let mut units = posed.units.clone();
+    if let Some(u) = args.case.energy_unit {
+        units = units.with_energy_unit(u)?;
+    }
+    let style = Style::new(args.exact, units.energy_scale());
+    let views: Vec<report::frames::FrameView> = seen
+        .iter()
+        .map(|(name, w, o)| report::frames::FrameView {
+            name: name.clone(),
+            w: w.clone(),
+            seen: o,
+        })
+        .collect();
+    let stdout = match args.format {
+        Format::Text => {
+            report::header(lab, &style, &units)
+                + &collide::report::text::header_units(&units)
+                + &report::frames::text(&views, args.reverse, &style, &units)?
+        }
+        Format::Json => json::render(&report::frames::json(&views, args.reverse, &style)?),
+    };
+    Ok(Outcome::print(stdout))
+}
+
+/// The plane picture of a case given on the command line (one solution, in the plane).
+pub fn plane_svg(case: &crate::cli::CaseArgs) -> Result<String> {
+    let posed = case.space_input(None, false)?.pose()?;
+    if posed.statement.dim != 2 {
+        anyhow::bail!(
+            "the picture of a collision is drawn in the plane: give 2-vectors (this case has {} \
+             dimension{})",
+            posed.statement.dim,
+            if posed.statement.dim == 1 { "" } else { "s" }
+        );
+    }
+    let solved = solve::solve(&posed.statement)?;
+    let all = outcomes(&posed, &solved);
+    let [(o, _)] = all.as_slice() else {
+        anyhow::bail!(
+            "the picture needs one solution; this case has {}",
+            all.len()
+        );
+    };
+    let title = format!(
+        "masses {}",
+        o.masses
+            .iter()
+            .map(|m| collide::number::num(collide::rational::to_f64(m).unwrap_or(f64::NAN)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    Ok(collide::plot::plane::svg(o, &title))
+}

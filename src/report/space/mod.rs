@@ -1,0 +1,574 @@
+//! The report of an event in the plane or in space, or of N bodies on a line: what was solved,
+//! the velocities as components and as speed @ angle, `V_COM`, the impulse, the collision of the
+//! normal parts along the line of impact, energies and angles; as text for people (80 columns)
+//! and as JSON (`in`, `fin` as arrays of per-body vectors).
+//!
+//! Every value is exact (`space::outcome`) and rounded once here: binary64 text and JSON carry the
+//! correctly rounded value, `--exact` fractions (or `≈` digits of irrational ones).
+//!
+//! - this module: one event's sections, its time reverse;
+//! - `frames`: the event from every standard frame;
+//! - `solved`: a problem's solutions (what was solved, which are physical, the checks).
+
+use std::cell::Cell;
+use std::fmt::Write;
+
+use num_traits::Signed;
+use serde_json::{Map, Value, json};
+
+use crate::number::num;
+use crate::quantity::{Exact, Scalar};
+use crate::rational::{Q, to_f64};
+use crate::space::outcome::{Outcome, angle_between, dot, polar};
+
+use crate::units::Units;
+
+use super::text::Block;
+
+pub mod frames;
+pub mod solved;
+
+/// Text lines fit a terminal of this width.
+pub(crate) const WIDTH: usize = 80;
+
+/// What a planar report shows (`--show`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Show {
+    pub vectors: bool,
+    pub momentum: bool,
+    pub forms: bool,
+    pub energy: bool,
+    pub angles: bool,
+}
+
+impl Show {
+    /// No section.
+    pub fn none() -> Show {
+        Show {
+            vectors: false,
+            momentum: false,
+            forms: false,
+            energy: false,
+            angles: false,
+        }
+    }
+
+    /// Every section.
+    pub fn all() -> Show {
+        Show {
+            vectors: true,
+            momentum: true,
+            forms: true,
+            energy: true,
+            angles: true,
+        }
+    }
+}
+
+impl Default for Show {
+    fn default() -> Show {
+        Show {
+            vectors: true,
+            momentum: false,
+            forms: false,
+            energy: true,
+            angles: true,
+        }
+    }
+}
+
+/// How values are written: binary64 (rounded once from exact) or exact fractions.
+pub struct Style {
+    pub exact: bool,
+    /// Energies in another unit: the exact factor from the case's (`--energy-unit`).
+    pub energy_scale: Option<Q>,
+    /// Set when a value is beyond binary64 (the report is then refused).
+    overflow: Cell<bool>,
+}
+
+/// A result beyond binary64, where the report would print inf.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "a result is beyond binary64 (|x| above 1.8e308 or below 4.9e-324 and not zero): rescale \
+     the units, or use --exact"
+)]
+pub struct Overflow;
+
+impl Style {
+    pub fn new(exact: bool, energy_scale: Option<Q>) -> Style {
+        Style {
+            exact,
+            energy_scale,
+            overflow: Cell::new(false),
+        }
+    }
+
+    fn f(&self, q: &Q) -> f64 {
+        match to_f64(q) {
+            Some(x) if x != 0.0 || q.is_zero() => x,
+            _ => {
+                self.overflow.set(true);
+                0.0
+            }
+        }
+    }
+
+    /// A value for people.
+    pub fn show(&self, q: &Q, approx: bool) -> String {
+        if self.exact {
+            if approx {
+                Exact::Approx(q.clone()).show()
+            } else {
+                Exact::Rational(q.clone()).show()
+            }
+        } else {
+            num(self.f(q))
+        }
+    }
+
+    /// A value for JSON: a number, or in exact mode a fraction string.
+    pub fn json(&self, q: &Q, approx: bool) -> Value {
+        if self.exact {
+            let e = if approx {
+                Exact::Approx(q.clone())
+            } else {
+                Exact::Rational(q.clone())
+            };
+            serde_json::to_value(&e).unwrap_or(Value::Null)
+        } else {
+            json!(self.f(q))
+        }
+    }
+
+    /// An energy, in the unit asked for.
+    fn energy(&self, q: &Q) -> Q {
+        match &self.energy_scale {
+            Some(s) => q * s,
+            None => q.clone(),
+        }
+    }
+
+    fn checked<T>(&self, t: T) -> Result<T, Overflow> {
+        if self.overflow.get() {
+            Err(Overflow)
+        } else {
+            Ok(t)
+        }
+    }
+}
+
+/// `(a, b)`, or `a` on a line.
+pub(crate) fn vector(style: &Style, v: &[Q], approx: bool) -> String {
+    let parts: Vec<String> = v.iter().map(|x| style.show(x, approx)).collect();
+    if parts.len() == 1 {
+        parts[0].clone()
+    } else {
+        format!("({})", parts.join(", "))
+    }
+}
+
+/// `4 @ 30°`: a vector's speed and direction (in the plane), or its speed (in space).
+pub(crate) fn speed_angle(v: &[Q]) -> String {
+    let (speed, angle) = polar(v);
+    match angle {
+        Some(a) if v.len() == 2 => format!("{} @ {}°", num(speed), num(a)),
+        _ if v.len() == 1 => String::new(),
+        _ if speed == 0.0 => "0".into(),
+        _ => format!("|v| = {}", num(speed)),
+    }
+}
+
+/// The velocities' unit after a vector (` m/s`), when the case has one.
+pub(crate) fn unit_suffix(units: &Units) -> String {
+    units.velocity.map(|u| format!(" {u}")).unwrap_or_default()
+}
+
+/// The header: bodies, masses, restitution and the line of impact.
+pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
+    let space = match o.dim {
+        1 => "on a line",
+        2 => "in the plane",
+        _ => "in space",
+    };
+    let masses: Vec<String> = o.masses.iter().map(|m| style.show(m, false)).collect();
+    let mut out = format!(
+        "{} bodies {space}: masses {}{}\n",
+        o.bodies(),
+        masses.join(", "),
+        units.mass.map(|u| format!(" {u}")).unwrap_or_default()
+    );
+    if let Some(e) = &o.e {
+        let kind = if e.is_zero() {
+            "totally inelastic: ka-runch"
+        } else if *e == Q::ONE {
+            "elastic: ka-bong"
+        } else if *e > Q::ONE {
+            "superelastic: energy released"
+        } else {
+            "ka-whump"
+        };
+        let _ = writeln!(out, "e = {} ({kind})", style.show(e, o.approx));
+    }
+    if let Some(n) = &o.normal {
+        let _ = writeln!(
+            out,
+            "Line of impact n = {} (from body 1 to body 2){}",
+            vector(style, n, o.approx),
+            match polar(n).1 {
+                Some(a) => format!(", at {}°", num(a)),
+                None => String::new(),
+            }
+        );
+    }
+    out
+}
+
+/// `v2'`, `v1` and the like.
+pub(crate) fn name(i: usize, fin: bool) -> String {
+    format!("v{}{}", i + 1, if fin { "'" } else { "" })
+}
+
+/// The report's sections as text.
+pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<String, Overflow> {
+    let mut out = String::new();
+    let a = o.approx;
+    let unit = unit_suffix(units);
+    if show.vectors {
+        let mut b = Block::new("Velocities (IN, then FIN)").fit(WIDTH);
+        for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
+            for (i, v) in vs.iter().enumerate() {
+                b.row(
+                    name(i, fin),
+                    format!("{}{unit}", vector(style, v, a)),
+                    speed_angle(v),
+                );
+            }
+        }
+        let com = o.v_com();
+        b.row(
+            "V_COM",
+            format!("{}{unit}", vector(style, &com, a)),
+            speed_angle(&com),
+        );
+        if o.bodies() == 2 {
+            let j = o.impulse(1);
+            let unit = match (units.mass, units.velocity) {
+                (Some(_), Some(_)) => format!(" {}", units.impulse()),
+                _ => String::new(),
+            };
+            b.row(
+                "J",
+                format!("{}{unit}", vector(style, &j, a)),
+                "impulse on body 2, m2 (v2' - v2)",
+            );
+        }
+        b.render(&mut out);
+        if let Some(parts) = o.normal_parts() {
+            let a = a || !parts.exact;
+            let mut b =
+                Block::new("Along the line of impact (the normal parts collide as on a rail)")
+                    .fit(WIDTH);
+            let com =
+                (&o.masses[0] * &parts.v_in[0] + &o.masses[1] * &parts.v_in[1]) / o.total_mass();
+            b.row(
+                "IN",
+                vector(style, &parts.v_in, a),
+                "(v1.n, v2.n), n of unit length",
+            );
+            b.row(
+                "COM",
+                vector(style, &[com.clone(), com], a),
+                "V_COM u along n",
+            );
+            b.row(
+                "FIN",
+                vector(style, &parts.fin, a),
+                "tangential parts unchanged",
+            );
+            b.render(&mut out);
+        }
+    }
+    if show.momentum {
+        let mut b =
+            Block::new(format!("Momentum (P = sum m v, in {})", units.impulse())).fit(WIDTH);
+        for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
+            for (i, v) in vs.iter().enumerate() {
+                let p: Vec<Q> = v.iter().map(|x| x * &o.masses[i]).collect();
+                b.row(
+                    format!("p{}{}", i + 1, if fin { "'" } else { "" }),
+                    vector(style, &p, a),
+                    "",
+                );
+            }
+        }
+        b.row(
+            "P_total",
+            vector(style, &o.momentum(&o.v_in), a),
+            "the same before and after",
+        );
+        b.render(&mut out);
+    }
+    if show.forms {
+        // The lecture's quadratic forms in R^(dN), M = diag(m1 I, ..., mN I).
+        let form = |x: &[Vec<Q>], y: &[Vec<Q>]| -> Q {
+            o.masses
+                .iter()
+                .zip(x.iter().zip(y))
+                .fold(Q::ZERO, |s, (m, (xi, yi))| s + m * dot(xi, yi))
+        };
+        let com: Vec<Vec<Q>> = vec![o.v_com(); o.bodies()];
+        let mut b =
+            Block::new("Quadratic forms (X.M.Y in R^(dN), M = diag(m1 I, ..., mN I))").fit(WIDTH);
+        b.row("V_IN.M.V_IN", style.show(&form(&o.v_in, &o.v_in), a), "");
+        b.row("V_FIN.M.V_FIN", style.show(&form(&o.fin, &o.fin), a), "");
+        b.row(
+            "V_FIN.M.V_IN",
+            style.show(&form(&o.fin, &o.v_in), a),
+            "= V_IN.M.V_FIN",
+        );
+        b.row(
+            "V_COM.M.V_IN",
+            style.show(&form(&com, &o.v_in), a),
+            "= V_COM.M.V_FIN = V_COM.P_total",
+        );
+        b.render(&mut out);
+    }
+    if show.energy {
+        let e = |q: Q| style.show(&style.energy(&q), a);
+        let mut b =
+            Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", units.energy())).fit(WIDTH);
+        b.row("KE_IN", e(o.ke_in()), "");
+        b.row("KE_FIN", e(o.ke_fin()), "");
+        b.row("KE_COM = 1/2 M_total |V_COM|^2", e(o.ke_com()), "");
+        match (&o.normal, o.bodies()) {
+            (Some(_), 2) => b.row(
+                "crunch = 1/2 mu (n.(v1 - v2))^2 / n.n",
+                e(o.crunch()),
+                format!("mu = {}", style.show(&o.reduced_mass(), a)),
+            ),
+            _ => b.row("crunch = KE_IN - KE_COM", e(o.crunch()), ""),
+        }
+        let lost = o.lost();
+        if lost.is_positive() {
+            b.row("lost = KE_IN - KE_FIN", e(lost), "");
+        } else if lost.is_negative() {
+            b.row("released = KE_FIN - KE_IN", e(-lost), "");
+        }
+        b.render(&mut out);
+    }
+    if show.angles && o.dim >= 2 && o.bodies() == 2 {
+        let mut b = Block::new("Angles").fit(WIDTH);
+        if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
+            b.row("between v1' and v2'", format!("{}°", num(t)), "");
+        }
+        for i in 0..2 {
+            if let Some(t) = angle_between(&o.v_in[i], &o.fin[i]) {
+                b.row(
+                    format!("body {} turned", i + 1),
+                    format!("{}°", num(t)),
+                    format!("from v{0} to v{0}'", i + 1),
+                );
+            }
+        }
+        b.render(&mut out);
+    }
+    style.checked(out)
+}
+
+/// The time-reversed event (t -> -t: every velocity negated, IN and FIN trade places, e' = 1/e).
+pub fn reverse_text(o: &Outcome, style: &Style) -> Result<String, Overflow> {
+    let r = o.reversed();
+    let a = o.approx;
+    let mut b = Block::new("Time reversed (t -> -t: V -> -V, IN and FIN trade places)").fit(WIDTH);
+    for (i, v) in r.v_in.iter().enumerate() {
+        b.row(
+            format!("v{}  = -v{}'", i + 1, i + 1),
+            vector(style, v, a),
+            "",
+        );
+    }
+    for (i, v) in r.fin.iter().enumerate() {
+        b.row(
+            format!("v{}' = -v{}", i + 1, i + 1),
+            vector(style, v, a),
+            "",
+        );
+    }
+    match (&o.e, &r.e) {
+        (Some(_), Some(e)) if *e > Q::ONE => b.row(
+            "e'",
+            style.show(e, a),
+            "= 1/e > 1: an explosion, not a collision",
+        ),
+        (Some(_), Some(e)) => b.row("e'", style.show(e, a), "= 1/e"),
+        (Some(_), None) => b.row(
+            "e'",
+            "undefined",
+            "1/e with e = 0: the stuck bodies fly apart",
+        ),
+        _ => {}
+    }
+    let lost = o.lost();
+    if lost.is_positive() {
+        b.row(
+            "energy gained",
+            style.show(&style.energy(&lost), a),
+            "= the original's energy lost",
+        );
+    }
+    let mut out = String::new();
+    b.render(&mut out);
+    style.checked(out)
+}
+
+/// The reversed event's JSON: `{"in", "fin", "restitution"}`.
+pub fn reverse_json(o: &Outcome, style: &Style) -> Result<Value, Overflow> {
+    let r = o.reversed();
+    let a = o.approx;
+    let vecs = |vs: &[Vec<Q>]| -> Value {
+        vs.iter()
+            .map(|v| v.iter().map(|x| style.json(x, a)).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+            .into()
+    };
+    let mut m = Map::new();
+    m.insert("in".into(), vecs(&r.v_in));
+    m.insert("fin".into(), vecs(&r.fin));
+    if let Some(e) = &r.e {
+        m.insert("restitution".into(), style.json(e, a));
+    }
+    style.checked(Value::Object(m))
+}
+
+/// The report as a JSON object.
+pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
+    let a = o.approx;
+    let vecs = |vs: &[Vec<Q>]| -> Value {
+        Value::Array(
+            vs.iter()
+                .map(|v| Value::Array(v.iter().map(|x| style.json(x, a)).collect()))
+                .collect(),
+        )
+    };
+    let vec1 = |v: &[Q]| Value::Array(v.iter().map(|x| style.json(x, a)).collect());
+    let mut m = Map::new();
+    m.insert("dim".into(), json!(o.dim));
+    m.insert(
+        "masses".into(),
+        Value::Array(o.masses.iter().map(|x| style.json(x, a)).collect()),
+    );
+    if let Some(e) = &o.e {
+        m.insert("restitution".into(), style.json(e, a));
+    }
+    if let Some(n) = &o.normal {
+        m.insert("normal".into(), vec1(n));
+    }
+    if show.vectors {
+        m.insert("in".into(), vecs(&o.v_in));
+        m.insert("fin".into(), vecs(&o.fin));
+        let polar_of: Vec<(f64, Option<f64>)> = o.fin.iter().map(|v| polar(v)).collect();
+        m.insert(
+            "fin_speed".into(),
+            json!(polar_of.iter().map(|p| p.0).collect::<Vec<_>>()),
+        );
+        if o.dim == 2 {
+            m.insert(
+                "fin_angle_deg".into(),
+                json!(
+                    polar_of
+                        .iter()
+                        .map(|p| p.1.unwrap_or(0.0))
+                        .collect::<Vec<_>>()
+                ),
+            );
+        }
+        m.insert("v_com".into(), vec1(&o.v_com()));
+        if o.bodies() == 2 {
+            m.insert("impulse".into(), vec1(&o.impulse(1)));
+        }
+        if let Some(parts) = o.normal_parts() {
+            let a = a || !parts.exact;
+            m.insert(
+                "normal_parts".into(),
+                json!({
+                    "in": parts.v_in.iter().map(|x| style.json(x, a)).collect::<Vec<_>>(),
+                    "fin": parts.fin.iter().map(|x| style.json(x, a)).collect::<Vec<_>>(),
+                }),
+            );
+        }
+    }
+    if show.momentum {
+        m.insert(
+            "momentum".into(),
+            json!({ "total": vec1(&o.momentum(&o.v_in)) }),
+        );
+    }
+    if show.energy {
+        let e = |q: Q| style.json(&style.energy(&q), a);
+        let lost = o.lost();
+        let mut energy = Map::new();
+        energy.insert("in".into(), e(o.ke_in()));
+        energy.insert("fin".into(), e(o.ke_fin()));
+        energy.insert("com".into(), e(o.ke_com()));
+        energy.insert("crunch".into(), e(o.crunch()));
+        if lost.is_negative() {
+            energy.insert("released".into(), e(-lost));
+        } else {
+            energy.insert("lost".into(), e(lost));
+        }
+        m.insert("energy".into(), Value::Object(energy));
+    }
+    if show.angles && o.dim >= 2 && o.bodies() == 2 {
+        if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
+            m.insert("angle_between_deg".into(), json!(t));
+        }
+        // How far each body turned, from v to v' (0 for a body at rest before or after).
+        let turned: Vec<f64> = (0..2)
+            .map(|i| angle_between(&o.v_in[i], &o.fin[i]).unwrap_or(0.0))
+            .collect();
+        m.insert("turned_deg".into(), json!(turned));
+    }
+    style.checked(Value::Object(m))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rational::int;
+
+    fn pucks() -> Outcome {
+        let v = |xs: &[i64]| xs.iter().map(|x| int(*x)).collect::<Vec<Q>>();
+        Outcome {
+            dim: 2,
+            masses: v(&[1, 1]),
+            v_in: vec![v(&[4, 0]), v(&[0, 0])],
+            fin: vec![v(&[2, -2]), v(&[2, 2])],
+            normal: Some(v(&[1, 1])),
+            e: Some(int(1)),
+            approx: false,
+        }
+    }
+
+    #[test]
+    fn text_fits_80_columns_and_names_every_vector() {
+        let o = pucks();
+        let s = Style::new(false, None);
+        let t = text(&o, Show::default(), &s, &Units::default()).unwrap();
+        for line in t.lines() {
+            assert!(line.chars().count() <= 80, "{line}");
+        }
+        assert!(t.contains("v2'    (2, 2)   2.82842712474619 @ 45°"), "{t}");
+        assert!(t.contains("between v1' and v2'  90°"), "{t}");
+    }
+
+    #[test]
+    fn json_carries_vectors_per_body() {
+        let o = pucks();
+        let j = json(&o, Show::default(), &Style::new(false, None)).unwrap();
+        assert_eq!(j["fin"], json!([[2.0, -2.0], [2.0, 2.0]]));
+        assert_eq!(j["impulse"], json!([2.0, 2.0]));
+        assert_eq!(j["energy"]["crunch"], json!(2.0));
+        let j = json(&o, Show::default(), &Style::new(true, None)).unwrap();
+        assert_eq!(j["v_com"], json!(["2", "0"]));
+    }
+}

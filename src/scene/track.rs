@@ -1,0 +1,114 @@
+//! `[track]` scenes: bodies on a track (`collide track`).
+
+use std::ops::Range;
+use std::path::Path;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::{About, ExpectTable, SceneError, among, from_toml, layout, located};
+use crate::number::Number;
+use crate::restitution::{Restitution, RestitutionError};
+use crate::track::{Limits, Track};
+
+/// `[track]` in a scene: bodies on a track (`collide track`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TrackFile {
+    title: Option<String>,
+    source: Option<String>,
+    track: TrackTable,
+    expect: Option<ExpectTable>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TrackTable {
+    masses: Spanned<Vec<Number>>,
+    positions: Spanned<Vec<Number>>,
+    velocities: Spanned<Vec<Number>>,
+    sizes: Option<Spanned<Vec<Number>>>,
+    left_wall: Option<Number>,
+    right_wall: Option<Number>,
+    restitution: Option<Restitution>,
+    wall_restitution: Option<Restitution>,
+    gravity: Option<Number>,
+    until: Option<Number>,
+    max_collisions: Option<u64>,
+}
+
+/// A track scene, validated.
+#[derive(Clone, Debug)]
+pub struct TrackScene {
+    pub about: About,
+    pub track: Track,
+    pub limits: Limits,
+}
+
+/// Top-level keys of `collide track --format json`.
+pub const TRACK_KEYS: [&str; 11] = [
+    "collisions",
+    "pair_collisions",
+    "wall_collisions",
+    "simultaneous",
+    "time",
+    "x",
+    "v",
+    "stop",
+    "momentum",
+    "energy",
+    "pi",
+];
+
+impl TrackScene {
+    pub fn parse(path: &Path, text: &str) -> Result<TrackScene, SceneError> {
+        let err = |span: Option<Range<usize>>, message: String| located(path, text, span, message);
+        let file: TrackFile = from_toml(path, text)?;
+        let t = file.track;
+        let bodies = layout(
+            (path, text),
+            "track",
+            [&t.masses, &t.positions, &t.velocities],
+            t.sizes.as_ref(),
+        )?;
+        for r in [&t.restitution, &t.wall_restitution].into_iter().flatten() {
+            if r.is_superelastic() {
+                let e = RestitutionError::Superelastic(r.to_string());
+                return Err(err(None, format!("[track] {e}")));
+            }
+        }
+        let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
+        let track = Track {
+            bodies,
+            left_wall: t.left_wall.map(|n| n.value()),
+            right_wall: t.right_wall.map(|n| n.value()),
+            e,
+            e_wall: t.wall_restitution.map_or(e, |r| r.value()),
+            gravity: t.gravity.map_or(0.0, |g| g.value()),
+        };
+        track
+            .check()
+            .map_err(|e| err(Some(t.masses.span()), format!("[track] {e}")))?;
+        let limits = Limits {
+            until: t.until.map(|u| u.value()),
+            max_collisions: t
+                .max_collisions
+                .unwrap_or(crate::track::DEFAULT_MAX_COLLISIONS),
+        };
+        limits
+            .check()
+            .map_err(|e| err(None, format!("[track] {e}")))?;
+        let about = About::new(
+            (path, text),
+            file.title,
+            file.source,
+            file.expect,
+            among(&TRACK_KEYS),
+        )?;
+        Ok(TrackScene {
+            about,
+            track,
+            limits,
+        })
+    }
+}

@@ -1,0 +1,363 @@
+//! One solved event in the plane or in space, and what follows from it, exactly: momentum,
+//! `V_COM`, kinetic energies, the crunch energy, the impulse, speeds and angles, the collision of
+//! the normal parts along the line of impact, and the same seen from a moving frame.
+//!
+//! Every value is computed in exact rational arithmetic from the event's (binary64 or typed)
+//! values and rounded once when printed, so no formula here can lose digits: a binary64 result
+//! is the correctly rounded value of the exact one.
+
+use num_traits::{Signed, Zero};
+
+use crate::frame::Frame;
+use crate::quantity::Exact;
+use crate::rational::{Q, half, to_f64};
+
+/// N bodies, before and after, in `dim` dimensions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Outcome {
+    pub dim: usize,
+    pub masses: Vec<Q>,
+    pub v_in: Vec<Vec<Q>>,
+    pub fin: Vec<Vec<Q>>,
+    /// The line of impact between bodies 1 and 2, when there is one (any length).
+    pub normal: Option<Vec<Q>>,
+    /// Restitution, where it means something (two bodies).
+    pub e: Option<Q>,
+    /// Some value is irrational, held to [`crate::space::algebra::ROOT_DIGITS`] digits or
+    /// rounded (an angle of 30 degrees): exact output marks it `≈`.
+    pub approx: bool,
+}
+
+/// `a.b`.
+pub fn dot(a: &[Q], b: &[Q]) -> Q {
+    a.iter().zip(b).fold(Q::ZERO, |s, (x, y)| s + x * y)
+}
+
+/// `a - b`.
+pub fn sub(a: &[Q], b: &[Q]) -> Vec<Q> {
+    a.iter().zip(b).map(|(x, y)| x - y).collect()
+}
+
+fn scale(a: &[Q], s: &Q) -> Vec<Q> {
+    a.iter().map(|x| x * s).collect()
+}
+
+impl Outcome {
+    /// The number of bodies.
+    pub fn bodies(&self) -> usize {
+        self.masses.len()
+    }
+
+    /// `M_total = sum m_i`.
+    pub fn total_mass(&self) -> Q {
+        self.masses.iter().fold(Q::ZERO, |s, m| s + m)
+    }
+
+    /// `P = sum m_i v_i` of a state.
+    pub fn momentum(&self, v: &[Vec<Q>]) -> Vec<Q> {
+        let mut p = vec![Q::ZERO; self.dim];
+        for (m, vi) in self.masses.iter().zip(v) {
+            for (pk, vk) in p.iter_mut().zip(vi) {
+                *pk += m * vk;
+            }
+        }
+        p
+    }
+
+    /// `V_COM = P / M_total` (the same before and after).
+    pub fn v_com(&self) -> Vec<Q> {
+        scale(&self.momentum(&self.v_in), &(Q::ONE / self.total_mass()))
+    }
+
+    /// `KE = 1/2 sum (m_i v_i).v_i`.
+    pub fn kinetic(&self, v: &[Vec<Q>]) -> Q {
+        self.masses
+            .iter()
+            .zip(v)
+            .fold(Q::ZERO, |s, (m, vi)| s + m * dot(vi, vi))
+            * half()
+    }
+
+    pub fn ke_in(&self) -> Q {
+        self.kinetic(&self.v_in)
+    }
+
+    pub fn ke_fin(&self) -> Q {
+        self.kinetic(&self.fin)
+    }
+
+    /// `KE_COM = 1/2 M_total |V_COM|^2`, the least energy momentum allows.
+    pub fn ke_com(&self) -> Q {
+        let v = self.v_com();
+        half() * self.total_mass() * dot(&v, &v)
+    }
+
+    /// The crunch energy: `1/2 mu (n.(v1 - v2))^2 / n.n` along a line of impact (what a
+    /// totally inelastic impact along it turns into heat), else `KE_IN - KE_COM` (what sticking
+    /// together would).
+    pub fn crunch(&self) -> Q {
+        match (&self.normal, self.bodies()) {
+            (Some(n), 2) => {
+                let along = dot(n, &sub(&self.v_in[0], &self.v_in[1]));
+                half() * self.reduced_mass() * &along * &along / dot(n, n)
+            }
+            _ => self.ke_in() - self.ke_com(),
+        }
+    }
+
+    /// `mu = m1 m2 / (m1 + m2)` of two bodies.
+    pub fn reduced_mass(&self) -> Q {
+        &self.masses[0] * &self.masses[1] / (&self.masses[0] + &self.masses[1])
+    }
+
+    /// `KE_IN - KE_FIN`: lost when positive, released when negative. For an outcome held to
+    /// 40 digits (an irrational root of the energy law) a difference below `1e-30` of the
+    /// energies is that law's own rounding, and is 0.
+    pub fn lost(&self) -> Q {
+        let (ki, kf) = (self.ke_in(), self.ke_fin());
+        let d = &ki - &kf;
+        if self.approx && d.clone().abs() * Q::from(crate::rational::pow10(30)) <= ki + kf {
+            return Q::ZERO;
+        }
+        d
+    }
+
+    /// The impulse on body `i`, `m_i (v_i' - v_i)`.
+    pub fn impulse(&self, i: usize) -> Vec<Q> {
+        scale(&sub(&self.fin[i], &self.v_in[i]), &self.masses[i])
+    }
+
+    /// The collision of the normal parts along the line of impact, the lecture's 1D picture:
+    /// `(v1.n, v2.n)` before and after, with `n` of unit length (irrational in general: `None`
+    /// unless `n.n` is a rational square, then exact).
+    pub fn normal_parts(&self) -> Option<NormalParts> {
+        let n = self.normal.as_ref()?;
+        if self.bodies() != 2 {
+            return None;
+        }
+        let nn = dot(n, n);
+        let (len, exact) = match crate::rational::sqrt_exact(&nn) {
+            Some(r) => (r, true),
+            None => (crate::quantity::sqrt(&nn, 40), false),
+        };
+        let along = |v: &[Q]| dot(v, n) / &len;
+        Some(NormalParts {
+            v_in: [along(&self.v_in[0]), along(&self.v_in[1])],
+            fin: [along(&self.fin[0]), along(&self.fin[1])],
+            exact,
+        })
+    }
+
+    /// The same event seen from a frame moving at `w`: every velocity less `w`.
+    pub fn boost(&self, w: &[Q]) -> Outcome {
+        let shift = |vs: &[Vec<Q>]| vs.iter().map(|v| sub(v, w)).collect();
+        Outcome {
+            v_in: shift(&self.v_in),
+            fin: shift(&self.fin),
+            ..self.clone()
+        }
+    }
+
+    /// The velocity of the observer of `frame` (lecture Sec. 4): 0 in the lab, `V_COM`, body
+    /// i's velocity before (`rest-in:i`) or after (`rest-fin:i`), or the vector given (its
+    /// typed value with `typed`, else its binary64 value).
+    pub fn observer(&self, frame: &Frame, typed: bool) -> Result<Vec<Q>, FrameVelocityError> {
+        let q = |n: &crate::number::Number| {
+            if typed {
+                n.exact()
+            } else {
+                crate::rational::from_f64(n.value())
+            }
+        };
+        let body = |i: usize| {
+            (1..=self.bodies())
+                .contains(&i)
+                .then_some(i - 1)
+                .ok_or(FrameVelocityError::Body(frame.to_string(), self.bodies()))
+        };
+        Ok(match frame {
+            Frame::Lab => vec![Q::ZERO; self.dim],
+            Frame::Com => self.v_com(),
+            Frame::RestIn(i) => self.v_in[body(*i)?].clone(),
+            Frame::RestFin(i) => self.fin[body(*i)?].clone(),
+            Frame::Velocity(n) if self.dim == 1 => vec![q(n)],
+            Frame::Velocity(_) => {
+                return Err(FrameVelocityError::Size(frame.to_string(), 1, self.dim));
+            }
+            Frame::Vector(v) if v.len() == self.dim => v.iter().map(q).collect(),
+            Frame::Vector(v) => {
+                return Err(FrameVelocityError::Size(
+                    frame.to_string(),
+                    v.len(),
+                    self.dim,
+                ));
+            }
+        })
+    }
+
+    /// Reversed in time: IN' = -FIN, FIN' = -IN (restitution 1/e).
+    pub fn reversed(&self) -> Outcome {
+        let neg = |vs: &[Vec<Q>]| vs.iter().map(|v| v.iter().map(|x| -x).collect()).collect();
+        Outcome {
+            v_in: neg(&self.fin),
+            fin: neg(&self.v_in),
+            e: self
+                .e
+                .as_ref()
+                .and_then(|e| (!e.is_zero()).then(|| Q::ONE / e)),
+            ..self.clone()
+        }
+    }
+
+    /// Whether bodies 1 and 2 approach along the line of impact before (`n.(v1 - v2) > 0`) and
+    /// do not approach after; `None` without a line (or for other than two bodies).
+    pub fn physical(&self) -> Option<bool> {
+        let n = self.impulse_line()?;
+        let before = dot(&n, &sub(&self.v_in[0], &self.v_in[1]));
+        let after = dot(&n, &sub(&self.fin[0], &self.fin[1]));
+        Some(before.is_positive() && !after.is_positive())
+    }
+
+    /// The line of impact, or where none was given, the direction of the impulse on body 2
+    /// (`None` without an impulse).
+    pub fn impulse_line(&self) -> Option<Vec<Q>> {
+        if self.bodies() != 2 {
+            return None;
+        }
+        if let Some(n) = &self.normal {
+            return Some(n.clone());
+        }
+        let j = self.impulse(1);
+        (!j.iter().all(Zero::is_zero)).then_some(j)
+    }
+
+    /// A value of this outcome, exact or marked approximate.
+    pub fn value(&self, q: Q) -> Exact {
+        if self.approx {
+            Exact::Approx(q)
+        } else {
+            Exact::Rational(q)
+        }
+    }
+}
+
+/// A frame this event cannot be seen from.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FrameVelocityError {
+    #[error("frame '{0}': there are {1} bodies")]
+    Body(String, usize),
+    #[error(
+        "frame '{0}': an observer velocity of {1} component(s) for velocities of {2}: give it as \
+         the velocities are, e.g. '(2,1)' in the plane"
+    )]
+    Size(String, usize, usize),
+}
+
+/// The normal parts of two bodies' velocities, before and after.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalParts {
+    pub v_in: [Q; 2],
+    pub fin: [Q; 2],
+    /// Whether `|n|` is rational (else the parts are to 40 digits).
+    pub exact: bool,
+}
+
+/// `|v|` and the angle from +x in degrees (counterclockwise, in (-180, 180]), in binary64:
+/// `hypot` of the rounded components, `atan2` in degrees; `None` for the zero vector's angle.
+pub fn polar(v: &[Q]) -> (f64, Option<f64>) {
+    let f: Vec<f64> = v.iter().map(|x| to_f64(x).unwrap_or(f64::NAN)).collect();
+    let speed = f.iter().fold(0.0f64, |s, x| s.hypot(*x));
+    let angle = (v.len() == 2 && !(v[0].is_zero() && v[1].is_zero()))
+        .then(|| f[1].atan2(f[0]).to_degrees());
+    (speed, angle)
+}
+
+/// The angle between two vectors, in degrees (`None` if either is zero).
+pub fn angle_between(a: &[Q], b: &[Q]) -> Option<f64> {
+    if a.iter().all(Zero::is_zero) || b.iter().all(Zero::is_zero) {
+        return None;
+    }
+    // atan2(|a x b|, a.b) is accurate at every angle (acos is not near 0 and 180).
+    let ab = to_f64(&dot(a, b))?;
+    let f = |v: &[Q]| -> Vec<f64> { v.iter().map(|x| to_f64(x).unwrap_or(0.0)).collect() };
+    let (fa, fb) = (f(a), f(b));
+    let cross = match a.len() {
+        2 => to_f64(&(&a[0] * &b[1] - &a[1] * &b[0]))?.abs(),
+        3 => {
+            let c = [
+                fa[1] * fb[2] - fa[2] * fb[1],
+                fa[2] * fb[0] - fa[0] * fb[2],
+                fa[0] * fb[1] - fa[1] * fb[0],
+            ];
+            c.iter().fold(0.0f64, |s, x| s.hypot(*x))
+        }
+        _ => 0.0,
+    };
+    Some(cross.atan2(ab).to_degrees())
+}
+
+/// `|q|` as a binary64.
+pub fn magnitude(q: &Q) -> f64 {
+    to_f64(&q.abs()).unwrap_or(f64::INFINITY)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rational::{int, ratio};
+
+    fn v(xs: &[i64]) -> Vec<Q> {
+        xs.iter().map(|x| int(*x)).collect()
+    }
+
+    /// Two equal pucks, elastic, n = (1, 1): physics.md section 7's construction by hand.
+    fn pucks() -> Outcome {
+        Outcome {
+            dim: 2,
+            masses: v(&[1, 1]),
+            v_in: vec![v(&[4, 0]), v(&[0, 0])],
+            fin: vec![v(&[2, -2]), v(&[2, 2])],
+            normal: Some(v(&[1, 1])),
+            e: Some(int(1)),
+            approx: false,
+        }
+    }
+
+    #[test]
+    fn energies_and_crunch() {
+        let o = pucks();
+        assert_eq!(o.ke_in(), int(8));
+        assert_eq!(o.ke_fin(), int(8));
+        assert_eq!(o.v_com(), v(&[2, 0]));
+        assert_eq!(o.ke_com(), int(4));
+        // crunch = 1/2 (1/2) (n.(v1 - v2))^2 / n.n = 1/4 * 16 / 2 = 2.
+        assert_eq!(o.crunch(), int(2));
+        assert_eq!(o.impulse(1), v(&[2, 2]));
+        assert_eq!(o.physical(), Some(true));
+        let parts = o.normal_parts().unwrap();
+        assert!(!parts.exact);
+        // Final velocities at right angles (equal masses, elastic, target at rest).
+        assert_eq!(angle_between(&o.fin[0], &o.fin[1]), Some(90.0));
+    }
+
+    #[test]
+    fn frames_keep_the_crunch_and_reversal_swaps() {
+        let o = pucks();
+        let b = o.boost(&[ratio(7, 3), int(-5)]);
+        assert_eq!(b.crunch(), o.crunch());
+        assert_eq!(b.lost(), o.lost());
+        assert_ne!(b.ke_in(), o.ke_in());
+        let r = o.reversed();
+        assert_eq!(r.v_in[0], v(&[-2, 2]));
+        assert_eq!(r.reversed(), o);
+    }
+
+    #[test]
+    fn polar_form() {
+        let (s, a) = polar(&v(&[3, 4]));
+        assert_eq!(s, 5.0);
+        assert!((a.unwrap() - 53.13010235415598).abs() < 1e-12);
+        assert_eq!(polar(&v(&[0, 0])).1, None);
+        assert_eq!(polar(&v(&[-1, 0])).1, Some(180.0));
+    }
+}

@@ -1,0 +1,843 @@
+//! Solving a problem in the plane or in space for its unknowns (`../shared/physics.md` section 7):
+//! the laws are written as polynomials in the unknowns (`algebra`), the linear ones solved
+//! exactly, and the one or two parameters they leave fixed by the quadratic ones.
+//!
+//! The laws, for N bodies in d dimensions:
+//! - momentum, d equations: `sum m_i v_i = sum m_i v_i'`;
+//! - with a line of impact `n` between two bodies: restitution
+//!   `n.(v1' - v2') = -e n.(v1 - v2)` and body 1's tangential parts kept, `t.(v1' - v1) = 0`
+//!   for the d - 1 directions `t` across `n` (body 2's follow from momentum);
+//! - without one: `e = 0`, every body ends with one velocity; `e = 1`, energy is kept,
+//!   `sum m_i |v_i|^2 = sum m_i |v_i'|^2`; bodies that start together (a separation) only
+//!   momentum;
+//! - a direction unknown at a known speed is a unit vector `u`, `|u|^2 = 1`.
+
+use num_traits::{Signed, Zero};
+
+use crate::number::Given;
+use crate::quantity::Exact;
+use crate::rational::{Q, from_f64, to_f64};
+
+use super::algebra::{self, Poly, Root, TooNonlinear};
+
+/// A velocity as a problem gives it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Velocity {
+    /// Components, each known or unknown (`(4,1)`, `(?,3)`, `?`).
+    Components(Vec<Given<Q>>),
+    /// A known direction (a unit vector) at an unknown speed (`? @ 30deg`).
+    Speed { unit: Vec<Q> },
+    /// A known speed in an unknown direction, in the plane (`5.2 @ ?`).
+    Direction { speed: Q },
+}
+
+impl Velocity {
+    /// A known vector.
+    pub fn known(v: Vec<Q>) -> Velocity {
+        Velocity::Components(v.into_iter().map(Given::Known).collect())
+    }
+
+    /// The whole vector unknown.
+    pub fn unknown(dim: usize) -> Velocity {
+        Velocity::Components(vec![Given::Unknown; dim])
+    }
+
+    /// The vector when every part is known.
+    pub fn value(&self) -> Option<Vec<Q>> {
+        match self {
+            Velocity::Components(c) => c.iter().map(|g| g.known().cloned()).collect(),
+            _ => None,
+        }
+    }
+}
+
+/// What the problem gives: N bodies in `dim` dimensions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Statement {
+    pub dim: usize,
+    pub masses: Vec<Given<Q>>,
+    pub v_in: Vec<Velocity>,
+    pub fin: Vec<Velocity>,
+    /// The line of impact between bodies 1 and 2 (any length).
+    pub normal: Option<Vec<Q>>,
+    /// `None`: not given (unknown when the problem gives final velocities, else elastic).
+    pub e: Option<Given<Q>>,
+    /// Some typed value was irrational (an angle of 30 degrees) and enters rounded: checks allow
+    /// a relative residual of [`INEXACT_TOL`].
+    pub inexact: bool,
+}
+
+/// The relative residual a check may have when inputs were rounded.
+pub const INEXACT_TOL: f64 = 1e-12;
+
+/// An unknown, named as output names it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unknown {
+    Mass(usize),
+    /// Body, final?, component.
+    Component(usize, bool, usize),
+    /// Body, final?: the speed along a known direction.
+    Speed(usize, bool),
+    /// Body, final?, component of the unknown unit direction.
+    Direction(usize, bool, usize),
+    Restitution,
+}
+
+/// Which law an equation is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Law {
+    Momentum(usize),
+    Restitution,
+    Tangential(usize),
+    /// Body i ends with body 1's velocity, component k (`e = 0`).
+    Stick(usize, usize),
+    Energy,
+    /// The unknown direction of body i (final?) is a unit vector.
+    Unit(usize, bool),
+}
+
+impl Law {
+    pub fn name(self) -> String {
+        let axis = |k: usize| ["x", "y", "z"].get(k).copied().unwrap_or("?");
+        match self {
+            Law::Momentum(k) => format!("momentum ({})", axis(k)),
+            Law::Restitution => "restitution along the line of impact".into(),
+            Law::Tangential(_) => "tangential velocity kept (smooth contact)".into(),
+            Law::Stick(i, _) => format!("body {} moves with body 1 (e = 0)", i + 1),
+            Law::Energy => "energy kept (elastic)".into(),
+            Law::Unit(i, _) => format!("body {}'s direction is a unit vector", i + 1),
+        }
+    }
+}
+
+/// A law checked at a solution: its residual and the scale it is judged by.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Check {
+    pub law: Law,
+    pub residual: f64,
+    pub scale: f64,
+    pub ok: bool,
+}
+
+/// One solution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution {
+    pub masses: Vec<Exact>,
+    pub v_in: Vec<Vec<Exact>>,
+    pub fin: Vec<Vec<Exact>>,
+    /// `None` where restitution means nothing (a separation, several bodies).
+    pub e: Option<Exact>,
+    pub checks: Vec<Check>,
+}
+
+impl Solution {
+    /// Whether every check holds.
+    pub fn consistent(&self) -> bool {
+        self.checks.iter().all(|c| c.ok)
+    }
+}
+
+/// What was solved: the unknowns and the solutions (one, or two from a quadratic, or none).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solved {
+    pub unknowns: Vec<Unknown>,
+    pub solutions: Vec<Solution>,
+    /// The bodies start together and are pushed apart (e means nothing).
+    pub separation: bool,
+}
+
+/// Why a problem cannot be solved.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SolveError {
+    #[error(
+        "{unknowns} unknowns and {equations} independent equations ({laws}): give {more} more \
+         known value{s}{hint}",
+        s = if *.more == 1 { "" } else { "s" }
+    )]
+    TooFew {
+        unknowns: usize,
+        equations: usize,
+        more: usize,
+        laws: String,
+        hint: &'static str,
+    },
+    #[error(
+        "a product of unknowns of degree three (an unknown mass with an unknown velocity in the \
+         energy): give the mass or the velocity"
+    )]
+    Nonlinear,
+    #[error(
+        "restitution e = {0} without a line of impact: give --normal (the direction of the \
+         impulse on body 2) or the final velocities; without a normal only e = 0 (they stick) \
+         and e = 1 (elastic, energy kept) fix the outcome"
+    )]
+    NeedsNormal(String),
+    #[error("these unknowns are not fixed by the laws in a way collide can solve: {0}")]
+    Unsupported(&'static str),
+}
+
+impl From<TooNonlinear> for SolveError {
+    fn from(_: TooNonlinear) -> SolveError {
+        SolveError::Nonlinear
+    }
+}
+
+/// Variables and equations under construction.
+struct Builder {
+    unknowns: Vec<Unknown>,
+}
+
+impl Builder {
+    fn var(&mut self, u: Unknown) -> Poly {
+        self.unknowns.push(u);
+        Poly::var(self.unknowns.len() - 1)
+    }
+
+    fn scalar(&mut self, g: &Given<Q>, u: Unknown) -> Poly {
+        match g {
+            Given::Known(q) => Poly::constant(q.clone()),
+            _ => self.var(u),
+        }
+    }
+
+    fn vector(&mut self, v: &Velocity, body: usize, fin: bool, dim: usize) -> Vec<Poly> {
+        match v {
+            Velocity::Components(c) => (0..dim)
+                .map(|k| {
+                    let g = c.get(k).cloned().unwrap_or(Given::Known(Q::ZERO));
+                    self.scalar(&g, Unknown::Component(body, fin, k))
+                })
+                .collect(),
+            Velocity::Speed { unit } => {
+                let s = self.var(Unknown::Speed(body, fin));
+                unit.iter().map(|u| s.scale(u)).collect()
+            }
+            Velocity::Direction { speed } => (0..dim)
+                .map(|k| self.var(Unknown::Direction(body, fin, k)).scale(speed))
+                .collect(),
+        }
+    }
+}
+
+/// `a.b` of polynomial vectors.
+fn dot(a: &[Poly], b: &[Poly]) -> Result<Poly, TooNonlinear> {
+    let mut s = Poly::default();
+    for (x, y) in a.iter().zip(b) {
+        s = s.add(&x.mul(y)?);
+    }
+    Ok(s)
+}
+
+fn dot_q(a: &[Poly], n: &[Q]) -> Poly {
+    let mut s = Poly::default();
+    for (x, y) in a.iter().zip(n) {
+        s = s.add(&x.scale(y));
+    }
+    s
+}
+
+/// `d - 1` rational directions across `n` (exactly orthogonal to it).
+pub fn tangents(n: &[Q]) -> Vec<Vec<Q>> {
+    match n.len() {
+        1 => Vec::new(),
+        2 => vec![vec![-n[1].clone(), n[0].clone()]],
+        _ => {
+            // n x a for the axis a least along n, then n x (n x a).
+            let k = (0..3)
+                .min_by(|&i, &j| n[i].abs().cmp(&n[j].abs()))
+                .unwrap_or(0);
+            let mut a = vec![Q::ZERO; 3];
+            a[k] = Q::ONE;
+            let t1 = cross(n, &a);
+            let t2 = cross(n, &t1);
+            vec![t1, t2]
+        }
+    }
+}
+
+fn cross(a: &[Q], b: &[Q]) -> Vec<Q> {
+    vec![
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+/// Solves `given` for its unknowns.
+pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
+    let dim = given.dim;
+    let n = given.masses.len();
+    let mut b = Builder {
+        unknowns: Vec::new(),
+    };
+    let masses: Vec<Poly> = given
+        .masses
+        .iter()
+        .enumerate()
+        .map(|(i, m)| b.scalar(m, Unknown::Mass(i)))
+        .collect();
+    let v_in: Vec<Vec<Poly>> = (0..n)
+        .map(|i| b.vector(&given.v_in[i], i, false, dim))
+        .collect();
+    let fin: Vec<Vec<Poly>> = (0..n)
+        .map(|i| b.vector(&given.fin[i], i, true, dim))
+        .collect();
+    let e = match &given.e {
+        Some(Given::Known(q)) => Some(Poly::constant(q.clone())),
+        Some(_) => Some(b.var(Unknown::Restitution)),
+        None => None,
+    };
+    let together = given.v_in.iter().all(|v| v.value().is_some())
+        && given.v_in.windows(2).all(|w| w[0].value() == w[1].value());
+    let fin_given = given
+        .fin
+        .iter()
+        .any(|f| !matches!(f, Velocity::Components(c) if c.iter().all(Given::is_unknown)));
+    let separation = together && n >= 2 && given.e.is_none() && fin_given;
+
+    let mut eqs: Vec<(Law, Poly)> = Vec::new();
+    for k in 0..dim {
+        let mut p = Poly::default();
+        for i in 0..n {
+            p = p.add(&masses[i].mul(&v_in[i][k].sub(&fin[i][k]))?);
+        }
+        eqs.push((Law::Momentum(k), p));
+    }
+    let e_value = given.e.as_ref().and_then(|g| g.known().cloned());
+    let mut e_used = e.clone();
+    if separation {
+        // Momentum alone: e means nothing for bodies pushed apart.
+    } else if let Some(nrm) = &given.normal {
+        if n != 2 {
+            return Err(SolveError::Unsupported(
+                "a line of impact is between two bodies: give two bodies with --normal",
+            ));
+        }
+        // e given, or unknown: `?`, or not given beside final velocities (else elastic).
+        let e = match (&e, fin_given) {
+            (Some(e), _) => e.clone(),
+            (None, true) => b.var(Unknown::Restitution),
+            (None, false) => Poly::constant(Q::ONE),
+        };
+        let rel_fin = dot_q(&fin[0], nrm).sub(&dot_q(&fin[1], nrm));
+        let rel_in = dot_q(&v_in[0], nrm).sub(&dot_q(&v_in[1], nrm));
+        eqs.push((Law::Restitution, rel_fin.add(&e.mul(&rel_in)?)));
+        e_used = Some(e);
+        for (k, t) in tangents(nrm).iter().enumerate() {
+            let p = dot_q(&fin[0], t).sub(&dot_q(&v_in[0], t));
+            eqs.push((Law::Tangential(k), p));
+        }
+    } else if e_value.as_ref().is_some_and(Zero::is_zero) {
+        for (i, f) in fin.iter().enumerate().skip(1) {
+            for (k, (fk, f0)) in f.iter().zip(&fin[0]).enumerate() {
+                eqs.push((Law::Stick(i, k), fk.sub(f0)));
+            }
+        }
+    } else if e_value.as_ref().is_some_and(|q| *q == Q::ONE) || (e.is_none() && !fin_given) {
+        let mut p = Poly::default();
+        for i in 0..n {
+            let ke = dot(&v_in[i], &v_in[i])?.sub(&dot(&fin[i], &fin[i])?);
+            p = p.add(&masses[i].mul(&ke)?);
+        }
+        eqs.push((Law::Energy, p));
+    } else if let Some(q) = e_value {
+        return Err(SolveError::NeedsNormal(crate::quantity::fraction(&q)));
+    }
+    // Otherwise e is unknown without a line of impact: the final velocities fix it.
+    for (i, v) in given.v_in.iter().chain(&given.fin).enumerate() {
+        if let Velocity::Direction { .. } = v {
+            let (body, is_fin) = (i % n, i >= n);
+            let u: Vec<Poly> = (0..dim)
+                .map(|k| {
+                    let idx = b
+                        .unknowns
+                        .iter()
+                        .position(|x| *x == Unknown::Direction(body, is_fin, k))
+                        .expect("allocated above");
+                    Poly::var(idx)
+                })
+                .collect();
+            let p = dot(&u, &u)?.sub(&Poly::constant(Q::ONE));
+            eqs.push((Law::Unit(body, is_fin), p));
+        }
+    }
+    let m = b.unknowns.len();
+    // Unknown directions are the free parameters where two are left: their unit circle is then
+    // t0^2 + t1^2 = 1 itself, and rational points on it give roots to 40 digits.
+    let last: Vec<usize> = (0..m)
+        .filter(|&i| matches!(b.unknowns[i], Unknown::Direction(..)))
+        .collect();
+    let xs = solve_system(&eqs, m, &last)?;
+    let solutions = xs
+        .into_iter()
+        .map(|(x, approx)| {
+            let value = |p: &Poly| {
+                let q = p.eval(&x);
+                if approx {
+                    Exact::Approx(q)
+                } else {
+                    Exact::Rational(q)
+                }
+            };
+            let checks = eqs
+                .iter()
+                .map(|(law, p)| {
+                    let r = p.eval(&x);
+                    let scale = p.scale_at(&x);
+                    let residual = to_f64(&r).unwrap_or(f64::INFINITY);
+                    let tol = if given.inexact || approx {
+                        INEXACT_TOL
+                    } else {
+                        0.0
+                    };
+                    Check {
+                        law: *law,
+                        residual,
+                        scale,
+                        ok: residual.abs() <= tol * scale,
+                    }
+                })
+                .collect();
+            let v_in: Vec<Vec<Exact>> =
+                v_in.iter().map(|v| v.iter().map(value).collect()).collect();
+            let fin: Vec<Vec<Exact>> = fin.iter().map(|v| v.iter().map(value).collect()).collect();
+            let e = if separation {
+                None
+            } else if let Some(e) = &e_used {
+                Some(value(e))
+            } else if n != 2 {
+                None
+            } else {
+                impulse_restitution(&v_in, &fin).map(|q| {
+                    if approx {
+                        Exact::Approx(q)
+                    } else {
+                        Exact::Rational(q)
+                    }
+                })
+            };
+            Solution {
+                masses: masses.iter().map(value).collect(),
+                v_in,
+                fin,
+                e,
+                checks,
+            }
+        })
+        .collect();
+    Ok(Solved {
+        unknowns: b.unknowns,
+        solutions,
+        separation,
+    })
+}
+
+/// Restitution along the impulse of a two-body outcome: `n` along body 2's change of velocity,
+/// `e = -n.(v1' - v2') / n.(v1 - v2)`; `None` without an impulse or an approach along it.
+fn impulse_restitution(v_in: &[Vec<Exact>], fin: &[Vec<Exact>]) -> Option<Q> {
+    let q = |e: &Exact| e.rational().clone();
+    let n: Vec<Q> = fin[1]
+        .iter()
+        .zip(&v_in[1])
+        .map(|(f, v)| q(f) - q(v))
+        .collect();
+    let along = |a: &[Exact], b: &[Exact]| -> Q {
+        n.iter()
+            .zip(a.iter().zip(b))
+            .map(|(n, (x, y))| n * (q(x) - q(y)))
+            .fold(Q::ZERO, |s, t| s + t)
+    };
+    let approach = along(&v_in[0], &v_in[1]);
+    if approach.is_zero() {
+        return None;
+    }
+    Some(-along(&fin[0], &fin[1]) / approach)
+}
+
+/// The solutions of the equations in `m` unknowns: the values, and whether they are
+/// approximate (an irrational root).
+fn solve_system(
+    eqs: &[(Law, Poly)],
+    m: usize,
+    last: &[usize],
+) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
+    let mut linear: Vec<&Poly> = eqs
+        .iter()
+        .filter(|(_, p)| p.is_linear())
+        .map(|(_, p)| p)
+        .collect();
+    let quadratic: Vec<&(Law, Poly)> = eqs.iter().filter(|(_, p)| !p.is_linear()).collect();
+    // A linear law that contradicts the others is dropped here and judged as a check.
+    let affine = loop {
+        match algebra::solve_linear(&linear, m, last) {
+            Ok(a) => break a,
+            Err(c) => {
+                linear.remove(c.equation);
+            }
+        }
+    };
+    let rank = m - affine.basis.len();
+    let point = |t: &[Q]| -> Vec<Q> {
+        let mut x = affine.x0.clone();
+        for (tk, z) in t.iter().zip(&affine.basis) {
+            for (xi, zi) in x.iter_mut().zip(z) {
+                *xi += tk * zi;
+            }
+        }
+        x
+    };
+    let free = affine.basis.len();
+    let in_t: Vec<(Law, Poly)> = quadratic
+        .iter()
+        .map(|(law, p)| (*law, p.substitute(&affine.x0, &affine.basis)))
+        .filter(|(_, p)| !(p.lin.is_empty() && p.is_linear()))
+        .collect();
+    let too_few = |used: usize| {
+        let laws: Vec<String> = eqs.iter().map(|(l, _)| l.name()).collect();
+        let mut laws_unique = laws.clone();
+        laws_unique.dedup();
+        SolveError::TooFew {
+            unknowns: m,
+            equations: rank + used,
+            more: free.saturating_sub(used),
+            laws: laws_unique.join(", "),
+            hint: "",
+        }
+    };
+    match free {
+        0 => Ok(vec![(affine.x0.clone(), false)]),
+        1 => {
+            let Some((_, p)) = in_t.first() else {
+                return Err(too_few(0));
+            };
+            let a = p.quad.get(&(0, 0)).cloned().unwrap_or_default();
+            let b = p.lin.get(&0).cloned().unwrap_or_default();
+            Ok(algebra::quadratic_roots(&a, &b, &p.c)
+                .into_iter()
+                .map(|r| {
+                    let approx = matches!(r, Root::Approx(_));
+                    (point(&[r.value().clone()]), approx)
+                })
+                .collect())
+        }
+        2 => {
+            if in_t.len() < 2 {
+                return Err(too_few(in_t.len()));
+            }
+            let roots = match unit_circle(&in_t) {
+                Some(k) => on_unit_circle(&in_t[1 - k.min(1)].1)
+                    .into_iter()
+                    .map(|t| t.to_vec())
+                    .collect(),
+                None => two_parameters(&in_t[0].1, &in_t[1].1)?,
+            };
+            Ok(roots.into_iter().map(|t| (point(&t), true)).collect())
+        }
+        _ => Err(too_few(in_t.len().min(free))),
+    }
+}
+
+/// Which of the first two equations in the parameters is the unit circle `t0^2 + t1^2 = 1`
+/// (times a constant).
+fn unit_circle(in_t: &[(Law, Poly)]) -> Option<usize> {
+    in_t.iter().take(2).position(|(_, p)| {
+        let a = p.quad.get(&(0, 0));
+        a.is_some()
+            && p.quad.get(&(1, 1)) == a
+            && !p.quad.contains_key(&(0, 1))
+            && p.lin.is_empty()
+            && a.is_some_and(|a| p.c == -a.clone())
+    })
+}
+
+/// The points of the unit circle where the conic `q(t0, t1) = 0`, from its rational points
+/// `((1 - s^2)/(1 + s^2), 2s/(1 + s^2))`: `(1 + s^2)^2 q` is a quartic in `s` with rational
+/// coefficients, its roots narrowed exactly to 40 digits (the points lie on the circle
+/// exactly); `s = infinity` is the point `(-1, 0)`.
+fn on_unit_circle(q: &Poly) -> Vec<[Q; 2]> {
+    let c = |k: (usize, usize)| q.quad.get(&k).cloned().unwrap_or_default();
+    let l = |k: usize| q.lin.get(&k).cloned().unwrap_or_default();
+    let (a, b, cc, d, e, f) = (c((0, 0)), c((0, 1)), c((1, 1)), l(0), l(1), q.c.clone());
+    let two = Q::from(2);
+    let four = Q::from(4);
+    let coeffs = [
+        &a + &d + &f,
+        &two * (&b + &e),
+        &four * &cc + &two * (&f - &a),
+        &two * (&e - &b),
+        &a - &d + &f,
+    ];
+    let mut points: Vec<[Q; 2]> = algebra::sign_change_roots(&coeffs, algebra::ROOT_DIGITS)
+        .into_iter()
+        .map(|s| {
+            let den = Q::ONE + &s * &s;
+            [(Q::ONE - &s * &s) / &den, &two * &s / &den]
+        })
+        .collect();
+    if coeffs[4].is_zero() {
+        points.push([-Q::ONE, Q::ZERO]);
+    }
+    points
+}
+
+/// The common real points of two conics `p(t0, t1) = 0 = q(t0, t1)`, one of them an ellipse (a
+/// unit direction is one): the ellipse walked around by its angle, sign changes of the other
+/// located by bisection (binary64; the roots are irrational in general).
+fn two_parameters(p: &Poly, q: &Poly) -> Result<Vec<Vec<Q>>, SolveError> {
+    let (ellipse, other) = if let Some(e) = Ellipse::of(p) {
+        (e, q)
+    } else if let Some(e) = Ellipse::of(q) {
+        (e, p)
+    } else {
+        return Err(SolveError::Unsupported(
+            "two free parameters whose equations are not an ellipse and a conic",
+        ));
+    };
+    let f = |s: f64| {
+        let t = ellipse.at(s);
+        eval_f64(other, &t)
+    };
+    const SAMPLES: usize = 4096;
+    let tau = std::f64::consts::TAU;
+    let mut roots: Vec<f64> = Vec::new();
+    let mut prev = f(0.0);
+    for i in 1..=SAMPLES {
+        let s1 = tau * i as f64 / SAMPLES as f64;
+        let s0 = tau * (i - 1) as f64 / SAMPLES as f64;
+        let cur = f(s1);
+        if prev == 0.0 {
+            roots.push(s0);
+        } else if prev.signum() != cur.signum() && cur != 0.0 {
+            let (mut lo, mut hi, mut flo) = (s0, s1, prev);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                let fm = f(mid);
+                if fm == 0.0 {
+                    lo = mid;
+                    hi = mid;
+                    break;
+                }
+                if fm.signum() == flo.signum() {
+                    lo = mid;
+                    flo = fm;
+                } else {
+                    hi = mid;
+                }
+            }
+            roots.push(0.5 * (lo + hi));
+        }
+        prev = cur;
+    }
+    Ok(roots
+        .into_iter()
+        .map(|s| ellipse.at(s).into_iter().map(from_f64).collect())
+        .collect())
+}
+
+fn eval_f64(p: &Poly, t: &[f64]) -> f64 {
+    let f = |q: &Q| to_f64(q).unwrap_or(0.0);
+    let mut s = f(&p.c);
+    for (i, a) in &p.lin {
+        s += f(a) * t[*i];
+    }
+    for ((i, j), b) in &p.quad {
+        s += f(b) * t[*i] * t[*j];
+    }
+    s
+}
+
+/// A real ellipse `p(t0, t1) = 0`, walked by an angle: centre, and the map from the unit
+/// circle (from the Cholesky factor of the quadratic part).
+struct Ellipse {
+    centre: [f64; 2],
+    /// `t = centre + L^-T (r cos s, r sin s)`.
+    map: [[f64; 2]; 2],
+}
+
+impl Ellipse {
+    fn of(p: &Poly) -> Option<Ellipse> {
+        let f = |q: Option<&Q>| q.and_then(to_f64).unwrap_or(0.0);
+        let (a, b, c) = (
+            f(p.quad.get(&(0, 0))),
+            f(p.quad.get(&(0, 1))) / 2.0,
+            f(p.quad.get(&(1, 1))),
+        );
+        let (d, e, g) = (f(p.lin.get(&0)), f(p.lin.get(&1)), f(Some(&p.c)));
+        // Positive (or negative) definite quadratic part.
+        let (a, b, c, d, e, g) = if a < 0.0 {
+            (-a, -b, -c, -d, -e, -g)
+        } else {
+            (a, b, c, d, e, g)
+        };
+        let det = a * c - b * b;
+        if !(a > 0.0 && det > 0.0) {
+            return None;
+        }
+        // Centre: [[a, b], [b, c]] x = -(d, e)/2.
+        let cx = (-d / 2.0 * c + e / 2.0 * b) / det;
+        let cy = (-e / 2.0 * a + d / 2.0 * b) / det;
+        // Value at the centre: p(c) = g + (d cx + e cy)/2; the ellipse is x^T A x = -p(c).
+        let k = -(g + (d * cx + e * cy) / 2.0);
+        if k <= 0.0 {
+            return None;
+        }
+        // A = L L^T, L = [[l11, 0], [l21, l22]]; x = L^-T (sqrt(k) (cos, sin)).
+        let l11 = a.sqrt();
+        let l21 = b / l11;
+        let l22 = (c - l21 * l21).sqrt();
+        let r = k.sqrt();
+        // L^-T = [[1/l11, -l21/(l11 l22)], [0, 1/l22]].
+        let map = [[r / l11, -r * l21 / (l11 * l22)], [0.0, r / l22]];
+        Some(Ellipse {
+            centre: [cx, cy],
+            map,
+        })
+    }
+
+    fn at(&self, s: f64) -> Vec<f64> {
+        let (c, sn) = (s.cos(), s.sin());
+        vec![
+            self.centre[0] + self.map[0][0] * c + self.map[0][1] * sn,
+            self.centre[1] + self.map[1][0] * c + self.map[1][1] * sn,
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rational::{int, ratio};
+
+    fn k(n: i64) -> Given<Q> {
+        Given::Known(int(n))
+    }
+
+    fn vk(v: &[i64]) -> Velocity {
+        Velocity::known(v.iter().map(|x| int(*x)).collect())
+    }
+
+    fn as_q(e: &Exact) -> Q {
+        e.rational().clone()
+    }
+
+    #[test]
+    fn smooth_disks_at_45_degrees() {
+        // m = 1, 1; v1 = (4, 0), v2 = 0; n = (1, 1): the normal part of v1 is (2, 2), passed
+        // to body 2 (equal masses, elastic); the tangential part (2, -2) stays.
+        let g = Statement {
+            dim: 2,
+            masses: vec![k(1), k(1)],
+            v_in: vec![vk(&[4, 0]), vk(&[0, 0])],
+            fin: vec![Velocity::unknown(2), Velocity::unknown(2)],
+            normal: Some(vec![int(1), int(1)]),
+            e: None,
+            inexact: false,
+        };
+        let s = solve(&g).unwrap();
+        assert_eq!(s.solutions.len(), 1);
+        let f = &s.solutions[0].fin;
+        assert_eq!(f[0].iter().map(as_q).collect::<Vec<_>>(), [int(2), int(-2)]);
+        assert_eq!(f[1].iter().map(as_q).collect::<Vec<_>>(), [int(2), int(2)]);
+        assert!(s.solutions[0].consistent());
+    }
+
+    #[test]
+    fn car_and_van_stick() {
+        // physics.md section 7: (9.375, 12.5) m/s.
+        let g = Statement {
+            dim: 2,
+            masses: vec![k(1500), k(2500)],
+            v_in: vec![vk(&[25, 0]), vk(&[0, 20])],
+            fin: vec![Velocity::unknown(2), Velocity::unknown(2)],
+            normal: None,
+            e: Some(k(0)),
+            inexact: false,
+        };
+        let s = solve(&g).unwrap();
+        let f = &s.solutions[0].fin;
+        assert_eq!(as_q(&f[0][0]), ratio(75, 8));
+        assert_eq!(as_q(&f[1][1]), ratio(25, 2));
+    }
+
+    #[test]
+    fn equal_masses_elastic_deflection_has_the_trivial_and_the_90_degree_solution() {
+        // v1 = (4, 0) on a body at rest; body 1 leaves along the unit (3/5, 4/5) at an unknown
+        // speed s. Energy: 16 = s^2 + |(4,0) - s u|^2 = 16 - 8 s (3/5) + 2 s^2, so s = 0 (no
+        // collision: body 1 keeps... nothing, body 2 takes all) or s = 12/5 = 4 cos(53.13 deg);
+        // body 2 gets (4, 0) - 12/5 (3/5, 4/5) = (64/25, -48/25), perpendicular to u.
+        let g = Statement {
+            dim: 2,
+            masses: vec![k(1), k(1)],
+            v_in: vec![vk(&[4, 0]), vk(&[0, 0])],
+            fin: vec![
+                Velocity::Speed {
+                    unit: vec![ratio(3, 5), ratio(4, 5)],
+                },
+                Velocity::unknown(2),
+            ],
+            normal: None,
+            e: Some(k(1)),
+            inexact: false,
+        };
+        let s = solve(&g).unwrap();
+        assert_eq!(s.solutions.len(), 2);
+        let mut speeds: Vec<Q> = s
+            .solutions
+            .iter()
+            .map(|x| as_q(&x.fin[0][0]) / ratio(3, 5))
+            .collect();
+        speeds.sort();
+        assert_eq!(speeds, vec![int(0), ratio(12, 5)]);
+        let moving = s
+            .solutions
+            .iter()
+            .find(|x| !x.fin[0][0].rational().is_zero())
+            .unwrap();
+        let f2 = &moving.fin[1];
+        assert_eq!(as_q(&f2[0]), int(4) - ratio(36, 25));
+        assert_eq!(as_q(&f2[1]), -ratio(48, 25));
+    }
+
+    #[test]
+    fn too_few_laws_say_how_many_values_are_missing() {
+        let g = Statement {
+            dim: 2,
+            masses: vec![k(1), k(1)],
+            v_in: vec![Velocity::unknown(2), vk(&[0, 0])],
+            fin: vec![Velocity::unknown(2), Velocity::unknown(2)],
+            normal: None,
+            e: Some(k(1)),
+            inexact: false,
+        };
+        let e = solve(&g).unwrap_err().to_string();
+        assert!(e.contains("6 unknowns"), "{e}");
+    }
+
+    #[test]
+    fn an_unknown_direction_is_found_on_its_circle() {
+        // Equal masses, elastic, body 2 at rest, v1 = (5, 0); body 1 leaves at speed 3 in an
+        // unknown direction: body 2's velocity is perpendicular with speed 4, so body 1 leaves
+        // at +-acos(3/5) = +-53.13 degrees: (9/5, +-12/5).
+        let g = Statement {
+            dim: 2,
+            masses: vec![k(1), k(1)],
+            v_in: vec![vk(&[5, 0]), vk(&[0, 0])],
+            fin: vec![Velocity::Direction { speed: int(3) }, Velocity::unknown(2)],
+            normal: None,
+            e: Some(k(1)),
+            inexact: false,
+        };
+        let s = solve(&g).unwrap();
+        assert_eq!(s.solutions.len(), 2);
+        for sol in &s.solutions {
+            let x = to_f64(sol.fin[0][0].rational()).unwrap();
+            let y = to_f64(sol.fin[0][1].rational()).unwrap();
+            assert!((x - 1.8).abs() < 1e-12, "{x}");
+            assert!((y.abs() - 2.4).abs() < 1e-12, "{y}");
+            assert!(sol.consistent(), "{:?}", sol.checks);
+        }
+    }
+}

@@ -1,0 +1,685 @@
+//! Collisions in the plane, in space and of N bodies (physics.md section 7), checked against
+//! values derived by hand (in the comments) and against exact rational arithmetic done here,
+//! independently of the solver: the impulse form `v1' = v1 - (1+e) m2/(m1+m2) (n.(v1-v2))/(n.n) n`.
+
+use crate::common;
+
+use collide::rational::{Q, from_f64, int, ratio, to_f64};
+use common::{collide, run, stdout};
+use proptest::prelude::*;
+use serde_json::Value;
+
+fn json(args: &[&str]) -> Value {
+    let mut a = vec!["solve"];
+    a.extend_from_slice(args);
+    a.extend(["--format", "json"]);
+    serde_json::from_str(&stdout(&a)).unwrap()
+}
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().unwrap()
+}
+
+fn vecs(v: &Value) -> Vec<Vec<f64>> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|b| b.as_array().unwrap().iter().map(f).collect())
+        .collect()
+}
+
+/// The smooth impact by hand, exactly: `J = (1+e) mu (n.(v1-v2)) / n.n`,
+/// `v1' = v1 - J/m1 n`, `v2' = v2 + J/m2 n`.
+fn impact(m: [Q; 2], v: [Vec<Q>; 2], n: &[Q], e: &Q) -> [Vec<Q>; 2] {
+    let dot = |a: &[Q], b: &[Q]| a.iter().zip(b).fold(Q::ZERO, |s, (x, y)| s + x * y);
+    let rel: Vec<Q> = v[0].iter().zip(&v[1]).map(|(a, b)| a - b).collect();
+    let mu = &m[0] * &m[1] / (&m[0] + &m[1]);
+    let j = (Q::ONE + e) * mu * dot(n, &rel) / dot(n, n);
+    [
+        v[0].iter()
+            .zip(n)
+            .map(|(x, nk)| x - &j / &m[0] * nk)
+            .collect(),
+        v[1].iter()
+            .zip(n)
+            .map(|(x, nk)| x + &j / &m[1] * nk)
+            .collect(),
+    ]
+}
+
+#[test]
+fn smooth_pucks_at_45_degrees_exactly() {
+    // n = (1, 1): body 1's normal part (2, 2) passes to body 2 (equal masses, elastic), its
+    // tangential part (2, -2) stays; crunch = 1/2 (1/2) (n.(v1 - v2))^2 / n.n = 16/8 = 2.
+    let j = json(&["-m", "1,1", "-v", "(4,0),0", "--normal", "(1,1)", "--exact"]);
+    assert_eq!(j["fin"], serde_json::json!([["2", "-2"], ["2", "2"]]));
+    assert_eq!(j["energy"]["crunch"], "2");
+    assert_eq!(j["energy"]["lost"], "0");
+    assert_eq!(j["impulse"], serde_json::json!(["2", "2"]));
+    assert_eq!(j["angle_between_deg"], 90.0);
+}
+
+#[test]
+fn car_and_van_stick_at_the_intersection() {
+    // physics.md section 7: 1500 kg at 25 m/s east, 2500 kg at 20 m/s north: P = (37500, 50000),
+    // V = P / 4000 = (9.375, 12.5) m/s, 15.625 m/s at atan(4/3) = 53.130102354156 degrees.
+    let j = json(&[
+        "-m",
+        "1500 kg,2500 kg",
+        "-v",
+        "25 m/s @ E,20 m/s @ N",
+        "-e",
+        "0",
+    ]);
+    assert_eq!(vecs(&j["fin"]), [[9.375, 12.5], [9.375, 12.5]]);
+    assert_eq!(f(&j["fin_speed"][0]), 15.625);
+    let angle = f(&j["fin_angle_deg"][0]);
+    assert!(
+        (angle - (4f64 / 3.0).atan().to_degrees()).abs() <= 1e-13,
+        "{angle}"
+    );
+    // KE lost = crunch = KE_IN - KE_COM = 968750 - 488281.25 J.
+    assert_eq!(f(&j["energy"]["lost"]), 480468.75);
+    assert_eq!(j["units"]["energy"], "J");
+}
+
+#[test]
+fn pucks_scattering_at_30_and_60_degrees() {
+    // Equal masses, body 2 at rest, v1 = 2 along x; after, body 1 at 30 degrees and body 2 at
+    // -60 degrees, speeds unknown: momentum gives s1 = 2 cos 30 = sqrt 3, s2 = 2 sin 30 = 1, and
+    // the energy is kept (the directions are perpendicular): an elastic collision.
+    let j = json(&[
+        "-m",
+        "0.5 kg,0.5 kg",
+        "-v",
+        "2 m/s @ 0deg,0",
+        "--fin",
+        "? @ 30deg,? @ -60deg",
+    ]);
+    let s = &j["solved"];
+    let v1 = vecs(&Value::Array(vec![s["v1'"].clone()]))[0].clone();
+    let speed = v1[0].hypot(v1[1]);
+    assert!(
+        (speed - 3f64.sqrt()).abs() <= 4.0 * f64::EPSILON * 2.0,
+        "{speed}"
+    );
+    assert!((f(&j["fin_speed"][1]) - 1.0).abs() <= 4.0 * f64::EPSILON);
+    assert!(
+        (f(&j["restitution"]) - 1.0).abs() <= 1e-12,
+        "{}",
+        j["restitution"]
+    );
+}
+
+#[test]
+fn an_unknown_direction_has_two_mirror_solutions() {
+    // Equal masses, elastic, v1 = (5, 0) on body 2 at rest; body 1 leaves at speed 3: body 2 at
+    // speed 4 perpendicular to it; body 1 at +-acos(3/5) = +-53.13 degrees, i.e. (9/5, +-12/5).
+    let j = json(&["-m", "1,1", "-v", "(5,0),0", "--fin", "3 @ ?,?", "-e", "1"]);
+    let sols = j["solutions"].as_array().unwrap();
+    assert_eq!(sols.len(), 2);
+    for s in sols {
+        let fin = vecs(&s["fin"]);
+        assert!((fin[0][0] - 1.8).abs() <= 2.0 * f64::EPSILON, "{fin:?}");
+        assert!(
+            (fin[0][1].abs() - 2.4).abs() <= 4.0 * f64::EPSILON,
+            "{fin:?}"
+        );
+        assert!((fin[1][0] - 3.2).abs() <= 4.0 * f64::EPSILON, "{fin:?}");
+        assert_eq!(s["energy"]["lost"], 0.0);
+    }
+    assert_eq!(
+        f(&sols[0]["fin"][0][1]).signum(),
+        -f(&sols[1]["fin"][0][1]).signum()
+    );
+}
+
+#[test]
+fn a_three_piece_explosion() {
+    // Pieces of 1, 2 and 3 kg from rest; two fly off at (2, 0) and (0, 1) m/s: the third has
+    // -(1 (2, 0) + 2 (0, 1)) / 3 = (-2/3, -2/3); released energy 1/2 (4 + 2 + 3 (8/9)) = 13/3 J.
+    let j = json(&[
+        "-m",
+        "1 kg,2 kg,3 kg",
+        "-v",
+        "0,0,0",
+        "--fin",
+        "(2,0) m/s,(0,1) m/s,?",
+        "--exact",
+    ]);
+    assert_eq!(j["solved"]["v3'"], serde_json::json!(["-2/3", "-2/3"]));
+    assert_eq!(j["energy"]["released"], "13/3");
+    assert!(j.get("restitution").is_none(), "e means nothing here: {j}");
+}
+
+#[test]
+fn n_bodies_on_a_line_stick() {
+    // 1, 2, 3 at 1, 0, -2: V = (1 - 6)/6 = -5/6; KE_IN = 1/2 (1 + 12) = 13/2, lost 13/2 - 25/12.
+    let j = json(&["-m", "1,2,3", "-v", "1,0,-2", "-e", "0", "--exact"]);
+    assert_eq!(j["fin"], serde_json::json!([["-5/6"], ["-5/6"], ["-5/6"]]));
+    assert_eq!(j["energy"]["lost"], "53/12");
+    assert_eq!(j["dim"], 1);
+}
+
+#[test]
+fn spheres_in_space() {
+    // m = 1, 3; v1 = (1, 2, 2), v2 = 0; n = (0, 0, 1), e = 1/2: only z changes;
+    // J = (3/2)(3/4)(2) = 9/4: v1'z = 2 - 9/4 = -1/4, v2'z = 9/4 / 3 = 3/4.
+    let j = json(&[
+        "-m",
+        "1,3",
+        "-v",
+        "(1,2,2),0",
+        "--normal",
+        "(0,0,1)",
+        "-e",
+        "1/2",
+        "--exact",
+    ]);
+    assert_eq!(
+        j["fin"],
+        serde_json::json!([["1", "2", "-1/4"], ["0", "0", "3/4"]])
+    );
+    assert_eq!(j["dim"], 3);
+}
+
+#[test]
+fn geometry_of_smooth_disks() {
+    // R1 + R2 = 5, b = 3: sin(phi) = 3/5, n along (4, 3) for v1 = (2, 0); equal masses,
+    // elastic: v2' = (n.v1) n / |n|^2 = (8/25)(4, 3) = (32/25, 24/25), v1' = (18/25, -24/25).
+    let j = json(&[
+        "-m",
+        "1,1",
+        "-v",
+        "(2,0),0",
+        "--radii",
+        "2,3",
+        "--impact-parameter",
+        "3",
+        "--exact",
+    ]);
+    assert_eq!(
+        j["fin"],
+        serde_json::json!([["18/25", "-24/25"], ["32/25", "24/25"]])
+    );
+    let (code, _, err) = run(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(2,0),0",
+        "--radii",
+        "2,3",
+        "--impact-parameter",
+        "6",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("miss"), "{err}");
+}
+
+#[test]
+fn bad_planar_input_is_named() {
+    for (args, needle) in [
+        (
+            vec!["-m", "1,1", "-v", "(1,2),(1,2,3)"],
+            "2-vectors and 3-vectors",
+        ),
+        (vec!["-m", "1,1,1", "-v", "(1,2),0"], "give one per body"),
+        (
+            vec!["-m", "1,1", "-v", "(1,0),0", "--normal", "(1,0,0)"],
+            "3 components",
+        ),
+        (
+            vec!["-m", "1,1", "-v", "(1,0),0", "--normal", "(0,0)"],
+            "no direction",
+        ),
+        (
+            vec!["-m", "1,1", "-v", "(1,0),0", "-e", "0.5"],
+            "give --normal",
+        ),
+        (
+            vec![
+                "-m",
+                "1,1",
+                "-v",
+                "6 @ 30deg,0",
+                "--normal",
+                "(1,0)",
+                "--exact",
+            ],
+            "irrational",
+        ),
+        (vec!["-m", "1,1", "-v", "?,0", "--fin", "?,?"], "unknowns"),
+        (
+            vec![
+                "-m", "1,1", "-v", "(1,0),0", "--normal", "(1,0)", "--frame", "(1,2,3)",
+            ],
+            "3 component",
+        ),
+        (vec!["-m", "1,1", "-v", "3 @ 30,0"], "give its unit"),
+    ] {
+        let mut a = vec!["solve"];
+        a.extend(args.iter());
+        let (code, out, err) = run(&a);
+        assert_eq!(code, 2, "{a:?}: {out}");
+        assert!(out.is_empty(), "{a:?}: {out}");
+        assert!(err.contains(needle), "{a:?}: {err}");
+    }
+}
+
+#[test]
+fn contradicting_final_velocities_exit_1() {
+    // Momentum in y: 0 before, 1 after.
+    let (code, out, _) = run(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),0",
+        "--fin",
+        "(2,-2),(2,3)",
+    ]);
+    assert_eq!(code, 1);
+    assert!(out.contains("momentum (y) does NOT hold"), "{out}");
+}
+
+#[test]
+fn text_fits_80_columns() {
+    for args in [
+        vec!["-m", "1,1", "-v", "(4,0),0", "--normal", "30deg"],
+        vec![
+            "-m",
+            "1,3",
+            "-v",
+            "(1.5,2.25,3),0",
+            "--normal",
+            "(1,2,2)",
+            "--show",
+            "all",
+        ],
+        vec!["-m", "1,1", "-v", "(5,0),0", "--fin", "3 @ ?,?", "-e", "1"],
+    ] {
+        let mut a = vec!["solve"];
+        a.extend(args.iter());
+        let out = stdout(&a);
+        for line in out.lines() {
+            assert!(line.chars().count() <= 80, "{a:?}: {line}");
+        }
+    }
+}
+
+/// A random rational that binary64 holds exactly (an integer over a power of two).
+fn dyadic() -> impl Strategy<Value = (i64, u32)> {
+    (-2000i64..2000, 0u32..6)
+}
+
+fn q_of((n, k): (i64, u32)) -> Q {
+    ratio(n, 1 << k)
+}
+
+fn text_of(x: (i64, u32)) -> String {
+    format!("{}", to_f64(&q_of(x)).unwrap())
+}
+
+proptest! {
+    #![proptest_config(common::proptest_config(96))]
+
+    /// For inputs binary64 holds exactly, the binary64 output is the correctly rounded exact
+    /// impulse form computed here (0 ulps), and the output on the x-axis is the 1D solver's,
+    /// bit for bit.
+    #[test]
+    fn binary64_is_the_exact_impulse_form_rounded(
+        m1 in 1i64..50, m2 in 1i64..50,
+        v in proptest::collection::vec(dyadic(), 4),
+        n in proptest::collection::vec(-9i64..10, 2),
+        e in 0i64..=4,
+    ) {
+        prop_assume!(n.iter().any(|x| *x != 0));
+        let e_q = ratio(e, 4);
+        let vt: Vec<String> = v.iter().map(|x| text_of(*x)).collect();
+        let vel = format!("({},{}),({},{})", vt[0], vt[1], vt[2], vt[3]);
+        let normal = format!("({},{})", n[0], n[1]);
+        let masses = format!("{m1},{m2}");
+        let et = format!("{e}/4");
+        let j = json(&["-m", &masses, "-v", &vel, "--normal", &normal, "-e", &et]);
+        let approach = int(n[0]) * (q_of(v[0]) - q_of(v[2])) + int(n[1]) * (q_of(v[1]) - q_of(v[3]));
+        if approach <= Q::ZERO {
+            // They do not meet along n: no FIN (the note alone).
+            prop_assert_eq!(&j["approaching"], &Value::Bool(false));
+            prop_assert!(j.get("fin").is_none());
+            return Ok(());
+        }
+        let expect = impact(
+            [int(m1), int(m2)],
+            [vec![q_of(v[0]), q_of(v[1])], vec![q_of(v[2]), q_of(v[3])]],
+            &[int(n[0]), int(n[1])],
+            &e_q,
+        );
+        let got = vecs(&j["fin"]);
+        for b in 0..2 {
+            for k in 0..2 {
+                prop_assert_eq!(got[b][k], to_f64(&expect[b][k]).unwrap(), "body {} comp {}", b, k);
+            }
+        }
+        // On the x-axis: the same as `collide solve` on a line (when they approach along x).
+        if q_of(v[0]) <= q_of(v[2]) {
+            return Ok(());
+        }
+        let line = format!("{},{}", vt[0], vt[2]);
+        let flat = format!("({},0),({},0)", vt[0], vt[2]);
+        let one: Value = serde_json::from_str(&stdout(&["solve", "-m", &masses, "-v", &line, "-e", &et, "--format", "json"])).unwrap();
+        let two = json(&["-m", &masses, "-v", &flat, "--normal", "(1,0)", "-e", &et]);
+        prop_assert_eq!(f(&one["fin"][0]), f(&two["fin"][0][0]));
+        prop_assert_eq!(f(&one["fin"][1]), f(&two["fin"][1][0]));
+        prop_assert_eq!(f(&one["energy"]["crunch"]), f(&two["energy"]["crunch"]));
+    }
+
+    /// Metamorphic: swapping the bodies (and turning n around) swaps the answer; a Galilean
+    /// boost shifts every final velocity by the boost and keeps the crunch; a quarter turn of
+    /// every vector turns the answer.
+    #[test]
+    fn swaps_boosts_and_turns(
+        m1 in 1i64..20, m2 in 1i64..20,
+        v in proptest::collection::vec(-50i64..50, 4),
+        n in proptest::collection::vec(-5i64..6, 2),
+        w in proptest::collection::vec(-100i64..100, 2),
+    ) {
+        prop_assume!(n.iter().any(|x| *x != 0));
+        // They approach along n (else there is no collision to compare).
+        prop_assume!(n[0] * (v[0] - v[2]) + n[1] * (v[1] - v[3]) > 0);
+        let solve = |m: String, vel: String, nrm: String| {
+            json(&["-m", &m, "-v", &vel, "--normal", &nrm, "-e", "1/3", "--exact"])
+        };
+        let base = solve(
+            format!("{m1},{m2}"),
+            format!("({},{}),({},{})", v[0], v[1], v[2], v[3]),
+            format!("({},{})", n[0], n[1]),
+        );
+        let swapped = solve(
+            format!("{m2},{m1}"),
+            format!("({},{}),({},{})", v[2], v[3], v[0], v[1]),
+            format!("({},{})", -n[0], -n[1]),
+        );
+        prop_assert_eq!(&base["fin"][0], &swapped["fin"][1]);
+        prop_assert_eq!(&base["fin"][1], &swapped["fin"][0]);
+        prop_assert_eq!(&base["energy"]["crunch"], &swapped["energy"]["crunch"]);
+        let boosted = solve(
+            format!("{m1},{m2}"),
+            format!("({},{}),({},{})", v[0] + w[0], v[1] + w[1], v[2] + w[0], v[3] + w[1]),
+            format!("({},{})", n[0], n[1]),
+        );
+        let q = |x: &Value| -> Q { x.as_str().unwrap().parse::<collide::number::Number>().unwrap().exact() };
+        for b in 0..2 {
+            for k in 0..2 {
+                prop_assert_eq!(q(&boosted["fin"][b][k]), q(&base["fin"][b][k]) + int(w[k]));
+            }
+        }
+        prop_assert_eq!(&boosted["energy"]["crunch"], &base["energy"]["crunch"]);
+        prop_assert_eq!(&boosted["energy"]["lost"], &base["energy"]["lost"]);
+        // (x, y) -> (-y, x) on every vector.
+        let turned = solve(
+            format!("{m1},{m2}"),
+            format!("({},{}),({},{})", -v[1], v[0], -v[3], v[2]),
+            format!("({},{})", -n[1], n[0]),
+        );
+        for b in 0..2 {
+            prop_assert_eq!(q(&turned["fin"][b][0]), -q(&base["fin"][b][1]));
+            prop_assert_eq!(q(&turned["fin"][b][1]), q(&base["fin"][b][0]));
+        }
+    }
+}
+
+#[test]
+fn lost_is_one_minus_e_squared_times_crunch() {
+    // physics.md section 7: lost = (1 - e^2) crunch, exactly, for a rational line of impact.
+    let j = json(&[
+        "-m",
+        "2,5",
+        "-v",
+        "(3,-1),(-2,4)",
+        "--normal",
+        "(2,-3)",
+        "-e",
+        "2/5",
+        "--exact",
+    ]);
+    let q = |x: &Value| {
+        x.as_str()
+            .unwrap()
+            .parse::<collide::number::Number>()
+            .unwrap()
+            .exact()
+    };
+    let crunch = q(&j["energy"]["crunch"]);
+    let lost = q(&j["energy"]["lost"]);
+    assert_eq!(lost, (Q::ONE - ratio(4, 25)) * crunch.clone());
+    // crunch = 1/2 mu (n.(v1 - v2))^2 / n.n: mu = 10/7, n.(5, -5) = 25, n.n = 13.
+    assert_eq!(crunch, ratio(1, 2) * ratio(10, 7) * int(625) / int(13));
+    let _ = from_f64(0.0);
+}
+
+#[test]
+fn the_plane_picture_draws_every_arrow_inside() {
+    let svg = stdout(&[
+        "plot",
+        "-m",
+        "1,2",
+        "-v",
+        "(3,1),(-1,2)",
+        "--normal",
+        "(1,1)",
+    ]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let root = doc.root_element();
+    let view: Vec<f64> = root
+        .attribute("viewBox")
+        .unwrap()
+        .split(' ')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let mut lines = 0;
+    for node in doc.descendants().filter(|n| n.has_tag_name("line")) {
+        for (a, b) in [("x1", "y1"), ("x2", "y2")] {
+            let x: f64 = node.attribute(a).unwrap().parse().unwrap();
+            let y: f64 = node.attribute(b).unwrap().parse().unwrap();
+            assert!(x >= view[0] && x <= view[0] + view[2], "{x}");
+            assert!(y >= view[1] && y <= view[1] + view[3], "{y}");
+        }
+        lines += 1;
+    }
+    assert!(lines >= 8, "{lines}");
+    // Body 1 leaves along v1' (drawn with y down): its slope is v1'y / v1'x.
+    let j = json(&["-m", "1,2", "-v", "(3,1),(-1,2)", "--normal", "(1,1)"]);
+    let fin = vecs(&j["fin"]);
+    let arrow = doc
+        .descendants()
+        .find(|n| n.attribute("id") == Some("path-fin-1"))
+        .unwrap();
+    let g = |k: &str| -> f64 { arrow.attribute(k).unwrap().parse().unwrap() };
+    let (dx, dy) = (g("x2") - g("x1"), g("y1") - g("y2"));
+    let drawn = dy.atan2(dx);
+    let true_angle = fin[0][1].atan2(fin[0][0]);
+    assert!((drawn - true_angle).abs() < 0.01, "{drawn} vs {true_angle}");
+    let _ = collide();
+}
+
+#[test]
+fn the_reversed_event_is_a_collision_with_restitution_one_over_e() {
+    // Solving the reversed IN with e' = 1/e along the same line gives the reversed FIN exactly,
+    // and reversing that again gives the original (t -> -t twice is the identity).
+    let j = json(&[
+        "-m",
+        "2,3",
+        "-v",
+        "(5,1),(-1,2)",
+        "--normal",
+        "(3,1)",
+        "-e",
+        "2/5",
+        "--exact",
+        "--reverse",
+    ]);
+    let r = &j["reverse"];
+    assert_eq!(r["restitution"], "5/2");
+    let vec_text = |b: &Value| {
+        let c: Vec<&str> = b
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_str().unwrap())
+            .collect();
+        format!("({})", c.join(","))
+    };
+    let vin = format!("{},{}", vec_text(&r["in"][0]), vec_text(&r["in"][1]));
+    let again = json(&[
+        "-m",
+        "2,3",
+        "-v",
+        &vin,
+        "--normal",
+        "(3,1)",
+        "-e",
+        "5/2",
+        "--exact",
+        "--reverse",
+    ]);
+    assert_eq!(again["fin"], r["fin"]);
+    assert_eq!(again["reverse"]["in"], j["in"]);
+    assert_eq!(again["reverse"]["fin"], j["fin"]);
+}
+
+#[test]
+fn frames_in_the_plane_agree_with_solve_seen_from_each_frame() {
+    // Every frame's FIN is the lab FIN less the observer's w, as `solve --frame` prints it; the
+    // crunch and lost energy are the same in every frame; in the COM frame momentum is 0.
+    let q = |x: &Value| {
+        x.as_str()
+            .unwrap()
+            .parse::<collide::number::Number>()
+            .unwrap()
+            .exact()
+    };
+    let flat = |v: &Value| -> Vec<Q> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|b| b.as_array().unwrap().iter().map(q))
+            .collect()
+    };
+    let case = [
+        "-m",
+        "1,2",
+        "-v",
+        "(4,1),(-1,2)",
+        "--normal",
+        "(1,1)",
+        "--exact",
+    ];
+    let mut args = vec!["frames"];
+    args.extend(case);
+    args.extend(["--format", "json", "--reverse", "-e", "1"]);
+    let t: Value = serde_json::from_str(&stdout(&args)).unwrap();
+    let frames = t["frames"].as_array().unwrap();
+    let words = [
+        "lab",
+        "rest-in:1",
+        "rest-in:2",
+        "com",
+        "rest-fin:1",
+        "rest-fin:2",
+    ];
+    assert_eq!(frames.len(), words.len());
+    for (f, word) in frames.iter().zip(words) {
+        let mut a = case.to_vec();
+        a.extend(["-e", "1", "--frame", word]);
+        let s = json(&a);
+        assert_eq!(s["fin"], f["fin"], "{word}");
+        assert_eq!(s["in"], f["in"], "{word}");
+        // The reversed event (IN' = -FIN, FIN' = -IN) is the same event only where -FIN = IN:
+        // with tangential motion, in no frame (the rail's COM rule needs a head-on impact).
+        let neg: Vec<Q> = flat(&f["fin"]).into_iter().map(|x| -x).collect();
+        assert!(neg != flat(&f["in"]), "{word}");
+        assert_eq!(f["reverse_equals_original"], Value::Bool(false), "{word}");
+    }
+    let com = &frames[3];
+    for k in 0..2 {
+        let p = q(&com["in"][0][k]) + q(&com["in"][1][k]) * int(2);
+        assert_eq!(p, Q::ZERO, "COM momentum, component {k}");
+    }
+    // crunch = 1/2 mu (n.(v1 - v2))^2 / n.n = 1/2 (2/3) (5 - 1)^2 / 2 = 8/3.
+    assert_eq!(t["invariants"]["crunch"], "8/3");
+    assert_eq!(t["invariants"]["lost"], "0");
+    // Head-on (no tangential motion): the COM frame's reverse is the event itself.
+    let t: Value = serde_json::from_str(&stdout(&[
+        "frames",
+        "-m",
+        "1,2",
+        "-v",
+        "(4,4),(-1,-1)",
+        "--normal",
+        "(1,1)",
+        "--exact",
+        "--format",
+        "json",
+        "--reverse",
+    ]))
+    .unwrap();
+    for f in t["frames"].as_array().unwrap() {
+        assert_eq!(
+            f["reverse_equals_original"],
+            Value::Bool(f["name"] == "COM"),
+            "{}",
+            f["name"]
+        );
+    }
+}
+
+#[test]
+fn planar_scenes_check_their_hand_derived_numbers() {
+    let mut files: Vec<String> = std::fs::read_dir("scenarios")
+        .unwrap()
+        .map(|e| e.unwrap().path().display().to_string())
+        .filter(|p| p.contains("/plane-") && p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 5, "{files:?}");
+    let mut args = vec!["scene"];
+    args.extend(files.iter().map(String::as_str));
+    args.extend(["--format", "json"]);
+    let all: Value = serde_json::from_str(&stdout(&args)).unwrap();
+    for s in all.as_array().unwrap() {
+        assert_eq!(s["failed"], serde_json::json!([]), "{}", s["scene"]);
+        assert!(s["checks"].as_u64().unwrap() >= 2, "{}", s["scene"]);
+    }
+}
+
+#[test]
+fn planar_scene_errors_name_file_and_line() {
+    let dir = std::env::temp_dir().join(format!("collide-plane-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (body, needle) in [
+        (
+            "masses = [1, 1]\nvelocities = [[4, 0], 0]\nnormal = [1, 1]\nnorml = 3\n",
+            ":4:1: unknown field `norml`",
+        ),
+        (
+            "masses = [1, 1]\nvelocities = [[4, \"x\"], 0]\nnormal = [1, 1]\n",
+            ":2:14: velocities: '(4,x)': component 'x' is not a number",
+        ),
+        (
+            "masses = [1, 1, 1]\nvelocities = [[4, 0], 0]\nrestitution = 0\n",
+            "give one per body",
+        ),
+        (
+            "masses = [1, 1]\nvelocities = [[4, 0], 0]\nnormal = [1, 1]\n[expect]\nfinn = 3\n",
+            ":5:8: [expect] \"finn\": unknown quantity 'finn'",
+        ),
+    ] {
+        let path = dir.join("bad.toml");
+        std::fs::write(&path, body).unwrap();
+        let (code, out, err) = run(&["scene", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{body}: {out}");
+        assert!(err.contains(needle), "{body}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
