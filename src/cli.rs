@@ -146,6 +146,14 @@ pub enum Command {
         mut_args(no_unknowns)
     )]
     Plot(PlotArgs),
+    /// Write the lecture's simulators as one web page that opens from disk: the velocity plane
+    /// and space-time diagrams of a case, and a superball stack, computed by collide itself
+    #[command(after_help = "Examples:
+  collide view -o case-a.html
+  collide view -m 6,1 -v 3,-4 -e 2/3 --frame com -o fig-2-3.html
+  collide view scenarios/superball-3.toml -o stack.html
+  collide view track -m 1,0.01 -x 1.5,2.25 -v 0,0 --sizes 1,0.5 --left-wall 0 --gravity 9.81")]
+    View(ViewArgs),
     /// Print a shell completion script (bash, zsh, fish, powershell, elvish)
     #[command(after_help = "Examples:
   collide completions bash > ~/.local/share/bash-completion/completions/collide
@@ -221,6 +229,79 @@ pub struct PlotArgs {
     pub term: bool,
 }
 
+/// `collide view`: the case as typed (the page's inputs hold text; they are checked by the same
+/// parsers as `solve`'s when the page is made), a scene, or a track layout.
+#[derive(Args, Debug)]
+#[command(args_conflicts_with_subcommands = true)]
+pub struct ViewArgs {
+    #[command(subcommand)]
+    pub track: Option<ViewTrack>,
+
+    /// A scene file to open with: a two-body case, or a [track] for the stack
+    #[arg(value_name = "SCENE.toml", value_hint = clap::ValueHint::FilePath,
+          conflicts_with_all = ["masses", "inertia", "velocities", "restitution"])]
+    pub scene: Option<PathBuf>,
+
+    /// Masses M1,M2, as for solve [default with no case: 4,1, lecture Fig. 1.3]
+    #[arg(
+        short,
+        long,
+        value_name = "M1,M2",
+        allow_hyphen_values = true,
+        conflicts_with = "inertia",
+        requires = "velocities"
+    )]
+    pub masses: Option<String>,
+
+    /// A general symmetric positive definite inertia tensor instead of masses
+    #[arg(
+        long,
+        value_name = "M11,M12;M21,M22",
+        allow_hyphen_values = true,
+        requires = "velocities"
+    )]
+    pub inertia: Option<String>,
+
+    /// Initial velocities V1,V2 [default with no case: 60,10]
+    #[arg(short, long, value_name = "V1,V2", allow_hyphen_values = true)]
+    pub velocities: Option<String>,
+
+    /// Coefficient of restitution e >= 0 [default: elastic]
+    #[arg(short = 'e', long, value_name = "E", allow_hyphen_values = true)]
+    pub restitution: Option<String>,
+
+    /// The frame the page opens in: lab, com, rest-in:1, ..., or an observer velocity
+    #[arg(long, default_value = "lab", allow_hyphen_values = true)]
+    pub frame: Frame,
+
+    /// Also show the time-reversed collision
+    #[arg(long)]
+    pub reverse: bool,
+
+    /// Write the page to FILE (atomically) [default: stdout]
+    #[arg(short, long, value_name = "FILE.html", global = true)]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum ViewTrack {
+    /// Open with this track layout for the stack (the flags of `collide track`)
+    Track(ViewTrackArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct ViewTrackArgs {
+    #[command(flatten)]
+    pub layout: LayoutArgs,
+
+    #[command(flatten)]
+    pub rules: TrackRules,
+
+    /// How long the page runs the stack [default: 8 times the first collision's time]
+    #[arg(long, value_name = "T")]
+    pub until: Option<Number>,
+}
+
 #[derive(Args, Debug)]
 pub struct PiArgs {
     /// Digits after the 3: the mass ratio is 100^N (0 to 10,000)
@@ -274,11 +355,9 @@ pub struct LayoutArgs {
     pub right_wall: Option<Number>,
 }
 
+/// What happens on a track besides its bodies: restitutions and gravity (`track`, `view track`).
 #[derive(Args, Debug)]
-pub struct TrackArgs {
-    #[command(flatten)]
-    pub layout: LayoutArgs,
-
+pub struct TrackRules {
     /// Restitution between bodies: a number in [0, 1], 'elastic' or 'inelastic'
     #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
           value_parser = Restitution::parse_dissipative)]
@@ -291,6 +370,15 @@ pub struct TrackArgs {
     /// Uniform acceleration toward the left (the left wall is a floor, positions are heights)
     #[arg(long, value_name = "G", default_value = "0")]
     pub gravity: Number,
+}
+
+#[derive(Args, Debug)]
+pub struct TrackArgs {
+    #[command(flatten)]
+    pub layout: LayoutArgs,
+
+    #[command(flatten)]
+    pub rules: TrackRules,
 
     /// Give the state at this time (>= 0): collisions up to it, free flight after the last one
     #[arg(long, value_name = "T", allow_hyphen_values = true)]

@@ -10,10 +10,13 @@
 //! 4. how it is computed: `solver` (the `Solver` trait, `binary64`, `exact`);
 //! 5. computations beyond one solve: `accuracy`, `expect`, `table`, `track`, `contact` (which
 //!    runs `track` as its impulse model);
-//! 6. what is printed: `report`, `plot`;
+//! 6. what is printed: `report`, `plot`, `view` (the web page's requests and answers);
 //! 7. files: `scene`.
 //!
-//! The binary (`src/main.rs`, `src/cli.rs`, `src/commands/`) sits on top.
+//! The binary (`src/main.rs`, `src/cli.rs`, `src/commands/`) sits on top. The feature `cli`
+//! (default) adds what only the command line needs (`output`, `accuracy`, `contact`, `expect`,
+//! `table`, `plot`, `scene` and their crates); without it the library is the part that `wasm/`
+//! compiles to WebAssembly for `collide view`.
 //!
 //! ```
 //! use collide::{case::{Case, parse_masses, parse_velocities}, inertia::InertiaTensor};
@@ -27,6 +30,7 @@
 // 1. values
 pub mod compensated;
 pub mod number;
+#[cfg(feature = "cli")]
 pub mod output;
 pub mod quantity;
 pub mod rational;
@@ -55,15 +59,22 @@ pub mod space;
 pub mod solver;
 
 // 5. computations beyond one solve
+#[cfg(feature = "cli")]
 pub mod accuracy;
+#[cfg(feature = "cli")]
 pub mod contact;
+#[cfg(feature = "cli")]
 pub mod expect;
+#[cfg(feature = "cli")]
 pub mod table;
 pub mod track;
 
 // 6. what is printed
+#[cfg(feature = "cli")]
 pub mod plot;
 pub mod report;
+pub mod view;
 
 // 7. files
+#[cfg(feature = "cli")]
 pub mod scene;

@@ -14,6 +14,7 @@ mod solve;
 mod space_solve;
 mod table;
 mod track;
+mod view;
 
 use anyhow::Result;
 use collide::case::Case;
@@ -50,6 +51,7 @@ pub fn run(command: Command) -> Result<Outcome> {
         Command::Pi(args) => pi::run(args),
         Command::Contact(args) => contact::run(args),
         Command::Plot(args) => plot::run(args),
+        Command::View(args) => view::run(args),
         Command::Completions { shell } => shell::completions(shell),
         Command::Man => shell::man(),
     }

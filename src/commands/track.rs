@@ -14,14 +14,14 @@ use crate::cli::{Format, TrackArgs};
 
 pub fn run(args: TrackArgs) -> Result<Outcome> {
     let bodies = args.layout.bodies()?;
-    let e = args.restitution.value();
+    let e = args.rules.restitution.value();
     let track = Track {
         bodies,
         left_wall: args.layout.left_wall.map(|x| x.value()),
         right_wall: args.layout.right_wall.map(|x| x.value()),
         e,
-        e_wall: args.wall_restitution.map_or(e, |r| r.value()),
-        gravity: args.gravity.value(),
+        e_wall: args.rules.wall_restitution.map_or(e, |r| r.value()),
+        gravity: args.rules.gravity.value(),
     };
     track.check()?;
     let limits = Limits {

@@ -2,11 +2,14 @@
 //! only when asked for, as one serializable structure that the text and JSON formats render;
 //! and the renderers of the other commands' results (frames, tables of methods, tracks, scenes).
 
+#[cfg(feature = "cli")]
 pub mod accuracy;
+#[cfg(feature = "cli")]
 pub mod contact;
 pub mod frames;
 pub mod json;
 pub mod pi;
+#[cfg(feature = "cli")]
 pub mod scene;
 pub mod separation;
 pub mod solved;
@@ -31,9 +34,8 @@ use crate::solver::{Lab, Solver};
 use crate::unknowns::Solved;
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
-#[derive(
-    Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize, clap::ValueEnum,
-)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 #[serde(rename_all = "kebab-case")]
 pub enum Section {
     /// IN, COM and FIN vectors and V_COM

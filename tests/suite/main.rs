@@ -22,4 +22,5 @@ mod resources;
 mod shell;
 mod tables;
 mod track;
+mod view;
 mod width;

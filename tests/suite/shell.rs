@@ -9,7 +9,7 @@ use crate::readme::{Sandbox, Shown};
 
 use common::{collide, stdout};
 
-const SUBCOMMANDS: [&str; 12] = [
+const SUBCOMMANDS: [&str; 13] = [
     "solve",
     "scene",
     "accuracy",
@@ -20,6 +20,7 @@ const SUBCOMMANDS: [&str; 12] = [
     "contact",
     "pi",
     "plot",
+    "view",
     "completions",
     "man",
 ];

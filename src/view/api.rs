@@ -1,0 +1,55 @@
+//! The page's one question to the physics: a request as JSON text, an answer as JSON text. The
+//! WebAssembly module (`wasm/`) exports exactly this; natively it is an ordinary function, which
+//! the tests call to compare the page's answers with the command line's.
+//!
+//! Requests are tagged by `op`: `{"op": "solve", "m1": "4", "m2": "1", "v1": "60", "v2": "10",
+//! "e": "2/3", "frame": "com", "reverse": false}` (a `two_body::CaseInput`), or `{"op":
+//! "track", "masses": "1,0.01", ...}` (a `stack::TrackInput`). Answers are `{"ok": true, ...}`
+//! with the result's fields, or `{"ok": false, "field": "m1", "error": "..."}`.
+
+use serde::{Deserialize, Serialize};
+
+use super::InputError;
+use super::stack::TrackInput;
+use super::two_body::CaseInput;
+
+/// What the page asks.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(tag = "op", rename_all = "kebab-case")]
+pub enum Request {
+    /// One collision: the velocity plane and the dual panel.
+    Solve(CaseInput),
+    /// Bodies on a track, under gravity: the superball stack.
+    Track(TrackInput),
+}
+
+/// The answer to `request` (JSON text), as JSON text.
+pub fn call(request: &str) -> String {
+    let answer = match serde_json::from_str::<Request>(request) {
+        Ok(r) => answer(&r),
+        Err(e) => failure(&InputError::new("request", format!("bad request: {e}"))),
+    };
+    serde_json::to_string(&answer).expect("answers serialize")
+}
+
+/// The answer to a request, as a JSON value.
+pub fn answer(request: &Request) -> serde_json::Value {
+    let result = match request {
+        Request::Solve(c) => c.solve().map(serde_json::to_value),
+        Request::Track(t) => t.run().map(serde_json::to_value),
+    };
+    match result {
+        Ok(Ok(mut v)) => {
+            if let Some(o) = v.as_object_mut() {
+                o.insert("ok".into(), true.into());
+            }
+            v
+        }
+        Ok(Err(e)) => failure(&InputError::new("request", e)),
+        Err(e) => failure(&e),
+    }
+}
+
+fn failure(e: &InputError) -> serde_json::Value {
+    serde_json::json!({"ok": false, "field": e.field, "error": e.error})
+}

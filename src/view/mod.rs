@@ -1,0 +1,41 @@
+//! `collide view`: one HTML page with the lecture's simulators, whose numbers come from this
+//! library compiled to WebAssembly (the crate `wasm/`); the page's JavaScript only draws and
+//! handles input.
+//!
+//! - `api`: what the page asks and what it is answered, as JSON text in and out (the one entry
+//!   point of the WebAssembly module, and callable natively, which the tests do);
+//! - `two_body`: a collision for the velocity plane and the dual panel: the same report JSON as
+//!   `collide solve --format json`, and the geometry to draw;
+//! - `stack`: a track under gravity (the superball stack) for the animation: the run, its
+//!   motion sampled in time, the velocity amplification;
+//! - `shell`: the `collide` command line and the scene TOML of what is on screen;
+//! - `page` (feature `cli`): the self-contained page, with the module embedded.
+//!
+//! The plane (issue 25) will be a third kind of request beside `solve` and `track`, answered by
+//! its own module here, and a third panel of the page.
+
+pub mod api;
+#[cfg(feature = "cli")]
+pub mod page;
+pub mod shell;
+pub mod stack;
+pub mod two_body;
+
+use serde::Serialize;
+
+/// A bad input, with the page's field it is in (`m1`, `v2`, `e`, `masses`, `gravity`, ...) and
+/// the message the command line would give.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct InputError {
+    pub field: &'static str,
+    pub error: String,
+}
+
+impl InputError {
+    pub fn new(field: &'static str, error: impl std::fmt::Display) -> InputError {
+        InputError {
+            field,
+            error: error.to_string(),
+        }
+    }
+}

@@ -1,0 +1,219 @@
+//! The page of `collide view`: one HTML file with its style, its script and the WebAssembly
+//! module inside (zlib-compressed, base64), so it opens from disk with no network at all. The
+//! answers to the first case and layout are computed here, natively, and written into the page,
+//! so it shows its numbers before (and without) the module; the page recomputes them with the
+//! module and reports any difference on the console. The same setup gives the same bytes.
+
+use serde::Serialize;
+
+use super::InputError;
+use super::api::{Request, answer};
+use super::stack::TrackInput;
+use super::two_body::CaseInput;
+
+const TEMPLATE: &str = include_str!("assets/page.html");
+const STYLE: &str = include_str!("assets/page.css");
+const SCRIPT: &str = include_str!("assets/page.js");
+
+/// The library without its command line, compiled to `wasm32-unknown-unknown` by
+/// `wasm/build.sh` and committed; `tests/suite/view.rs` checks that rebuilding it gives these
+/// bytes.
+pub const MODULE: &[u8] = include_bytes!("../../wasm/collide_view.wasm");
+
+/// What the page opens with.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Setup {
+    pub case: CaseInput,
+    pub track: TrackInput,
+    /// The part shown first: `two-body` or `stack`.
+    pub focus: Focus,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Focus {
+    TwoBody,
+    Stack,
+}
+
+impl Setup {
+    /// Lecture Fig. 1.3 (a 4-ton SUV at 60 rear-ends a 1-ton VW at 10, elastic) and the
+    /// 2-ball superball stack dropped from rest 1 m above the floor.
+    pub fn lecture() -> Setup {
+        Setup {
+            case: CaseInput {
+                m1: "4".into(),
+                m2: "1".into(),
+                inertia: None,
+                v1: "60".into(),
+                v2: "10".into(),
+                e: "elastic".into(),
+                frame: "lab".into(),
+                reverse: false,
+            },
+            track: TrackInput {
+                masses: "1,0.01".into(),
+                positions: "1.5,2.25".into(),
+                velocities: "0,0".into(),
+                sizes: "1,0.5".into(),
+                left_wall: "0".into(),
+                right_wall: String::new(),
+                e: "elastic".into(),
+                e_wall: String::new(),
+                gravity: "9.81".into(),
+                until: String::new(),
+            },
+            focus: Focus::TwoBody,
+        }
+    }
+}
+
+/// The page, or the first bad input (as the command line would name it).
+pub fn html(setup: &Setup) -> Result<String, InputError> {
+    let solved = checked(answer(&Request::Solve(setup.case.clone())))?;
+    let stack = checked(answer(&Request::Track(setup.track.clone())))?;
+    let text = |v: &serde_json::Value, key: &str| v[key].as_str().unwrap_or_default().to_string();
+    let data = serde_json::json!({
+        "setup": setup,
+        "answers": {"solve": solved, "track": stack},
+    });
+    let fill = [
+        ("{{STYLE}}", STYLE.to_string()),
+        ("{{SCRIPT}}", script_text(SCRIPT)),
+        ("{{SETUP}}", script_text(&data.to_string())),
+        ("{{MODULE}}", base64(&compressed(MODULE))),
+        ("{{STATE}}", escape(&text(&solved, "state"))),
+        ("{{COMMAND}}", escape(&text(&solved, "command"))),
+        ("{{SCENE}}", escape(&text(&solved, "scene"))),
+        ("{{TRACK_STATE}}", escape(&text(&stack, "state"))),
+        ("{{TRACK_COMMAND}}", escape(&text(&stack, "command"))),
+        ("{{TRACK_SCENE}}", escape(&text(&stack, "scene"))),
+    ];
+    Ok(fill_in(TEMPLATE, &fill))
+}
+
+/// `template` with each `{{NAME}}` replaced by its value, in one pass (a value is never searched
+/// for further names).
+fn fill_in(template: &str, values: &[(&str, String)]) -> String {
+    let mut page =
+        String::with_capacity(template.len() + values.iter().map(|(_, v)| v.len()).sum::<usize>());
+    let mut rest = template;
+    while let Some(at) = rest.find("{{") {
+        page.push_str(&rest[..at]);
+        rest = &rest[at..];
+        match values.iter().find(|(key, _)| rest.starts_with(key)) {
+            Some((key, value)) => {
+                page.push_str(value);
+                rest = &rest[key.len()..];
+            }
+            None => {
+                page.push_str("{{");
+                rest = &rest[2..];
+            }
+        }
+    }
+    page.push_str(rest);
+    page
+}
+
+/// The answer, or its error.
+fn checked(v: serde_json::Value) -> Result<serde_json::Value, InputError> {
+    if v["ok"] == true {
+        return Ok(v);
+    }
+    let field = match v["field"].as_str() {
+        Some("m1" | "m2" | "inertia") => "masses",
+        Some("v1" | "v2") => "velocities",
+        Some("e") => "restitution",
+        Some(_) | None => "input",
+    };
+    Err(InputError::new(
+        field,
+        v["error"].as_str().unwrap_or("bad input"),
+    ))
+}
+
+/// Text for inside `<script>`: `</` written `<\/` and `<!--` written `<\u0021--` (the same
+/// strings in JSON and JavaScript), so no value can close or confuse the element.
+fn script_text(s: &str) -> String {
+    s.replace("</", "<\\/").replace("<!--", "<\\u0021--")
+}
+
+/// Text for HTML content.
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// `bytes` in zlib format at the highest level (the page inflates it with the browser's
+/// `DecompressionStream("deflate")`).
+pub fn compressed(bytes: &[u8]) -> Vec<u8> {
+    miniz_oxide::deflate::compress_to_vec_zlib(bytes, 10)
+}
+
+/// Base64, standard alphabet with padding (RFC 4648, Sec. 4).
+pub fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            *chunk.get(1).unwrap_or(&0),
+            *chunk.get(2).unwrap_or(&0),
+        ];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= chunk.len() {
+                out.push(char::from(ALPHABET[(n >> (18 - 6 * k)) as usize & 63]));
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_of_the_rfc_4648_vectors() {
+        // RFC 4648, Sec. 10.
+        for (text, code) in [
+            ("", ""),
+            ("f", "Zg=="),
+            ("fo", "Zm8="),
+            ("foo", "Zm9v"),
+            ("foob", "Zm9vYg=="),
+            ("fooba", "Zm9vYmE="),
+            ("foobar", "Zm9vYmFy"),
+        ] {
+            assert_eq!(base64(text.as_bytes()), code, "{text:?}");
+        }
+    }
+
+    #[test]
+    fn the_module_inflates_back_to_itself() {
+        let z = compressed(MODULE);
+        assert!(
+            z.len() < MODULE.len() / 2,
+            "{} of {}",
+            z.len(),
+            MODULE.len()
+        );
+        assert_eq!(
+            miniz_oxide::inflate::decompress_to_vec_zlib(&z).unwrap(),
+            MODULE
+        );
+    }
+
+    #[test]
+    fn script_text_cannot_close_its_element() {
+        let s = script_text(r#"{"a": "</script><!--"}"#);
+        assert!(!s.contains("</") && !s.contains("<!--"), "{s}");
+        let back: serde_json::Value = serde_json::from_str(&s).unwrap();
+        assert_eq!(back["a"], "</script><!--");
+    }
+}

@@ -1,0 +1,177 @@
+"""Drives `collide view`'s page in headless Chromium for tests/suite/view.rs, which checks what it
+reports: python3 view_browser.py PAGE.html PLAN.json prints one JSON object of what the page did.
+
+The plan: `cases` (inputs to type: m1, m2, v1, v2, e, inertia), `drag` (a case, and a point of
+the velocity plane to drag IN to), `keys` (arrow keys pressed on the plane), `frame` (a frame
+to switch to, sampling the animation), `reverse`, `screenshot` (where to save a picture of the
+plane, and points to probe for colours), `stack` (presets and inputs of the superball stack).
+Needs Playwright for Python and a Chromium (COLLIDE_CHROMIUM, default /usr/bin/chromium); the
+browser is launched with a fresh profile and no network use of its own."""
+import json, os, struct, sys, tempfile, time, zlib
+
+from playwright.sync_api import sync_playwright
+
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                  "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+def png_pixels(data):
+    """(width, height, rows of (r, g, b)) of an 8-bit RGB or RGBA, non-interlaced PNG."""
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    at, idat, width = 8, b"", 0
+    while at < len(data):
+        n, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + n]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0, (depth, colour, interlace)
+            channels = 3 if colour == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + n
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, prev, i = [], bytearray(stride), 0
+    for _ in range(height):
+        f, line = raw[i], bytearray(raw[i + 1:i + 1 + stride])
+        i += 1 + stride
+        for x in range(stride):
+            a = line[x - channels] if x >= channels else 0
+            b, c = prev[x], prev[x - channels] if x >= channels else 0
+            if f == 1:
+                line[x] = (line[x] + a) & 255
+            elif f == 2:
+                line[x] = (line[x] + b) & 255
+            elif f == 3:
+                line[x] = (line[x] + ((a + b) >> 1)) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[x:x + 3]) for x in range(0, stride, channels)])
+        prev = line
+    return width, height, rows
+
+
+def near(rgb, target, tol=40):
+    return all(abs(a - b) <= tol for a, b in zip(rgb, target))
+
+
+def main():
+    page_path, plan_path = sys.argv[1], sys.argv[2]
+    plan = json.load(open(plan_path))
+    chromium = os.environ.get("COLLIDE_CHROMIUM", "/usr/bin/chromium")
+    out = {"requests": [], "console": [], "errors": []}
+    started = time.time()
+    with sync_playwright() as p, tempfile.TemporaryDirectory() as profile:
+        ctx = p.chromium.launch_persistent_context(
+            profile, executable_path=chromium, headless=True, args=CHROMIUM_FLAGS,
+            viewport={"width": 1400, "height": 1000}, device_scale_factor=1)
+        ctx.on("request", lambda r: out["requests"].append(r.url[:200]))
+        page = ctx.new_page()
+        page.on("console", lambda m: out["console"].append([m.type, m.text]))
+        page.on("pageerror", lambda e: out["errors"].append(str(e)))
+        page.goto("file://" + os.path.abspath(page_path))
+        page.wait_for_function("window.collideView && window.collideView.ready", timeout=30000)
+        out["ready_s"] = time.time() - started
+        text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
+
+        def set_case(case):
+            for field in ("inertia", "m1", "m2", "v1", "v2", "e"):
+                page.fill("#" + field, case.get(field, ""))
+            return {"state": text("#state"), "command": text("#command"), "scene": text("#scene"),
+                    "error": page.eval_on_selector("#case-error", "e => e.hidden ? '' : e.textContent")}
+
+        out["cases"] = [set_case(c) for c in plan.get("cases", [])]
+
+        def plane_map():
+            return page.eval_on_selector("#plane-svg", """s => { const r = s.getBoundingClientRect();
+                return {ox: +s.dataset.originX, oy: +s.dataset.originY, s: +s.dataset.scale, step: +s.dataset.step,
+                        left: r.left, top: r.top, width: r.width, height: r.height, vb: s.viewBox.baseVal.width}; }""")
+
+        def screen(m, v):
+            k = m["width"] / m["vb"]
+            return m["left"] + (m["ox"] + m["s"] * v[0]) * k, m["top"] + (m["oy"] - m["s"] * v[1]) * k
+
+        if "drag" in plan:
+            d = plan["drag"]
+            before = set_case(d["case"])
+            page.locator("#plane-svg").scroll_into_view_if_needed()
+            m = plane_map()
+            page.evaluate("collideView.timings.length = 0")
+            page.mouse.move(*screen(m, d["from"]))
+            page.mouse.down()
+            page.mouse.move(*screen(m, d["to"]), steps=d.get("steps", 30))
+            page.mouse.up()
+            out["drag"] = {"before": before["state"], "after": text("#state"), "map": m,
+                           "timings": page.evaluate("collideView.timings")}
+        if "keys" in plan:
+            page.focus("#plane-svg")
+            for key in plan["keys"]:
+                page.keyboard.press(key)
+            out["keys"] = {"state": text("#state"), "map": plane_map()}
+        if "frame" in plan:
+            set_case(plan["frame"]["case"])
+            out["frame"] = {"w": page.evaluate("""name => new Promise(done => {
+                const seen = [], t0 = performance.now();
+                document.querySelector('input[name="frame"][value="' + name + '"]').click();
+                const look = () => { seen.push(+document.getElementById('plane-svg').dataset.w);
+                    if (performance.now() - t0 < 1400) requestAnimationFrame(look); else done(seen); };
+                requestAnimationFrame(look); })""", plan["frame"]["to"]),
+                "state": text("#state"), "command": text("#command")}
+            page.check('input[name="frame"][value="lab"]')
+            page.wait_for_timeout(900)
+        if "reverse" in plan:
+            set_case(plan["reverse"])
+            page.check("#reverse")
+            out["reverse"] = {"state": text("#state"), "command": text("#command")}
+            page.uncheck("#reverse")
+        if "screenshot" in plan:
+            sh = plan["screenshot"]
+            set_case(sh["case"])
+            plot = page.locator("#plane-svg")
+            plot.scroll_into_view_if_needed()
+            m = plane_map()
+            png = plot.screenshot(path=sh["path"])
+            page.screenshot(path=sh["page"], full_page=True)
+            w, h, rows = png_pixels(png)
+            k = w / m["vb"]
+            counts, colours = {}, set()
+            for name, rgb in sh["colours"].items():
+                counts[name] = sum(1 for row in rows for px in row if near(px, rgb))
+            for row in rows[::3]:
+                for px in row[::3]:
+                    colours.add(px)
+            probes = []
+            for probe in sh["probes"]:
+                cx, cy = (m["ox"] + m["s"] * probe["at"][0]) * k, (m["oy"] - m["s"] * probe["at"][1]) * k
+                best = None
+                for y in range(max(0, int(cy) - 12), min(h, int(cy) + 13)):
+                    for x in range(max(0, int(cx) - 12), min(w, int(cx) + 13)):
+                        if near(rows[y][x], sh["colours"][probe["colour"]]):
+                            dist = ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2) ** 0.5
+                            best = dist if best is None else min(best, dist)
+                probes.append(best)
+            white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
+            out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes,
+                                 "colours": len(colours), "white": white}
+        if "stack" in plan:
+            out["stack"] = []
+            for step in plan["stack"]:
+                if "preset" in step:
+                    page.select_option("#preset", step["preset"])
+                for field, value in step.get("fill", {}).items():
+                    page.fill("#" + field, value)
+                    page.dispatch_event("#" + field, "change")
+                ms = page.evaluate("collideView.stackMs")
+                out["stack"].append({"ms": ms if ms == ms else None,
+                                     "state": text("#track-state"), "command": text("#track-command"),
+                                     "scene": text("#track-scene"), "numbers": text("#stack-numbers"),
+                                     "error": page.eval_on_selector("#track-error", "e => e.hidden ? '' : e.textContent")})
+        out["seconds"] = time.time() - started
+        ctx.close()
+    json.dump(out, sys.stdout, allow_nan=False)
+
+
+if __name__ == "__main__":
+    main()
