@@ -2,6 +2,11 @@
 //! (each comes in along its velocity and leaves along its final one, the line of impact dashed
 //! through it), and the momentum triangles `p1 + p2 = P = p1' + p2'` (Axiom 1 as vectors).
 //!
+//! For two bodies in the plane with a line of impact, a third panel below is the lecture's own
+//! diagram of the normal parts, `(v1.n, v2.n)` with `n` a unit vector: the tangential parts pass
+//! unchanged, so along `n` the bodies collide as on a rail (physics.md section 7), and that rail's
+//! velocity plane (`plot::velocity`, lecture Figs. 1.3, 2.3) is drawn from the same masses and e.
+//!
 //! Each panel is scaled to its own data and keeps angles: one scale for both axes, so a
 //! velocity at 30 degrees is drawn at 30 degrees.
 
@@ -15,6 +20,9 @@ const SIDE: f64 = 360.0;
 const TOP: f64 = 80.0;
 /// Left edges of the two panels.
 const LEFTS: [f64; 2] = [50.0, 460.0];
+/// The size of the normal parts' velocity plane (`plot::velocity`'s page).
+const RAIL_WIDTH: f64 = super::velocity::WIDTH;
+const RAIL_HEIGHT: f64 = super::velocity::HEIGHT;
 /// Colours of bodies 1, 2, 3...: before solid, after dashed.
 const COLOURS: [&str; 4] = ["#2563eb", "#dc2626", "#059669", "#7c3aed"];
 
@@ -61,6 +69,51 @@ impl Panel {
 fn point(v: &[crate::rational::Q]) -> (f64, f64) {
     let g = |k: usize| v.get(k).and_then(crate::rational::to_f64).unwrap_or(0.0);
     (g(0), g(1))
+}
+
+/// The velocity plane of the normal parts (two bodies in the plane with a line of impact): the
+/// masses, the velocities' components along the unit normal and the same e, as a 1D case. `None`
+/// where there is no such rail or a value does not fit binary64.
+fn normal_parts(o: &Outcome) -> Option<super::Picture> {
+    use crate::case::Case;
+    use crate::inertia::{InertiaTensor, Mass};
+    use crate::number::Number;
+    use crate::restitution::Restitution;
+    if o.dim != 2 {
+        return None;
+    }
+    let parts = o.normal_parts()?;
+    let q = |x: &crate::rational::Q| crate::rational::to_f64(x).filter(|v| v.is_finite());
+    let mass = |i: usize| Mass::from_f64(q(&o.masses[i])?).ok();
+    let speed = |x: &crate::rational::Q| Number::from_f64(q(x)?).ok();
+    let inertia = InertiaTensor::diagonal(&mass(0)?, &mass(1)?).ok()?;
+    let e = Restitution::new(Number::from_f64(q(o.e.as_ref()?)?).ok()?).ok()?;
+    let case = Case::new(inertia, [speed(&parts.v_in[0])?, speed(&parts.v_in[1])?], e);
+    Some(super::Picture::new(&case, &crate::frame::Frame::Lab, false))
+}
+
+/// Places a whole SVG document `inner` (from [`Svg::finish`]) at `(x, y)` of `svg`, as a nested
+/// `svg` element of its own size and viewBox, with the given id.
+fn nest(svg: &mut Svg, id: &str, (x, y): (f64, f64), inner: &str) {
+    let (head, body) = inner.split_once('>').unwrap_or(("", inner));
+    let body = body.trim_end().trim_end_matches("</svg>");
+    // The inner root's data-to-screen map (`data-*`) stays on the nested element.
+    let data: String = head
+        .split(" data-")
+        .skip(1)
+        .map(|a| format!(" data-{}", a.trim_end()))
+        .collect();
+    svg.raw(&format!(
+        "<svg id=\"{id}\" x=\"{}\" y=\"{}\" width=\"{RAIL_WIDTH}\" height=\"{RAIL_HEIGHT}\" \
+         viewBox=\"0 0 {RAIL_WIDTH} {RAIL_HEIGHT}\"{data}>{body}</svg>",
+        f(x),
+        f(y)
+    ));
+    svg.text(
+        (x + 30.0, y - 8.0),
+        "Along the line of impact: the normal parts (v1.n, v2.n), |n| = 1, collide as on a rail",
+        "font-size=\"12\" fill=\"#374151\"",
+    );
 }
 
 /// An arrow from `a` to `b` (screen), with a head, in `colour`.
@@ -119,7 +172,14 @@ pub fn svg(o: &Outcome, title: &str) -> String {
         .zip(&o.masses)
         .map(|(v, m)| v.iter().map(|x| x * m).collect())
         .collect();
-    let mut svg = Svg::new(WIDTH, HEIGHT);
+    let rail = normal_parts(o).map(|p| super::velocity::svg(&p));
+    let height = HEIGHT
+        + if rail.is_some() {
+            RAIL_HEIGHT + 20.0
+        } else {
+            0.0
+        };
+    let mut svg = Svg::new(WIDTH, height);
     svg.heading(
         LEFTS[0],
         "Collision in the plane",
@@ -259,6 +319,14 @@ pub fn svg(o: &Outcome, title: &str) -> String {
         svg.text((x + 14.0, TOP + SIDE + 29.0), &label, "font-size=\"12\"");
         x += 24.0 + 7.0 * label.len() as f64;
     }
+    if let Some(inner) = rail {
+        nest(
+            &mut svg,
+            "normal-parts",
+            (LEFTS[0] - 30.0, HEIGHT + 20.0),
+            &inner,
+        );
+    }
     svg.attr("data-paths-scale", f(paths.scale));
     svg.attr("data-momentum-scale", f(mom.scale));
     svg.finish(&format!("collide: {title}"))
@@ -293,8 +361,10 @@ mod tests {
         }
     }
 
-    /// The `line` elements by id: a parse of this writer's own fixed format.
+    /// The `line` elements by id of the two top panels (the normal parts' panel below has its
+    /// own coordinates): a parse of this writer's own fixed format.
     fn roxmltree_free_parse(s: &str) -> std::collections::HashMap<String, (f64, f64, f64, f64)> {
+        let s = s.split("<svg id=\"normal-parts\"").next().unwrap_or(s);
         let attr = |l: &str, k: &str| -> f64 {
             let i = l.find(&format!(" {k}=\"")).unwrap() + k.len() + 3;
             l[i..].split('"').next().unwrap().parse().unwrap()

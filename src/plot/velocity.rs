@@ -4,8 +4,8 @@
 use super::svg::{Svg, f, short as num, ticks};
 use super::{EllipseShape, Picture};
 
-const WIDTH: f64 = 820.0;
-const HEIGHT: f64 = 580.0;
+pub(super) const WIDTH: f64 = 820.0;
+pub(super) const HEIGHT: f64 = 580.0;
 /// The square plot area.
 const LEFT: f64 = 70.0;
 const TOP: f64 = 60.0;

@@ -479,6 +479,121 @@ fn the_plane_picture_draws_every_arrow_inside() {
 }
 
 #[test]
+fn the_plane_picture_draws_the_normal_parts_velocity_plane() {
+    // m = 1, 2; v1 = (3, 1), v2 = (-1, 2); n = (1, 1)/sqrt 2; elastic. The normal parts are
+    // v1.n = 4/sqrt 2 = 2 sqrt 2 and v2.n = 1/sqrt 2; on the rail (1D, e = 1):
+    // v1'.n = ((m1 - m2) v1n + 2 m2 v2n) / 3 = (-2 sqrt 2 + 2 sqrt 2) / 3 = 0,
+    // v2'.n = (2 m1 v1n + (m2 - m1) v2n) / 3 = (4 sqrt 2 + 1/sqrt 2) / 3 = 3/sqrt 2,
+    // which is FIN's own normal parts: v1' = (1, -1), v2' = (0, 3) give 0 and 3/sqrt 2.
+    // The panel's map (data-origin-x/y, data-scale) is the velocity plane's, tested in plot.rs;
+    // this checks the physics put through it.
+    let svg = stdout(&[
+        "plot",
+        "-m",
+        "1,2",
+        "-v",
+        "(3,1),(-1,2)",
+        "--normal",
+        "(1,1)",
+    ]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let panel = doc
+        .descendants()
+        .find(|n| n.attribute("id") == Some("normal-parts"))
+        .expect("a velocity plane of the normal parts");
+    let a = |n: roxmltree::Node, k: &str| -> f64 { n.attribute(k).unwrap().parse().unwrap() };
+    let (ox, oy, s) = (
+        a(panel, "data-origin-x"),
+        a(panel, "data-origin-y"),
+        a(panel, "data-scale"),
+    );
+    let at = |id: &str| -> (f64, f64) {
+        let c = panel
+            .descendants()
+            .find(|n| n.attribute("id") == Some(id))
+            .unwrap_or_else(|| panic!("{id}"));
+        ((a(c, "cx") - ox) / s, (oy - a(c, "cy")) / s)
+    };
+    let r2 = 2f64.sqrt();
+    let close = |(x, y): (f64, f64), (ex, ey): (f64, f64)| {
+        // Screen coordinates are written to 2 decimals: 0.005 px over the scale.
+        let tol = 0.01 / s;
+        assert!(
+            (x - ex).abs() <= tol && (y - ey).abs() <= tol,
+            "({x}, {y}) vs ({ex}, {ey})"
+        );
+    };
+    close(at("point-in"), (2.0 * r2, 1.0 / r2));
+    close(at("point-fin"), (0.0, 3.0 / r2));
+    // No normal, or three bodies: no rail to draw.
+    for args in [
+        vec!["plot", "-m", "1,1", "-v", "(1,0),(0,0)", "-e", "0"],
+        vec!["plot", "-m", "1,1,1", "-v", "(1,0),(0,0),(0,1)", "-e", "0"],
+    ] {
+        let svg = stdout(&args);
+        assert!(!svg.contains("normal-parts"), "{args:?}");
+    }
+}
+
+#[test]
+fn unknown_masses_in_the_plane() {
+    // m1 = 1/2 at (4, 0) hits a puck of unknown mass at rest; after, (1, 1) and (3, -1).
+    // Momentum: m2 (3, -1) = 1/2 (4, 0) - 1/2 (1, 1) = (3/2, -1/2), so m2 = 1/2 from both
+    // components. No normal is given: the impulse J = (3/2, -1/2) is the line of impact, and e
+    // = (v2' - v1').J / (v1 - v2).J = (2, -2).(3, -1) / (4, 0).(3, -1) = 8/12 = 2/3.
+    let j = json(&[
+        "-m",
+        "1/2,?",
+        "-v",
+        "(4,0),0",
+        "--fin",
+        "(1,1),(3,-1)",
+        "--exact",
+    ]);
+    assert_eq!(j["solved"]["m2"], "1/2");
+    assert_eq!(j["restitution"], "2/3");
+    assert_eq!(j["impulse"], serde_json::json!(["3/2", "-1/2"]));
+    // The y component contradicts the x one (v2' = (3, 0): m2 = 1/2 from x, 0 = -1/2 from y).
+    let (code, out, _) = run(&[
+        "solve",
+        "-m",
+        "1/2,?",
+        "-v",
+        "(4,0),0",
+        "--fin",
+        "(1,1),(3,0)",
+    ]);
+    assert_eq!(code, 1);
+    assert!(out.contains("momentum (y) does NOT hold"), "{out}");
+    // An unknown mass with its own unknown velocity, elastic along n = (2, 1): m1 (5, 0) =
+    // m1 v1' + 3 (2, 1) and e = 1 along n. By hand: m1 = 1, v1' = (-1, -3) (momentum (5, 0) =
+    // (-1, -3) + (6, 3); energy 25 = 10 + 3 * 5; along n: v1.n = 10, v2.n = 0 -> v1'.n = -5,
+    // v2'.n = 5 with (2, 1)/|n|: (-1, -3).(2, 1) = -5, (2, 1).(2, 1) = 5).
+    let j = json(&[
+        "-m",
+        "?,3",
+        "-v",
+        "(5,0),(0,0)",
+        "--fin",
+        "?,(2,1)",
+        "--normal",
+        "(2,1)",
+        "-e",
+        "1",
+        "--exact",
+    ]);
+    assert_eq!(j["solved"]["m1"], "1");
+    assert_eq!(j["fin"][0], serde_json::json!(["-1", "-3"]));
+    // Mass and whole velocity of one body unknown with only the energy to close it: a degree
+    // three product, refused with what to give.
+    let (code, _, err) = run(&[
+        "solve", "-m", "1,?", "-v", "(4,0),0", "--fin", "(1,1),?", "-e", "1",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("give the mass or the velocity"), "{err}");
+}
+
+#[test]
 fn the_reversed_event_is_a_collision_with_restitution_one_over_e() {
     // Solving the reversed IN with e' = 1/e along the same line gives the reversed FIN exactly,
     // and reversing that again gives the original (t -> -t twice is the identity).
