@@ -127,15 +127,14 @@ impl Poly {
         s
     }
 
-    /// The sum of the terms' magnitudes at `x` (binary64): the scale a residual is judged by.
-    pub fn scale_at(&self, x: &[Q]) -> f64 {
-        let f = |q: Q| crate::rational::to_f64(&q.abs()).unwrap_or(f64::INFINITY);
-        let mut s = f(self.c.clone());
+    /// The sum of the terms' magnitudes at `x`, exactly: the scale a residual is judged by.
+    pub fn scale_at(&self, x: &[Q]) -> Q {
+        let mut s = self.c.abs();
         for (i, a) in &self.lin {
-            s += f(a * &x[*i]);
+            s += (a * &x[*i]).abs();
         }
         for ((i, j), b) in &self.quad {
-            s += f(b * &x[*i] * &x[*j]);
+            s += (b * &x[*i] * &x[*j]).abs();
         }
         s
     }

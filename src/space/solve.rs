@@ -114,8 +114,10 @@ impl Law {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Check {
     pub law: Law,
-    pub residual: f64,
-    pub scale: f64,
+    /// What the law misses by at the solution, exactly.
+    pub residual: Q,
+    /// The sum of the sizes of the law's terms there (the residual is relative to it).
+    pub scale: Q,
     pub ok: bool,
 }
 
@@ -384,17 +386,16 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
                 .map(|(law, p)| {
                     let r = p.eval(&x);
                     let scale = p.scale_at(&x);
-                    let residual = to_f64(&r).unwrap_or(f64::INFINITY);
-                    let tol = if given.inexact || approx {
-                        INEXACT_TOL
-                    } else {
-                        0.0
-                    };
+                    // Compared exactly: terms beyond binary64's range (a momentum of 1e383)
+                    // are no reason to fail.
+                    let ok = r.is_zero()
+                        || ((given.inexact || approx)
+                            && r.abs() <= crate::rational::from_f64(INEXACT_TOL) * &scale);
                     Check {
                         law: *law,
-                        residual,
+                        residual: r,
                         scale,
-                        ok: residual.abs() <= tol * scale,
+                        ok,
                     }
                 })
                 .collect();

@@ -86,8 +86,8 @@ pub struct Style {
 /// A result beyond binary64, where the report would print inf.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
-    "a result is beyond binary64 (|x| above 1.8e308 or below 4.9e-324 and not zero): rescale \
-     the units, or use --exact"
+    "a result is beyond binary64 (|x| above 1.8e308, or an energy below 4.9e-324 and not \
+     zero): rescale the units, or use --exact"
 )]
 pub struct Overflow;
 
@@ -100,10 +100,15 @@ impl Style {
         }
     }
 
+    /// The binary64 nearest `q`. Beyond binary64's range is an error (set aside, and the
+    /// report refused); a value below its smallest subnormal rounds to zero, as binary64
+    /// arithmetic rounds it, within half that subnormal (a component of 1e-333 beside one of
+    /// 1e35). Energies are not let underflow: see [`Style::energy`].
     fn f(&self, q: &Q) -> f64 {
         match to_f64(q) {
-            Some(x) if x != 0.0 || q.is_zero() => x,
-            _ => {
+            // + 0.0: a negative value that rounds to zero prints as 0, not -0.
+            Some(x) => x + 0.0,
+            None => {
                 self.overflow.set(true);
                 0.0
             }
@@ -137,12 +142,18 @@ impl Style {
         }
     }
 
-    /// An energy, in the unit asked for.
+    /// An energy, in the unit asked for. In binary64 output a nonzero energy that would print
+    /// as 0 is refused like an overflow: a lost or crunch energy of 0 beside a collision that
+    /// loses energy would contradict its own label.
     fn energy(&self, q: &Q) -> Q {
-        match &self.energy_scale {
+        let q = match &self.energy_scale {
             Some(s) => q * s,
             None => q.clone(),
+        };
+        if !self.exact && !q.is_zero() && to_f64(&q) == Some(0.0) {
+            self.overflow.set(true);
         }
+        q
     }
 
     fn checked<T>(&self, t: T) -> Result<T, Overflow> {

@@ -6,7 +6,6 @@ use std::fmt::Write;
 use serde_json::{Map, Value, json};
 
 use crate::frame::Frame;
-use crate::number::num;
 use crate::rational::Q;
 use crate::space::outcome::{FrameVelocityError, Outcome, dot, sub};
 use crate::space::pose::{Posed, outcomes};
@@ -72,8 +71,8 @@ pub fn checks_text(checks: &[Check], used: usize) -> String {
             out,
             "Check: {} does NOT hold: it misses by {} (of terms of size {})",
             c.law.name(),
-            num(c.residual),
-            num(c.scale)
+            crate::quantity::significant(&c.residual, 3),
+            crate::quantity::significant(&c.scale, 3)
         );
     }
     out
@@ -271,7 +270,14 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
         let failed: Vec<Value> = checks
             .iter()
             .filter(|c| !c.ok)
-            .map(|c| json!({"law": c.law.name(), "residual": c.residual}))
+            .map(|c| {
+                // A number where binary64 holds it, else its decimal text (never inf).
+                let residual = crate::rational::to_f64(&c.residual)
+                    .filter(|x| x.is_finite())
+                    .map(Value::from)
+                    .unwrap_or_else(|| crate::quantity::significant(&c.residual, 17).into());
+                json!({"law": c.law.name(), "residual": residual})
+            })
             .collect();
         if !failed.is_empty() {
             m.insert("failed_checks".into(), failed.into());
