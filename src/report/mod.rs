@@ -7,6 +7,7 @@ pub mod contact;
 pub mod frames;
 pub mod json;
 pub mod pi;
+pub mod rigid;
 pub mod scene;
 pub mod separation;
 pub mod solved;

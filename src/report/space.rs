@@ -110,14 +110,14 @@ impl Style {
     }
 
     /// An energy, in the unit asked for.
-    fn energy(&self, q: &Q) -> Q {
+    pub fn energy(&self, q: &Q) -> Q {
         match &self.energy_scale {
             Some(s) => q * s,
             None => q.clone(),
         }
     }
 
-    fn checked<T>(&self, t: T) -> Result<T, Overflow> {
+    pub fn checked<T>(&self, t: T) -> Result<T, Overflow> {
         if self.overflow.get() {
             Err(Overflow)
         } else {
@@ -127,7 +127,7 @@ impl Style {
 }
 
 /// `(a, b)`, or `a` on a line.
-fn vector(style: &Style, v: &[Q], approx: bool) -> String {
+pub fn vector(style: &Style, v: &[Q], approx: bool) -> String {
     let parts: Vec<String> = v.iter().map(|x| style.show(x, approx)).collect();
     if parts.len() == 1 {
         parts[0].clone()

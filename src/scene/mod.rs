@@ -19,6 +19,7 @@
 //! line and column.
 
 mod contact;
+mod rigid;
 mod track;
 mod two_body;
 
@@ -33,6 +34,7 @@ use crate::expect::{ExpectError, Expectation};
 use crate::number::{Number, NumberError};
 
 pub use contact::{CONTACT_KEYS, ContactScene};
+pub use rigid::{RIGID_KEYS, RigidScene};
 pub use track::{TRACK_KEYS, TrackScene};
 pub use two_body::{PlotTable, Scene, SceneSweep, SpecialEvent, SpecialScene};
 
@@ -218,6 +220,7 @@ pub enum AnyScene {
     Special(SpecialScene),
     Track(TrackScene),
     Contact(ContactScene),
+    Rigid(RigidScene),
 }
 
 /// A problem in a scene file, located.
@@ -251,7 +254,8 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 }
 
 impl Scene {
-    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]` or a `[contact]`.
+    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]`, a `[contact]` or
+    /// rigid bodies (`[[body]]`).
     /// `path` is read once (a FIFO, `/dev/stdin`, `<(cat x.toml)`); `-` is standard input,
     /// named `<stdin>` in messages and reports.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
@@ -266,7 +270,9 @@ impl Scene {
             at: None,
             message,
         })?;
-        if has_table(&text, "contact") {
+        if has_table(&text, "body") {
+            RigidScene::parse(path, &text).map(AnyScene::Rigid)
+        } else if has_table(&text, "contact") {
             ContactScene::parse(path, &text).map(AnyScene::Contact)
         } else if has_table(&text, "track") {
             TrackScene::parse(path, &text).map(AnyScene::Track)

@@ -17,6 +17,7 @@ mod problems;
 mod properties;
 mod readme;
 mod resources;
+mod rigid;
 mod shell;
 mod tables;
 mod track;
