@@ -172,7 +172,7 @@ impl Homework {
             Some(s) => {
                 let (shape, rounded) = s.resolve(r.si, r.exact).map_err(PoseError::from)?;
                 if rounded {
-                    return Err(PoseError::Irrational(s.text.clone()).into());
+                    return Err(PoseError::Irrational(s.text.clone(), "give lengths").into());
                 }
                 Some((shape, s.text.clone()))
             }
@@ -233,7 +233,7 @@ impl Homework {
                 };
                 let (shape, rounded) = target.resolve(r.si, r.exact).map_err(PoseError::from)?;
                 if rounded {
-                    return Err(PoseError::Irrational(target.text.clone()).into());
+                    return Err(PoseError::Irrational(target.text.clone(), "give lengths").into());
                 }
                 let pivot = match &self.pivot {
                     None => None,
@@ -270,10 +270,10 @@ impl Homework {
                     let root = match sqrt_exact(&c2) {
                         Some(x) => x,
                         None if self.exact => {
-                            return Err(PoseError::Irrational(format!(
-                                "the contact point sqrt(R^2 - b^2) on the {}",
-                                target.text
-                            ))
+                            return Err(PoseError::Irrational(
+                                format!("the contact point sqrt(R^2 - b^2) on the {}", target.text),
+                                "choose --hit-at b with R^2 - b^2 a square (R = 5, b = 3)",
+                            )
                             .into());
                         }
                         None => {

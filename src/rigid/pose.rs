@@ -159,10 +159,9 @@ pub enum PoseError {
     #[error("two immovable bodies: at least one body must move")]
     TwoWalls,
     #[error(
-        "--exact: {0} is irrational, and exact arithmetic holds rationals only: give it in \
-         rad/s, or drop --exact"
+        "--exact: {0} is irrational, and exact arithmetic holds rationals only: {1}, or drop --exact"
     )]
-    Irrational(String),
+    Irrational(String, &'static str),
     #[error(
         "--exact: friction in space is an ODE in the normal impulse, solved in binary64 with an \
          error estimate: drop --exact"
@@ -201,7 +200,10 @@ impl Resolver {
 
     fn note(&self, rounded: bool, text: &str) -> Result<(), PoseError> {
         if rounded && self.exact {
-            return Err(PoseError::Irrational(text.to_string()));
+            return Err(PoseError::Irrational(
+                text.to_string(),
+                "turns and degrees carry pi, give rad/s",
+            ));
         }
         self.rounded.set(self.rounded.get() | rounded);
         Ok(())
@@ -377,13 +379,7 @@ impl BodyTyped {
                 }
                 Heavy::Immovable(word)
             }
-            MassTyped::Mass(t) => {
-                let m = r.one(t)?;
-                if !m.is_positive() {
-                    return Err(PoseError::Mass(index, t.text.clone()));
-                }
-                Heavy::Mass(m)
-            }
+            MassTyped::Mass(t) => Heavy::Mass(r.one(t)?),
         };
         let shape = match &self.shape {
             Some(s) => {
@@ -447,7 +443,12 @@ impl Spec {
                 let m = body.admit(index, self.motion)?;
                 return Ok((body, m));
             }
-            Heavy::Mass(m) => m,
+            Heavy::Mass(m) if m.is_positive() => m,
+            Heavy::Mass(m) => {
+                let shown =
+                    crate::rational::to_f64(&m).map_or_else(|| m.to_string(), crate::number::num);
+                return Err(PoseError::Mass(index, shown));
+            }
         };
         let inertia = match (self.inertia, &self.shape) {
             (Some(i), _) => Some(i),

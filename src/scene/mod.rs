@@ -270,7 +270,9 @@ impl Scene {
             at: None,
             message,
         })?;
-        if has_table(&text, "body") {
+        // `[[body]]` by its header line, so that a rigid scene with a bad number is reported
+        // by the rigid reader.
+        if text.lines().any(|l| l.trim_start().starts_with("[[body]]")) {
             RigidScene::parse(path, &text).map(AnyScene::Rigid)
         } else if has_table(&text, "contact") {
             ContactScene::parse(path, &text).map(AnyScene::Contact)

@@ -48,7 +48,7 @@ struct RigidFile {
     exact: Option<bool>,
     tol: Option<f64>,
     energy_unit: Option<Spanned<String>>,
-    body: Spanned<Vec<BodyTable>>,
+    body: Spanned<Vec<Spanned<BodyTable>>>,
     contact: Spanned<ContactTable>,
     expect: Option<ExpectTable>,
 }
@@ -248,7 +248,7 @@ impl RigidScene {
                 pivot,
             })
         };
-        let bodies = [body(0, &tables[0])?, body(1, &tables[1])?];
+        let bodies = [body(0, tables[0].get_ref())?, body(1, tables[1].get_ref())?];
         let c = file.contact.get_ref();
         let point = vector(c.point.get_ref(), Measure::Length, "[contact] point")
             .map_err(|m| err(at(&c.point), m))?;
@@ -269,9 +269,14 @@ impl RigidScene {
             exact: file.exact.unwrap_or(false),
             rtol: file.tol,
         };
-        let problem = input
-            .pose()
-            .map_err(|e| err(Some(file.contact.span()), e.to_string()))?;
+        // A body's problem at its table, the contact's at [contact].
+        let problem = input.pose().map_err(|e| {
+            let message = e.to_string();
+            let span = (0..2)
+                .find(|i| message.starts_with(&format!("body {}", i + 1)))
+                .map_or_else(|| file.contact.span(), |i| tables[i].span());
+            err(Some(span), message)
+        })?;
         let energy_unit = file
             .energy_unit
             .as_ref()
