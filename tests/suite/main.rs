@@ -18,6 +18,7 @@ mod properties;
 mod readme;
 mod resources;
 mod rigid;
+mod rigid_symmetry;
 mod shell;
 mod tables;
 mod track;
