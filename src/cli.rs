@@ -530,7 +530,7 @@ pub struct SolveArgs {
 /// these flags makes the case a rigid one.
 #[derive(Args, Debug, Clone, Default)]
 pub struct RigidArgs {
-    /// Rigid bodies: the body hit (body 2): 'rod 1.2 m', 'door 0.9 m', 'box (0.2,1) m', 'disk
+    /// The body hit (body 2), a rigid shape: 'rod 1.2 m', 'door 0.9 m', 'box (0.2,1) m', 'disk
     /// 10 cm', 'ring R', 'sphere R', 'shell R' (a rod or door stands along y, centre at the
     /// origin, hit on its left side by the ball moving along +x)
     #[arg(long, value_name = "SHAPE", help_heading = "Rigid bodies")]
@@ -591,10 +591,6 @@ pub struct RigidArgs {
         help_heading = "Rigid bodies"
     )]
     pub tangential_restitution: Option<Number>,
-
-    /// Relative tolerance of the ODE of friction in space (scenes) [default: 1e-10]
-    #[arg(long, value_name = "TOL", help_heading = "Rigid bodies")]
-    pub tol: Option<f64>,
 }
 
 impl RigidArgs {

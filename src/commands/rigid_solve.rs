@@ -115,7 +115,8 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
             tangential_restitution: rigid.tangential_restitution.clone(),
         },
         exact,
-        rtol: rigid.tol,
+        // The homework shapes are in the plane: no ODE (a scene's `tol` sets it in space).
+        rtol: None,
     })
 }
 
