@@ -17,7 +17,7 @@ fn main() -> ExitCode {
         // Usage errors on stderr (cut to a sane length), --help and --version on stdout; a
         // closed stream is no reason to panic.
         Err(e) if e.use_stderr() => {
-            diagnostic(format_args!("{}", e.render().to_string().trim_end()));
+            diagnostic(format_args!("{}", usage_error(&e).trim_end()));
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -51,6 +51,27 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// clap's message, but with control characters in a rejected value escaped (`'5\u{7},1'`):
+/// clap's rendering drops them, which quotes a value that was not typed.
+fn usage_error(e: &clap::Error) -> String {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    if e.kind() == ErrorKind::ValueValidation
+        && let (Some(ContextValue::String(arg)), Some(ContextValue::String(value))) = (
+            e.get(ContextKind::InvalidArg),
+            e.get(ContextKind::InvalidValue),
+        )
+        && value.chars().any(char::is_control)
+        && let Some(source) = std::error::Error::source(e)
+    {
+        return format!(
+            "error: invalid value '{}' for '{arg}': {source}\n\nFor more information, try \
+             '--help'.",
+            collide::number::printable(value)
+        );
+    }
+    e.render().to_string()
 }
 
 /// Whether the error is a closed stdout, wherever it is in the chain.

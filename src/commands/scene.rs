@@ -78,6 +78,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                 AnyScene::Special(scene) => Some(solve_special(scene)?),
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
+                AnyScene::Space(scene) => Some(solve_space(scene)?),
                 AnyScene::Rigid(scene) => Some(solve_rigid(scene)?),
             })
         };
@@ -145,7 +146,9 @@ fn several_json(checked: &[Checked], listed: &[Listed]) -> serde_json::Value {
 }
 
 fn solve(scene: Scene) -> Result<Checked> {
-    let sections = scene.sections_needed();
+    let mut sections = scene.sections_needed();
+    // energy_unit = "kJ": every energy in kJ, as the header says.
+    sections.energy_scale = scene.case.units.energy_scale();
     let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.about.path.display()))?;
     let mut text = result.text(&scene.case, &scene.show);
@@ -175,6 +178,7 @@ fn solve_special(scene: SpecialScene) -> Result<Checked> {
         compute.insert(s);
     }
     let event = scene.event.special();
+    compute.energy_scale = event.units().energy_scale();
     let result = event
         .render(&compute, &scene.show, scene.exact)
         .with_context(at)?;
@@ -213,6 +217,29 @@ fn solve_contact(scene: ContactScene) -> Result<Checked> {
     let json = contact_report::json(&run).with_context(at)?;
     let text = contact_report::text(&scene.setup, &run);
     check(scene.about, text, json)
+}
+
+fn solve_space(scene: collide::scene::SpaceScene) -> Result<Checked> {
+    use collide::report::space::solved::{Options, render};
+    let at = || format!("{}", scene.about.path.display());
+    let posed = scene.input.pose().with_context(at)?;
+    let solved = collide::space::solve::solve(&posed.statement).with_context(at)?;
+    let rendered = render(
+        &posed,
+        &solved,
+        &Options {
+            frame: &scene.frame,
+            show: scene.show,
+            exact: scene.input.exact,
+            reverse: scene.reverse,
+            fin_given: scene.input.fin.is_some(),
+            energy_unit: scene.energy_unit,
+        },
+    )
+    .with_context(at)?;
+    let mut checked = check(scene.about, rendered.text, rendered.json)?;
+    checked.inconsistent = rendered.inconsistent;
+    Ok(checked)
 }
 
 fn solve_rigid(scene: RigidScene) -> Result<Checked> {

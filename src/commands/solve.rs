@@ -22,6 +22,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     if args.case.spatial() {
         return super::space_solve::run(&args);
     }
+    args.frame.on_line()?;
     let posed = args
         .case
         .problem(args.fin.as_ref(), args.exact)?

@@ -6,8 +6,27 @@ use serde::Serialize;
 use super::text::Block;
 use crate::accuracy::{Family, Row, Spread};
 
-/// The JSON document: the seed, the families and the rows.
+/// The JSON document: the seed, the families and the rows. An infinite error (a non-zero result
+/// where the exact value is 0, or an overflow: `inf` in the text) has no JSON number and is not
+/// `null` (which reads as a missing result): its key is left out and `"<key>_infinite": true`
+/// says why (`"worst_infinite": true`).
 pub fn json(seed: u64, families: &[Family], rows: &[Row]) -> serde_json::Value {
+    let mut rows = serde_json::to_value(rows).expect("rows serialize");
+    for spread in rows
+        .as_array_mut()
+        .into_iter()
+        .flatten()
+        .filter_map(serde_json::Value::as_object_mut)
+        .flat_map(|row| row.values_mut())
+        .filter_map(serde_json::Value::as_object_mut)
+    {
+        for key in ["median", "worst"] {
+            if spread.get(key).is_some_and(serde_json::Value::is_null) {
+                spread.remove(key);
+                spread.insert(format!("{key}_infinite"), true.into());
+            }
+        }
+    }
     #[derive(Serialize)]
     struct FamilyJson<'a> {
         name: &'a str,

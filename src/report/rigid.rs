@@ -367,18 +367,14 @@ fn along_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
     let mut b =
         Block::new("Along the normal: the 1D collision of the contact points (effective masses)")
             .fit(WIDTH);
+    // A wall, or a body its pivot holds along n, is immovable there (an infinite mass).
     let mass = |m: &Option<Q>| match m {
-        Some(m) => style.show(m, o.approx()),
-        None => "inf".into(),
+        Some(m) => format!("{}{}", style.show(m, o.approx()), u.suffix("kg")),
+        None => "immovable".into(),
     };
     b.row(
         "masses",
-        format!(
-            "{}, {}{}",
-            mass(&n.masses[0]),
-            mass(&n.masses[1]),
-            u.suffix("kg")
-        ),
+        format!("{}, {}", mass(&n.masses[0]), mass(&n.masses[1])),
         "1/(n^T K_i n), n of unit length",
     );
     b.row(

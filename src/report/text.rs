@@ -235,7 +235,7 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         momentum(case, m, &report.notes).render(&mut out);
     }
     if let Some(f) = &report.forms {
-        forms(case, f, report.energy.as_ref()).render(&mut out);
+        forms(case, f, report.energy.as_ref(), &report.notes).render(&mut out);
     }
     if let Some(en) = &report.energy {
         energy(case, en, &report.notes).render(&mut out);
@@ -307,12 +307,8 @@ fn reverse<N: Scalar>(case: &Case, r: &Reverse<N>) -> Block {
         b.row("e'", r.restitution.show(), why);
         b.row("KE_IN' = KE_FIN", r.energy.ke_in.show(), "");
         b.row("KE_FIN' = KE_IN", r.energy.fin.show(), "");
-        let amount = if superelastic {
-            r.energy.gained.neg()
-        } else {
-            r.energy.gained.clone()
-        };
-        b.row(gained, amount.show(), from);
+        let amount = r.energy.gained.as_ref().or(r.energy.lost.as_ref());
+        b.row(gained, amount.map(N::show).unwrap_or_default(), from);
     }
     b
 }
@@ -408,7 +404,12 @@ fn momentum<N: Scalar>(case: &Case, p: &Momentum<N>, notes: &Notes<N>) -> Block 
     b
 }
 
-fn forms<N: Scalar>(case: &Case, f: &Forms<N>, energy: Option<&Energy<N>>) -> Block {
+fn forms<N: Scalar>(
+    case: &Case,
+    f: &Forms<N>,
+    energy: Option<&Energy<N>>,
+    notes: &Notes<N>,
+) -> Block {
     let mut b = Block::new("Quadratic forms (X.M.Y)");
     let e = case.restitution();
     if e.is_totally_inelastic() {
@@ -436,9 +437,10 @@ fn forms<N: Scalar>(case: &Case, f: &Forms<N>, energy: Option<&Energy<N>>) -> Bl
             f.in_m_in.show(),
             "elastic: one energy ellipse",
         );
-        // The lecture's check: crunch = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4 when elastic.
+        // The lecture's check: crunch = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4 when elastic, in the
+        // forms' own unit (the energy section's may be another, --energy-unit).
         let crunch = energy
-            .map(|en| format!(" = {}", en.crunch.show()))
+            .map(|_| format!(" = {}", notes.crunch.show()))
             .unwrap_or_default();
         b.row(
             "V_IN.M.V_IN/4 - V_FIN.M.V_IN/4",

@@ -11,22 +11,10 @@ use collide::rigid::laws::Mode;
 use common::run;
 use serde_json::Value;
 
-/// Checks the invariants of every rigid JSON report: no null anywhere (a NaN or an infinity
-/// would be written as null), and energy gained only with `"physical": false` and a reason.
+/// Checks the invariants of every rigid JSON report: nothing null, NaN or infinite (the net's
+/// `all_real`), and energy gained only with `"physical": false` and a reason.
 pub(crate) fn invariants(j: &Value) {
-    fn walk(v: &Value, path: &str) {
-        match v {
-            Value::Null => panic!("null at {path}"),
-            Value::Array(a) => a
-                .iter()
-                .enumerate()
-                .for_each(|(i, x)| walk(x, &format!("{path}.{i}"))),
-            Value::Object(m) => m.iter().for_each(|(k, x)| walk(x, &format!("{path}.{k}"))),
-            Value::Number(n) => assert!(n.as_f64().unwrap().is_finite(), "{path}"),
-            _ => {}
-        }
-    }
-    walk(j, "");
+    crate::invariants::all_real(j).unwrap();
     if let Some(e) = j.get("energy") {
         let gained = e.get("gained").is_some();
         assert_eq!(gained, j["physical"] == false, "{j}");

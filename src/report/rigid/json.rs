@@ -129,7 +129,7 @@ pub fn json(
         .iter()
         .map(|x| match x {
             Some(q) => style.json(q, a),
-            None => json!("inf"),
+            None => json!("immovable"),
         })
         .collect();
     m.insert(
