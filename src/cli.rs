@@ -93,7 +93,7 @@ fn parse_sig(s: &str) -> Result<u8, String> {
 pub enum Command {
     /// Solve one collision given on the command line
     #[command(
-        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'\n  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show vectors,heights"
+        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'\n  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show vectors,heights\n  collide solve -m '50 g,2 kg' -v '10 m/s,0' --target 'door 0.9 m' --pivot end --hit-at '0.6 m'"
     )]
     Solve(SolveArgs),
     /// Solve TOML scene files and check their [expect] numbers
@@ -227,6 +227,9 @@ pub struct PlotArgs {
     /// Draw in the terminal (Unicode braille) instead of SVG
     #[arg(long)]
     pub term: bool,
+
+    #[command(flatten)]
+    pub rigid: RigidArgs,
 }
 
 /// `collide view`: the case as typed (the page's inputs hold text; they are checked by the same
@@ -664,9 +667,93 @@ pub struct SolveArgs {
     #[arg(long, value_name = "FILE.svg|term")]
     pub plot: Option<PathBuf>,
 
+    #[command(flatten)]
+    pub rigid: RigidArgs,
+
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
+}
+
+/// Rigid bodies at impact (docs/rigid.md): a ball (body 1) hits a target or a floor; any of
+/// these flags makes the case a rigid one.
+#[derive(Args, Debug, Clone, Default)]
+pub struct RigidArgs {
+    /// The body hit (body 2), a rigid shape: 'rod 1.2 m', 'door 0.9 m', 'box (0.2,1) m', 'disk
+    /// 10 cm', 'ring R', 'sphere R', 'shell R' (a rod or door stands along y, centre at the
+    /// origin, hit on its left side by the ball moving along +x)
+    #[arg(long, value_name = "SHAPE", help_heading = "Rigid bodies")]
+    pub target: Option<collide::rigid::shape::ShapeTyped>,
+
+    /// The target's fixed pivot: 'end' (its bottom end), 'centre', or '(x,y)' from its centre
+    #[arg(
+        long,
+        value_name = "end|centre|(x,y)",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub pivot: Option<collide::rigid::homework::PivotTyped>,
+
+    /// Where the target is hit: the distance along it from its pivot (from its centre when
+    /// free; the height b on a round target), or 'end' (its top end) [default: the centre]
+    #[arg(
+        long,
+        value_name = "D|end",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub hit_at: Option<collide::rigid::homework::HitTyped>,
+
+    /// The ball's shape (body 1), e.g. 'sphere 3 cm' or 'shell 3 cm' [default: a point particle]
+    #[arg(long, value_name = "SHAPE", help_heading = "Rigid bodies")]
+    pub ball: Option<collide::rigid::shape::ShapeTyped>,
+
+    /// Spins W1[,W2] about z, counterclockwise positive: '20 rad/s', '300 rpm', '-5 rev/s'
+    /// (a ball rolling to the right spins clockwise: negative)
+    #[arg(
+        long,
+        value_name = "W1,W2",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub spin: Option<String>,
+
+    /// Coulomb friction coefficient mu >= 0 at the contact
+    #[arg(
+        long,
+        value_name = "MU",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub friction: Option<Number>,
+
+    /// The restitution law with friction [default: poisson]
+    #[arg(long, value_enum, help_heading = "Rigid bodies")]
+    pub law: Option<collide::rigid::laws::Law>,
+
+    /// Garwin's rough contact: the slip velocity reverses to -BETA times itself (BETA in [-1,
+    /// 1]; 1 is the ideal superball)
+    #[arg(
+        long,
+        value_name = "BETA",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub tangential_restitution: Option<Number>,
+}
+
+impl RigidArgs {
+    /// Whether the case is a rigid impact.
+    pub fn active(&self) -> bool {
+        self.target.is_some()
+            || self.pivot.is_some()
+            || self.hit_at.is_some()
+            || self.ball.is_some()
+            || self.spin.is_some()
+            || self.friction.is_some()
+            || self.law.is_some()
+            || self.tangential_restitution.is_some()
+    }
 }
 
 #[derive(Args, Debug)]

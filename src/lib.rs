@@ -6,7 +6,8 @@
 //!
 //! 1. values: `rational`, `number`, `units`, `quantity`, `compensated`, `output`, `terminal`;
 //! 2. two-body physics: `inertia`, `restitution`, `collision`, `ellipse`;
-//! 3. what the user asked: `case`, `problem`, `unknowns`, `frame`;
+//! 3. what the user asked: `case`, `problem`, `unknowns`, `frame`; the plane and space
+//!    (`space`) and rigid bodies at impact (`rigid`);
 //! 4. how it is computed: `solver` (the `Solver` trait, `binary64`, `exact`);
 //! 5. computations beyond one solve: `accuracy`, `expect`, `table`, `track`, `contact` (which
 //!    runs `track` as its impulse model);
@@ -52,7 +53,9 @@ pub mod problem;
 pub mod unknowns;
 pub mod wall;
 
-// 3b. the plane and space
+// 3b. the plane and space, rigid bodies
+#[cfg(feature = "cli")]
+pub mod rigid;
 pub mod space;
 
 // 4. how it is computed

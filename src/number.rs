@@ -438,13 +438,14 @@ impl<T> Given<T> {
         }
     }
 
-    /// Parses `wall`, `inf`, `infinity` or `∞` as an immovable body, else as `parse`.
+    /// Parses `wall`, `floor`, `ceiling`, `inf`, `infinity` or `∞` as an immovable body, else
+    /// as `parse`.
     pub fn parse_mass<E>(
         text: &str,
         parse: impl FnOnce(&str) -> Result<T, E>,
     ) -> Result<Given<T>, E> {
         let t = text.trim().to_ascii_lowercase();
-        if ["wall", "inf", "infinity", "∞", "floor"].contains(&t.as_str()) {
+        if ["wall", "inf", "infinity", "∞", "floor", "ceiling"].contains(&t.as_str()) {
             Ok(Given::Wall)
         } else {
             Given::parse(text, parse)

@@ -8,6 +8,7 @@ mod contact;
 mod frames;
 mod pi;
 mod plot;
+mod rigid_solve;
 mod scene;
 mod shell;
 mod solve;

@@ -15,6 +15,9 @@ use super::Outcome;
 use crate::cli::PlotArgs;
 
 pub fn run(args: PlotArgs) -> Result<Outcome> {
+    if args.rigid.active() {
+        return rigid(&args);
+    }
     if args.case.spatial() {
         return plane(&args);
     }
@@ -54,6 +57,24 @@ fn plane(args: &PlotArgs) -> Result<Outcome> {
         );
     }
     let svg = super::space_solve::plane_svg(&args.case)?;
+    match &args.output {
+        Some(path) => {
+            write_file(path, svg.as_bytes())?;
+            Ok(Outcome::print(String::new()))
+        }
+        None => Ok(Outcome::print(svg)),
+    }
+}
+
+/// The picture of a rigid impact: the bodies with the contact, velocities and spins, and the
+/// impulse plane of Routh's method (`plot::rigid`).
+fn rigid(args: &PlotArgs) -> Result<Outcome> {
+    if args.kind.is_some() || args.frames || args.term || args.frame != Frame::Lab {
+        anyhow::bail!(
+            "--kind, --frames, --frame and --term draw two bodies on a line; a rigid impact is              drawn as its bodies and its impulse plane (collide plot ... -o FILE.svg)"
+        );
+    }
+    let svg = super::rigid_solve::svg(&args.case, &args.rigid)?;
     match &args.output {
         Some(path) => {
             write_file(path, svg.as_bytes())?;

@@ -16,6 +16,9 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
+    if args.rigid.active() {
+        return super::rigid_solve::run(&args);
+    }
     if args.case.spatial() {
         return super::space_solve::run(&args);
     }

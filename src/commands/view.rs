@@ -144,6 +144,11 @@ fn from_scene(setup: &mut Setup, path: &std::path::Path) -> Result<()> {
             };
             setup.focus = Focus::Stack;
         }
+        AnyScene::Rigid(_) => bail!(
+            "{}: rigid bodies at impact: the page has no panel for them; run it with collide \
+             scene",
+            path.display()
+        ),
         AnyScene::Space(_) => bail!(
             "{}: a collision in the plane or in space: the page's panel for it is to come; run \
              it with collide scene",

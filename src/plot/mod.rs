@@ -4,6 +4,7 @@
 
 pub mod accuracy;
 pub mod plane;
+pub mod rigid;
 pub mod spacetime;
 pub mod svg;
 pub mod term;

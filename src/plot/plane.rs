@@ -117,7 +117,7 @@ fn nest(svg: &mut Svg, id: &str, (x, y): (f64, f64), inner: &str) {
 }
 
 /// An arrow from `a` to `b` (screen), with a head, in `colour`.
-fn arrow(svg: &mut Svg, id: &str, a: (f64, f64), b: (f64, f64), colour: &str, dashed: bool) {
+pub fn arrow(svg: &mut Svg, id: &str, a: (f64, f64), b: (f64, f64), colour: &str, dashed: bool) {
     let dash = if dashed {
         " stroke-dasharray=\"6 4\""
     } else {

@@ -10,6 +10,8 @@ pub mod frames;
 pub mod json;
 pub mod pi;
 #[cfg(feature = "cli")]
+pub mod rigid;
+#[cfg(feature = "cli")]
 pub mod scene;
 pub mod separation;
 pub mod solved;

@@ -19,6 +19,7 @@
 //! line and column.
 
 mod contact;
+mod rigid;
 mod space;
 mod track;
 mod two_body;
@@ -34,6 +35,7 @@ use crate::expect::{ExpectError, Expectation};
 use crate::number::{Number, NumberError};
 
 pub use contact::{CONTACT_KEYS, ContactScene};
+pub use rigid::{RIGID_KEYS, RigidScene};
 pub use space::{SPACE_KEYS, SpaceScene, show_of};
 pub use track::{TRACK_KEYS, TrackScene};
 pub use two_body::{PlotTable, Scene, SceneSweep, SpecialEvent, SpecialScene};
@@ -214,6 +216,8 @@ pub enum AnyScene {
     Contact(ContactScene),
     /// In the plane, in space or of N bodies.
     Space(SpaceScene),
+    /// Rigid bodies at impact.
+    Rigid(RigidScene),
 }
 
 /// A problem in a scene file, located.
@@ -247,7 +251,8 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 }
 
 impl Scene {
-    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]` or a `[contact]`.
+    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]`, a `[contact]` or
+    /// rigid bodies (`[[body]]`).
     /// `path` is read once (a FIFO, `/dev/stdin`, `<(cat x.toml)`); `-` is standard input,
     /// named `<stdin>` in messages and reports.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
@@ -262,7 +267,11 @@ impl Scene {
             at: None,
             message,
         })?;
-        if has_table(&text, "contact") {
+        // `[[body]]` by its header line, so that a rigid scene with a bad number is reported
+        // by the rigid reader.
+        if text.lines().any(|l| l.trim_start().starts_with("[[body]]")) {
+            RigidScene::parse(path, &text).map(AnyScene::Rigid)
+        } else if has_table(&text, "contact") {
             ContactScene::parse(path, &text).map(AnyScene::Contact)
         } else if has_table(&text, "track") {
             TrackScene::parse(path, &text).map(AnyScene::Track)

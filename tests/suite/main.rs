@@ -19,6 +19,8 @@ mod problems;
 mod properties;
 mod readme;
 mod resources;
+mod rigid;
+mod rigid_symmetry;
 mod shell;
 mod tables;
 mod track;

@@ -145,7 +145,7 @@ impl Style {
     /// An energy, in the unit asked for. In binary64 output a nonzero energy that would print
     /// as 0 is refused like an overflow: a lost or crunch energy of 0 beside a collision that
     /// loses energy would contradict its own label.
-    fn energy(&self, q: &Q) -> Q {
+    pub fn energy(&self, q: &Q) -> Q {
         let q = match &self.energy_scale {
             Some(s) => q * s,
             None => q.clone(),
@@ -156,7 +156,7 @@ impl Style {
         q
     }
 
-    fn checked<T>(&self, t: T) -> Result<T, Overflow> {
+    pub fn checked<T>(&self, t: T) -> Result<T, Overflow> {
         if self.overflow.get() {
             Err(Overflow)
         } else {

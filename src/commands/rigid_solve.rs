@@ -1,0 +1,200 @@
+//! `collide solve` for rigid bodies at impact: the homework shapes typed on the command line
+//! (`--target`, `--pivot`, `--hit-at`, `--ball`, `--spin`, `--friction`), laid out, solved and
+//! rendered; also the picture (`collide plot`) and a scene's `[[body]]` report.
+
+use anyhow::Result;
+use collide::number::Number;
+use collide::report::rigid::{self as report, RigidUnits};
+use collide::report::space::Style;
+use collide::report::{Section, Sections, json};
+use collide::rigid::homework::Homework;
+use collide::rigid::impact::{ImpactError, Problem};
+use collide::rigid::pose::{Either, LawsTyped, MassTyped};
+use collide::rigid::units::{Measure, Typed};
+use collide::space::typed::split_bodies;
+use collide::units::{EnergyUnit, Units};
+
+use super::Outcome;
+use crate::cli::{CaseArgs, Format, RigidArgs, SolveArgs};
+
+pub fn run(args: &SolveArgs) -> Result<Outcome> {
+    let refused = [
+        (args.frame != collide::frame::Frame::Lab, "--frame"),
+        (args.plot.is_some(), "--plot (use collide plot)"),
+        (args.contact_time.is_some(), "--contact-time"),
+        (args.fin.is_some(), "--fin"),
+        (args.reverse, "--reverse"),
+        (args.case.gravity.is_some(), "--gravity"),
+        (
+            args.case.inertia.is_some(),
+            "--inertia (give --target or --ball)",
+        ),
+        (
+            args.case.normal.is_some(),
+            "--normal (the homework shapes set it)",
+        ),
+        (args.case.radii.is_some(), "--radii"),
+    ];
+    if let Some((_, flag)) = refused.iter().find(|(on, _)| *on) {
+        anyhow::bail!(
+            "{flag} is not available for rigid bodies (--target, --ball, --spin, --friction...); \
+             a general contact is a scene with [[body]] tables"
+        );
+    }
+    let show = show(&args.show)?;
+    let problem = homework(&args.case, &args.rigid, args.exact)?.pose()?;
+    let (stdout, status) = report_of(
+        problem,
+        &show,
+        args.exact,
+        args.case.energy_unit,
+        args.format,
+    )?;
+    Ok(Outcome { stdout, status })
+}
+
+/// The typed homework problem of the command line.
+pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homework> {
+    let Some(masses) = &case.masses else {
+        anyhow::bail!("give --masses M1,M2 (the ball, then the target, a wall or a floor)");
+    };
+    let two = |text: &str, what: &str| -> Result<Vec<String>> {
+        let parts = split_bodies(text)?;
+        if parts.is_empty() || parts.len() > 2 {
+            anyhow::bail!(
+                "{what} '{text}': give one or two values (the ball's, then the target's)"
+            );
+        }
+        Ok(parts.into_iter().map(String::from).collect())
+    };
+    let m = two(&masses.text, "--masses")?;
+    let [m1, m2] = m.as_slice() else {
+        anyhow::bail!(
+            "--masses '{}': give two (the ball's, then the target's, or wall, floor, ceiling)",
+            masses.text
+        );
+    };
+    let masses = [MassTyped::parse(m1, "mass")?, MassTyped::parse(m2, "mass")?];
+    let v = two(&case.velocities.text, "--velocities")?;
+    let velocity = |i: usize| -> Result<Option<Either>> {
+        v.get(i)
+            .map(|t| Either::parse(t, Measure::Velocity, "velocity"))
+            .transpose()
+            .map_err(Into::into)
+    };
+    let spins: Vec<String> = match &rigid.spin {
+        Some(s) => two(s, "--spin")?,
+        None => Vec::new(),
+    };
+    let spin = |i: usize| -> Result<Option<Typed>> {
+        spins
+            .get(i)
+            .map(|t| Typed::parse(t, Measure::Spin, "--spin"))
+            .transpose()
+            .map_err(Into::into)
+    };
+    let restitution = match &case.restitution {
+        None => Number::from_f64(1.0)?,
+        Some(collide::number::Given::Known(r)) => r.number().clone(),
+        Some(_) => anyhow::bail!(
+            "-e ?: rigid impacts solve forward only: give the restitution (e in [0, 1])"
+        ),
+    };
+    Ok(Homework {
+        masses,
+        velocities: [velocity(0)?, velocity(1)?],
+        spins: [spin(0)?, spin(1)?],
+        ball: rigid.ball.clone(),
+        target: rigid.target.clone(),
+        pivot: rigid.pivot.clone(),
+        hit_at: rigid.hit_at.clone(),
+        laws: LawsTyped {
+            restitution,
+            friction: rigid.friction.clone(),
+            law: rigid.law,
+            tangential_restitution: rigid.tangential_restitution.clone(),
+        },
+        exact,
+        // The homework shapes are in the plane: no ODE (a scene's `tol` sets it in space).
+        rtol: None,
+    })
+}
+
+/// The units of a posed problem: SI when it had any unit.
+fn units(si: bool, energy: Option<&'static EnergyUnit>) -> Result<RigidUnits> {
+    let mut units = if si {
+        Units {
+            mass: Some("kg"),
+            velocity: Some("m/s"),
+            energy_as: None,
+        }
+    } else {
+        Units::default()
+    };
+    if let Some(e) = energy {
+        units = units.with_energy_unit(e)?;
+    }
+    Ok(RigidUnits { si, units })
+}
+
+/// The report of a rigid problem in `format`, and its exit status (1: energy created).
+pub fn report_of(
+    problem: Problem,
+    show: &Sections,
+    exact: bool,
+    energy: Option<&'static EnergyUnit>,
+    format: Format,
+) -> Result<(String, u8)> {
+    let u = units(problem.si, energy)?;
+    let style = Style::new(exact, u.units.energy_scale());
+    let outcome = match collide::rigid::solve(problem) {
+        Ok(o) => o,
+        Err(ImpactError::NotApproaching(along)) => {
+            let note = format!(
+                "Note: the bodies do not approach at the contact: n.w = {along} <= 0 (w the \
+                 relative velocity of the contact points), so they do not collide (no FIN)."
+            );
+            return Ok(match format {
+                Format::Text => (collide::report::text::wrap(&note, 80, "  "), 0),
+                Format::Json => (
+                    json::render(&serde_json::json!({ "approaching": false, "note": note })),
+                    0,
+                ),
+            });
+        }
+        Err(e) => return Err(e.into()),
+    };
+    let status = u8::from(outcome.paradox().is_some());
+    let out = match format {
+        Format::Text => {
+            report::header(&outcome, &style, &u) + &report::text(&outcome, show, &style, &u)?
+        }
+        Format::Json => json::render(&report::json(&outcome, show, &style, &u)?),
+    };
+    Ok((out, status))
+}
+
+/// The sections asked for, among those that mean something for rigid bodies.
+pub fn show(list: &[Section]) -> Result<Sections> {
+    if let Some(other) = list.iter().find(|s| !report::SECTIONS.contains(s)) {
+        anyhow::bail!(
+            "--show {}: for rigid bodies the sections are vectors, momentum, forms (the inertia \
+             tensor, the Jacobian rows, K), energy and all",
+            clap::ValueEnum::to_possible_value(other)
+                .map(|v| v.get_name().to_string())
+                .unwrap_or_default()
+        );
+    }
+    Ok(Sections::new(if list.is_empty() {
+        report::DEFAULT.to_vec()
+    } else {
+        list.to_vec()
+    }))
+}
+
+/// The picture of a rigid impact typed on the command line.
+pub fn svg(case: &CaseArgs, rigid: &RigidArgs) -> Result<String> {
+    let problem = homework(case, rigid, false)?.pose()?;
+    let outcome = collide::rigid::solve(problem)?;
+    Ok(collide::plot::rigid::svg(&outcome))
+}
