@@ -18,5 +18,6 @@ mod properties;
 mod readme;
 mod resources;
 mod shell;
+mod sweeps;
 mod tables;
 mod track;
