@@ -2,22 +2,49 @@
 
 mod cli;
 mod commands;
+mod usage;
 
+use std::ffi::OsString;
 use std::io::Write;
 use std::process::ExitCode;
 
-use clap::Parser;
+use clap::{CommandFactory, FromArgMatches};
 use collide::output::diagnostic;
+use collide::terminal;
 
 fn main() -> ExitCode {
     // Signals remove partial output files; a file-size limit is an error, not a silent death.
     collide::output::guard_signals();
-    let cli = match cli::Cli::try_parse() {
+    let args: Vec<OsString> = std::env::args_os().collect();
+    // Text, --help and errors fit the terminal: COLUMNS, else 80; --wide lifts the limit. Read
+    // before parsing, so that --help and usage errors are laid out for it too.
+    let wide = args
+        .iter()
+        .skip(1)
+        .take_while(|a| *a != "--")
+        .any(|a| a == "--wide");
+    let width = terminal::width_for(wide, std::env::var("COLUMNS").ok().as_deref());
+    terminal::set_width(width);
+    let command = cli::Cli::command()
+        .term_width(if width == terminal::UNLIMITED {
+            0
+        } else {
+            width
+        })
+        .after_help(after_help(width));
+    let cli = match command
+        .clone()
+        .try_get_matches_from(&args)
+        .and_then(|m| cli::Cli::from_arg_matches(&m))
+    {
         Ok(cli) => cli,
         // Usage errors on stderr (cut to a sane length), --help and --version on stdout; a
         // closed stream is no reason to panic.
         Err(e) if e.use_stderr() => {
-            diagnostic(format_args!("{}", e.render().to_string().trim_end()));
+            diagnostic(format_args!(
+                "{}",
+                usage::explain(&e, &command, &args).trim_end()
+            ));
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -25,6 +52,9 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
     };
+    if cli.wide {
+        terminal::set_width(terminal::UNLIMITED);
+    }
     if let Some(digits) = cli.sig {
         collide::number::set_text_digits(digits);
     }
@@ -51,6 +81,25 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// The end of `collide --help`: the lecture's words and the exit statuses, each wrapped to
+/// `width` under its meaning's first column.
+fn after_help(width: usize) -> String {
+    let hanging = |label: &str, column: usize, meaning: &str| {
+        let line = format!("  {label:<column$}{meaning}", column = column - 2);
+        terminal::wrap(&line, width, &" ".repeat(column))
+    };
+    let mut out = String::from("Words:\n");
+    for (word, meaning) in cli::WORDS {
+        out.push_str(&hanging(word, 16, meaning));
+    }
+    out.push_str("\nExit status:\n");
+    for line in cli::EXIT_STATUS.lines().skip(1) {
+        let (status, meaning) = line.trim_start().split_once(' ').unwrap_or((line, ""));
+        out.push_str(&hanging(status, 7, meaning.trim_start()));
+    }
+    out.trim_end().to_string()
 }
 
 /// Whether the error is a closed stdout, wherever it is in the chain.

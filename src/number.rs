@@ -69,22 +69,49 @@ impl PartialEq for Number {
     }
 }
 
-/// Why a text is not a number.
+/// Text as it may be quoted in a message: control characters escaped (`'5\u{7}'` for a BEL),
+/// so none is lost (a terminal, or clap's rendering, drops them) or sent to the terminal.
+pub fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
+/// Why a text is not a number. Quoted values are shown with [`printable`].
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum NumberError {
     #[error("an empty value is not a number: expected {EXPECTED}")]
     Empty,
-    #[error("'{0}' is not a number: expected {EXPECTED}")]
+    #[error("'{}' is not a number: expected {EXPECTED}", printable(.0))]
     Syntax(String),
-    #[error("'{0}' divides by zero")]
+    #[error("'{}' divides by zero", printable(.0))]
     ZeroDenominator(String),
-    #[error("'{0}' is too large for binary64 (|x| must be below 1.8e308); try smaller units")]
+    #[error("'{}' is too large for binary64 (|x| must be below 1.8e308)", printable(.0))]
     Overflow(String),
-    #[error("'{0}' is too small for binary64 (it rounds to 0; |x| must be above 4.9e-324)")]
-    Underflow(String),
     #[error(
-        "'{start}...' is a number of {chars} characters: at most {MAX_CHARS} are read (see the \
-         README's limits)"
+        "'{}' is too small for binary64 (it rounds to 0; |x| must be above 4.9e-324)",
+        printable(.0)
+    )]
+    Underflow(String),
+    /// A fraction whose numerator or denominator has a decimal exponent beyond
+    /// [`MAX_PART_EXPONENT`] (whatever the fraction's value).
+    #[error(
+        "'{}': the numerator and denominator of a fraction are read up to decimal exponents of \
+         +-{MAX_PART_EXPONENT} (each of about that many digits at most); write it with smaller \
+         exponents (1e100000/1e99999 as 10/1)",
+        printable(.0)
+    )]
+    PartExponent(String),
+    #[error(
+        "'{}...' is a number of {chars} characters: at most {MAX_CHARS} are read (see the \
+         README's limits)",
+        printable(.start)
     )]
     TooLong { start: String, chars: usize },
 }
@@ -181,6 +208,14 @@ fn check_range(d: &Decimal, text: &str, limit: i64) -> Result<(), NumberError> {
     Ok(())
 }
 
+/// A fraction's part within the exponents read (the limit is on the part, not on a value).
+fn check_part(d: &Decimal, text: &str) -> Result<(), NumberError> {
+    if !d.is_zero() && d.magnitude().abs() > MAX_PART_EXPONENT {
+        return Err(NumberError::PartExponent(text.to_string()));
+    }
+    Ok(())
+}
+
 impl Number {
     /// The nearest binary64 to the typed value.
     pub fn value(&self) -> f64 {
@@ -229,6 +264,10 @@ impl Number {
     /// from final velocities, a unit conversion, a long typed value) its nearest binary64 in
     /// text digits, marked `≈`: exact fractions are for `--exact`'s own lines.
     pub fn brief(&self) -> String {
+        // A typed -0 (or -0.0, 0/-5) is 0: a header shows no sign on it.
+        if self.value == 0.0 && self.exact().is_zero() {
+            return "0".into();
+        }
         let text = self.to_string();
         let fraction = text.contains('/') && (self.derived || text.len() > 24);
         if fraction || text.len() > 40 {
@@ -304,8 +343,8 @@ impl Number {
                 let (n, d) = (n.trim(), d.trim());
                 let n = Decimal::parse(n).ok_or_else(syntax)?;
                 let d = Decimal::parse(d).ok_or_else(syntax)?;
-                check_range(&n, text, MAX_PART_EXPONENT)?;
-                check_range(&d, text, MAX_PART_EXPONENT)?;
+                check_part(&n, text)?;
+                check_part(&d, text)?;
                 if d.is_zero() {
                     return Err(NumberError::ZeroDenominator(text.to_string()));
                 }

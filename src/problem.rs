@@ -264,6 +264,7 @@ impl Problem {
             ball: (q(v.get(ball)), fin(ball)),
             wall: (q(v.get(wall)), fin(wall)),
             e: e.clone(),
+            side: wall,
         };
         let s = crate::wall::solve(problem)?;
         let ((bv, bf), (wv, wf)) = crate::wall::vars(wall);

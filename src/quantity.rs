@@ -52,8 +52,9 @@ impl Scalar for f64 {
     fn quarter(&self) -> f64 {
         self / 4.0
     }
+    /// `-x`, with `-0 = 0`: a negated zero (FIN' = -IN with IN = (2, 0)) prints as 0, not -0.
     fn neg(&self) -> f64 {
-        -self
+        if *self == 0.0 { 0.0 } else { -self }
     }
     fn recip(&self) -> Option<f64> {
         (*self != 0.0).then(|| 1.0 / self)
@@ -119,10 +120,13 @@ impl Scalar for Exact {
             // Fractions throughout (`-1/4` beside `-1/3`, never `-0.25` beside `-1/3`); a long
             // fraction with a short decimal (`21/5000000000000000`) as that decimal.
             // Long values are never written out in full only to be dropped.
+            // A long terminating value in exact scientific notation (1/5e-324 = 2e323), before
+            // giving up to digits marked approximate.
             Exact::Rational(q) => match fraction_within(q, 40) {
                 Some(f) if f.len() <= 24 => f,
                 f => terminating_decimal(q, 40)
                     .or(f)
+                    .or_else(|| short_scientific(q))
                     .unwrap_or_else(|| format!("≈{}", significant(q, APPROX_DIGITS))),
             },
             Exact::Approx(q) => format!("≈{}", significant(q, APPROX_DIGITS)),
@@ -163,6 +167,15 @@ impl Exact {
             Exact::Approx(_) => Exact::Approx(q),
         }
     }
+}
+
+/// The exact value in scientific notation when it has at most `APPROX_DIGITS` significant
+/// digits (`2e323`): as short as the approximation, and exact.
+fn short_scientific(q: &Q) -> Option<String> {
+    scientific(q, 40).filter(|t| {
+        let mantissa = t.split('e').next().unwrap_or_default();
+        mantissa.chars().filter(char::is_ascii_digit).count() <= APPROX_DIGITS
+    })
 }
 
 /// `"p/q"`, or `"p"` for an integer.

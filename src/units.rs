@@ -5,7 +5,7 @@
 
 use crate::rational::Q;
 
-use crate::number::{FieldsError, Given, Number, NumberError, split_fields};
+use crate::number::{FieldsError, Given, Number, NumberError, printable, split_fields};
 
 /// What a unit measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -217,20 +217,20 @@ const AMBIGUOUS: &[(&str, &str)] = &[
 pub enum UnitError {
     #[error("ambiguous unit: {0}")]
     Ambiguous(&'static str),
-    #[error("'{name}' is a unit of {is}, not of {wanted}", is = .is.name(), wanted = .wanted.name())]
+    #[error("'{}' is a unit of {is}, not of {wanted}", printable(.name), is = .is.name(), wanted = .wanted.name())]
     WrongDimension {
         name: String,
         is: Dimension,
         wanted: Dimension,
     },
-    #[error("unknown {} unit '{name}': did you mean '{near}'? (known: {known})", .wanted.name())]
+    #[error("unknown {} unit '{}': did you mean '{near}'? (known: {known})", .wanted.name(), printable(.name))]
     DidYouMean {
         name: String,
         wanted: Dimension,
         near: &'static str,
         known: String,
     },
-    #[error("unknown {} unit '{name}': expected one of {known}", .wanted.name())]
+    #[error("unknown {} unit '{}': expected one of {known}", .wanted.name(), printable(.name))]
     Unknown {
         name: String,
         wanted: Dimension,
@@ -432,9 +432,15 @@ pub enum QuantityError {
     Number(#[from] NumberError),
     #[error(transparent)]
     Unit(#[from] UnitError),
-    #[error("contact time '{0}' must be above 0 (a duration such as '2 ms' or '0.01 s')")]
+    #[error(
+        "contact time '{}' must be above 0 (a duration such as '2 ms' or '0.01 s')",
+        printable(.0)
+    )]
     NotPositive(String),
-    #[error("'{0}': a height must be >= 0; give the direction as a sign: '-height 2 m' (down)")]
+    #[error(
+        "'{}': a height must be >= 0; give the direction as a sign: '-height 2 m' (down)",
+        printable(.0)
+    )]
     NegativeHeight(String),
 }
 
@@ -461,7 +467,8 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
     }
     // The longest prefix that is a number, followed by a unit name. Only the places where a
     // unit could start are tried (before a space or a letter), so a long text costs one parse
-    // per such place, not one per character.
+    // per such place, not one per character. The longest prefix that reads as a number out of
+    // range is that number's error ('1e9999 m': too large, not the unit 'e9999 m').
     let cut = (1..=t.len())
         .rev()
         .filter(|&i| {
@@ -471,7 +478,12 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
                     .next()
                     .is_none_or(|c| c.is_whitespace() || c.is_alphabetic())
         })
-        .find(|&i| t[..i].parse::<Number>().is_ok());
+        .find_map(|i| match t[..i].parse::<Number>() {
+            Ok(_) => Some(Ok(i)),
+            Err(NumberError::Syntax(_) | NumberError::Empty) => None,
+            Err(e) => Some(Err(e)),
+        })
+        .transpose()?;
     let Some(i) = cut else {
         // No number at all: the number parser says why.
         return Err(t
@@ -544,7 +556,10 @@ pub const ENERGY_UNITS: &[EnergyUnit] = &[
 /// Why energies cannot be given in the unit asked for.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum EnergyUnitError {
-    #[error("unknown energy unit '{0}': expected one of J, kJ, eV, MeV, ft*lbf, cal")]
+    #[error(
+        "unknown energy unit '{}': expected one of J, kJ, eV, MeV, ft*lbf, cal",
+        printable(.0)
+    )]
     Unknown(String),
     #[error(
         "--energy-unit {0} needs units on the masses and velocities (e.g. '2 kg', '3 m/s'), \

@@ -83,11 +83,12 @@ impl WallCase {
 }
 
 /// The values of a wall problem, `None` for `?`: the ball's initial and final velocity, the
-/// wall's, and `e`.
+/// wall's, and `e`; and which body the wall is (0: on the left, 1: on the right).
 pub struct WallProblem {
     pub ball: (Option<Q>, Option<Q>),
     pub wall: (Option<Q>, Option<Q>),
     pub e: Option<Q>,
+    pub side: usize,
 }
 
 /// Solves a wall problem for its unknown (restitution is the one law, so at most one of the
@@ -161,6 +162,34 @@ pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
             crate::quantity::fraction(&e)
         )));
     }
+    // A value solved from FIN (the ball's IN velocity, or e) must describe a bounce: the ball
+    // moving toward the wall at IN (a wall on the left is met by a ball moving left, v < w). A
+    // ball moving away never meets it, so restitution says nothing about it (`v2 = 1` from
+    // FIN -0.5 and e = 1/2: refused, as e < 0 is). FIN from IN is the forward case, which
+    // prints with a note.
+    let receding = if p.side == 0 { v > w } else { v < w };
+    let from_fin = unknown.iter().any(|u| u == "v" || u == "e");
+    if from_fin && receding {
+        let (name, side) = if p.side == 0 {
+            ("v2", "left")
+        } else {
+            ("v1", "right")
+        };
+        let v_text = crate::quantity::fraction(&v);
+        let solved = if unknown[0] == "v" {
+            format!("{name} = {v_text}")
+        } else {
+            format!(
+                "e = {} with {name} = {v_text}",
+                crate::quantity::fraction(&e)
+            )
+        };
+        return Err(UnknownError::Unphysical(format!(
+            "{solved}: the ball moves away from the wall (on the {side}, at {}), so they never \
+             meet and nothing bounces; check the signs of the velocities",
+            crate::quantity::fraction(&w)
+        )));
+    }
     Ok(WallSolution {
         v,
         f,
@@ -204,6 +233,7 @@ mod tests {
             ball: (Some(q("-4")), Some(q("3"))),
             wall: (Some(q("0")), None),
             e: None,
+            side: 0,
         })
         .unwrap();
         assert_eq!(s.e, q("3/4"));
@@ -212,6 +242,7 @@ mod tests {
             ball: (Some(q("0")), None),
             wall: (Some(q("1")), None),
             e: Some(q("1")),
+            side: 0,
         })
         .unwrap();
         assert_eq!(s.f, q("2"));
@@ -220,6 +251,7 @@ mod tests {
             ball: (Some(q("-4")), Some(q("-3"))),
             wall: (Some(q("0")), None),
             e: None,
+            side: 0,
         });
         assert!(e.is_err());
     }

@@ -8,7 +8,7 @@ use collide::report::{contact as report, json};
 use collide::table::runs::contact::ContactSweep;
 
 use super::Outcome;
-use crate::cli::{ContactArgs, Format, RunFormat};
+use crate::cli::{ContactArgs, Format, MethodArg, RunFormat};
 
 pub fn run(args: ContactArgs) -> Result<Outcome> {
     if !args.table.vary.is_empty() {
@@ -37,6 +37,21 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
         .check()?;
     }
     if args.work_precision {
+        // The ladder runs each method at its own steps or tolerances, to its own step cap: a
+        // method, step, tolerance or cap given for one run would be silently ignored.
+        let one_run = [
+            (args.method != MethodArg::Auto).then_some("--method"),
+            args.dt.map(|_| "--dt"),
+            args.tol.map(|_| "--tol"),
+            (args.max_steps != contact::DEFAULT_MAX_STEPS).then_some("--max-steps"),
+        ];
+        if let Some(flag) = one_run.into_iter().flatten().next() {
+            anyhow::bail!(
+                "{flag} is for one run; --work-precision runs every method on its own ladder of \
+                 steps and tolerances: choose the methods with --methods, or drop \
+                 --work-precision"
+            );
+        }
         let methods: Vec<Method> = match &args.methods {
             Some(list) => list.iter().filter_map(|m| m.method()).collect(),
             None => Method::ALL.to_vec(),
@@ -45,8 +60,10 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
             anyhow::bail!("--methods lists no method to compare ('auto' is not one)");
         }
         let work = contact::work::work_precision(&setup, &methods, until)?;
+        // Every number checked, whatever the format: none is NaN or infinite.
+        let checked = report::work_json(&work)?;
         let stdout = match format {
-            Format::Json => json::render(&report::work_json(&work)?),
+            Format::Json => json::render(&checked),
             Format::Text => report::work_text(&setup, &work),
         };
         if let Some(path) = &args.plot {
@@ -63,8 +80,9 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
         trace: args.plot.is_some(),
     };
     let run = contact::simulate(&setup, &settings)?;
+    let checked = report::json(&run)?;
     let stdout = match format {
-        Format::Json => json::render(&report::json(&run)?),
+        Format::Json => json::render(&checked),
         Format::Text => report::text(&setup, &run),
     };
     if let Some(path) = &args.plot {

@@ -13,6 +13,12 @@ use super::Outcome;
 use crate::cli::{Format, FramesArgs};
 
 pub fn run(args: FramesArgs) -> Result<Outcome> {
+    if args.case.spatial() {
+        return super::space_solve::frames(&args);
+    }
+    for f in &args.frame {
+        f.on_line()?;
+    }
     let case = args.case.into_case(args.exact)?;
     let stuck = case.restitution().is_totally_inelastic();
     if args.reverse && stuck {
@@ -45,7 +51,16 @@ fn render<L: Lab>(
 where
     L::N: Agree,
 {
-    let t: FramesTable<L::N> = frames::table(lab, list, reverse)?;
+    let t: FramesTable<L::N> =
+        frames::table(lab, list, reverse, case.units.energy_scale().as_ref()).map_err(
+            |e| match e {
+                // frames has --exact but no --show.
+                frames::FramesError::Unrepresentable(u) => frames::FramesError::Unrepresentable(
+                    u.with_way_out("use --exact or rescale the units"),
+                ),
+                e => e,
+            },
+        )?;
     Ok(match format {
         Format::Json => json::render(&t),
         Format::Text => frames::text(case, &t),

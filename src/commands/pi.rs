@@ -67,7 +67,18 @@ pub fn run(args: PiArgs) -> Result<Outcome> {
         ));
     }
     let simulation = if simulate {
-        let big: Number = format!("1e{}", 2 * u64::from(args.n)).parse()?;
+        // The mass ratio 100^N must be a binary64 (1.8e308 at most: N <= 154).
+        let big: Number = format!("1e{}", 2 * u64::from(args.n))
+            .parse()
+            .map_err(|_| {
+                anyhow::anyhow!(
+                    "pi {n} --simulate: the mass ratio 100^{n} = 1e{} is beyond binary64 (at \
+                     most 1.8e308, so N <= 154); the count itself needs no simulation: collide \
+                     pi {n} --no-simulate",
+                    2 * u64::from(args.n),
+                    n = args.n
+                )
+            })?;
         let track = Track::pi_billiards("1".parse()?, Mass::new(big)?);
         track.check()?;
         let limits = Limits {

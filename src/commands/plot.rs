@@ -18,12 +18,20 @@ pub fn run(args: PlotArgs) -> Result<Outcome> {
     if args.case.spatial() {
         return plane(&args);
     }
+    args.frame.on_line()?;
     let kind = args.kind.unwrap_or(Kind::Velocity);
     if args.frames && kind != Kind::Velocity {
         anyhow::bail!(
             "--frames overlays the standard frames on the velocity diagram; --kind {} draws \
              world lines in one frame (choose it with --frame)",
             format!("{kind:?}").to_lowercase()
+        );
+    }
+    if let Some(unit) = args.case.energy_unit {
+        anyhow::bail!(
+            "--energy-unit {}: a picture labels its energy ellipses in the case's own units (mass \
+             unit x velocity unit^2); give the energies in {0} with collide solve",
+            unit.name
         );
     }
     let case = args.case.into_case(false)?;
@@ -66,7 +74,10 @@ pub fn draw(case: &Case, frame: &Frame, kind: Kind, frames: bool, target: &Path)
         }
         return Ok(format!(
             "\n{}",
-            plot::term::render(&Picture::new(case, frame, frames), terminal_width())
+            plot::term::render(
+                &Picture::new(case, frame, frames),
+                collide::terminal::width()
+            )
         ));
     }
     write_file(target, plot::svg(case, frame, kind, frames).as_bytes())?;
@@ -82,7 +93,8 @@ fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
         Section::Energy,
         Section::Ellipses,
     ]);
-    Report::build(&Binary64::new(&case.collision, frame), &needed)?;
+    Report::build(&Binary64::new(&case.collision, frame), &needed)
+        .map_err(|u| u.with_way_out("rescale the units"))?;
     let p = Picture::new(case, frame, false);
     let fastest = [p.v_in.0, p.v_in.1, p.v_fin.0, p.v_fin.1]
         .iter()
@@ -93,12 +105,4 @@ fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
         );
     }
     Ok(())
-}
-
-/// The terminal's width: `COLUMNS`, else 80.
-fn terminal_width() -> usize {
-    std::env::var("COLUMNS")
-        .ok()
-        .and_then(|c| c.parse().ok())
-        .unwrap_or(80)
 }

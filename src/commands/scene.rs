@@ -76,6 +76,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                 AnyScene::Special(scene) => Some(solve_special(scene)?),
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
+                AnyScene::Space(scene) => Some(solve_space(scene)?),
             })
         };
         match one() {
@@ -142,13 +143,12 @@ fn several_json(checked: &[Checked], listed: &[Listed]) -> serde_json::Value {
 }
 
 fn solve(scene: Scene) -> Result<Checked> {
-    let sections = scene.sections_needed();
+    let mut sections = scene.sections_needed();
+    // energy_unit = "kJ": every energy in kJ, as the header says.
+    sections.energy_scale = scene.case.units.energy_scale();
     let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.about.path.display()))?;
-    let mut text = result.text(&scene.case, &scene.show);
-    if let Some(s) = &scene.solved {
-        text = solved::text(s, scene.exact) + &text;
-    }
+    let mut text = result.text(&scene.case, &scene.show, scene.solved.as_ref());
     if let Some(p) = &scene.plot {
         plot::draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
         text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
@@ -172,13 +172,14 @@ fn solve_special(scene: SpecialScene) -> Result<Checked> {
         compute.insert(s);
     }
     let event = scene.event.special();
+    compute.energy_scale = event.units().energy_scale();
     let result = event
         .render(&compute, &scene.show, scene.exact)
         .with_context(at)?;
     let head = scene
         .solved
         .as_ref()
-        .map(|s| solved::text(s, scene.exact))
+        .map(|s| solved::text(s, scene.exact, &event.units()))
         .unwrap_or_default();
     let mut json = result.json;
     solved::annotate(
@@ -210,6 +211,29 @@ fn solve_contact(scene: ContactScene) -> Result<Checked> {
     let json = contact_report::json(&run).with_context(at)?;
     let text = contact_report::text(&scene.setup, &run);
     check(scene.about, text, json)
+}
+
+fn solve_space(scene: collide::scene::SpaceScene) -> Result<Checked> {
+    use collide::report::space::solved::{Options, render};
+    let at = || format!("{}", scene.about.path.display());
+    let posed = scene.input.pose().with_context(at)?;
+    let solved = collide::space::solve::solve(&posed.statement).with_context(at)?;
+    let rendered = render(
+        &posed,
+        &solved,
+        &Options {
+            frame: &scene.frame,
+            show: scene.show,
+            exact: scene.input.exact,
+            reverse: scene.reverse,
+            fin_given: scene.input.fin.is_some(),
+            energy_unit: scene.energy_unit,
+        },
+    )
+    .with_context(at)?;
+    let mut checked = check(scene.about, rendered.text, rendered.json)?;
+    checked.inconsistent = rendered.inconsistent;
+    Ok(checked)
 }
 
 /// Checks a scene's expectations against its report; a key that names nothing in the report is

@@ -23,6 +23,19 @@ pub fn sweep(args: SweepArgs) -> Result<Outcome> {
 
 /// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
 pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> Result<Outcome> {
+    if let Some(unit) = case.units.energy_as {
+        // A table's columns carry no unit: its energies are the case's own.
+        anyhow::bail!(
+            "--energy-unit {} (energy_unit in a scene): a table's energies are in the case's own \
+             unit, {}, and its columns carry no unit label; drop it, or convert the columns",
+            unit.name,
+            collide::units::Units {
+                energy_as: None,
+                ..case.units.clone()
+            }
+            .energy()
+        );
+    }
     let general = !case.inertia().is_diagonal();
     if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
         anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");

@@ -30,11 +30,17 @@ pub struct Linear {
 }
 
 impl Linear {
-    /// From the law's constants and the pair's reduced mass.
+    /// From the law's constants and the pair's reduced mass. `zeta = c / (2 sqrt(k) sqrt(mu))`
+    /// with the roots taken apart, so a tiny `k mu` (5e-324 x 0.5 rounds to 0) gives a tiny
+    /// root, not 0 and a NaN ratio; no damping is `zeta = 0` exactly.
     pub fn new(k: f64, c: f64, mu: f64) -> Linear {
         Linear {
             omega0: (k / mu).sqrt(),
-            zeta: c / (2.0 * (k * mu).sqrt()),
+            zeta: if c == 0.0 {
+                0.0
+            } else {
+                c / (2.0 * k.sqrt() * mu.sqrt())
+            },
         }
     }
 
@@ -107,9 +113,9 @@ impl Linear {
         Some(if miss(lo) <= miss(hi) { lo } else { hi })
     }
 
-    /// The damping coefficient `c = 2 zeta sqrt(k mu)`.
+    /// The damping coefficient `c = 2 zeta sqrt(k) sqrt(mu)` (the inverse of `new`'s `zeta`).
     pub fn damping(k: f64, mu: f64, zeta: f64) -> f64 {
-        2.0 * zeta * (k * mu).sqrt()
+        2.0 * zeta * (k.sqrt() * mu.sqrt())
     }
 }
 

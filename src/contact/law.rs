@@ -80,19 +80,29 @@ impl Law {
         }
     }
 
-    /// The fastest angular frequency of a contact with reduced mass `mu` hit at speed `v`: the
-    /// linear `sqrt(k/mu)`, or for Hertz the frequency of the stiffness `dF/dd` at the largest
-    /// overlap. Used to pick a method and to flag explicit steps past their stability limit.
+    /// The fastest rate of a contact with reduced mass `mu` hit at speed `v`: its natural
+    /// frequency, or its damping rate where that is faster (`c/mu` for the linear law,
+    /// `k d^(3/2) chi / mu` at the largest overlap for Hunt-Crossley). Used to pick a method and
+    /// to flag explicit steps past their stability limit.
     pub fn frequency(&self, mu: f64, v: f64) -> f64 {
+        let natural = self.natural_frequency(mu, v);
         match *self {
-            Law::Linear { k, c } => {
-                let w0 = (k / mu).sqrt();
-                // Strong damping adds a fast decay rate c/mu.
-                w0.max(c / mu)
-            }
+            Law::Linear { c, .. } => natural.max(c / mu),
             Law::Hertz { k, chi } => {
                 let d = super::closed::hertz_max_overlap(k, mu, v);
-                ((1.5 * k * d.sqrt() / mu).sqrt()).max(k * d * d.sqrt() * chi / mu)
+                natural.max(k * d * d.sqrt() * chi / mu)
+            }
+        }
+    }
+
+    /// The undamped angular frequency: `sqrt(k/mu)` for the linear law, for Hertz that of the
+    /// stiffness `dF/dd` at the largest overlap, `sqrt(3/2 k d^(1/2) / mu)`.
+    pub fn natural_frequency(&self, mu: f64, v: f64) -> f64 {
+        match *self {
+            Law::Linear { k, .. } => (k / mu).sqrt(),
+            Law::Hertz { k, .. } => {
+                let d = super::closed::hertz_max_overlap(k, mu, v);
+                (1.5 * k * d.sqrt() / mu).sqrt()
             }
         }
     }

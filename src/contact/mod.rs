@@ -228,6 +228,49 @@ pub enum ContactError {
     )]
     TooShort(f64),
     #[error(
+        "the shortest contact lasts {:.3e}, too short to integrate (below 1e-100): its damping \
+         (zeta = {:.3e}{}) ends it that fast; {}",
+        .t, .zeta, restitution_note(*.e), damping_way_out(*.e_min, *.zeta_max)
+    )]
+    TooDamped {
+        t: f64,
+        zeta: f64,
+        /// The contact's restitution, when it is not too small to compute.
+        e: f64,
+        /// The least restitution (and the most damping) whose contact lasts 1e-100.
+        e_min: f64,
+        zeta_max: f64,
+    },
+    #[error(
+        "the reference final velocities are not finite ({}): no error can be measured against \
+         them",
+        num(*.0)
+    )]
+    Reference(f64),
+    #[error(
+        "walls on both sides: the bodies bounce between them for ever, so the run never ends by \
+         itself; give --until T (until = T in a scene) for the state at time T"
+    )]
+    Forever,
+    #[error(
+        "{who} at t = {}: {positions} (an overlap of {} where {} means the centres met); the \
+         result is not printed: the contact is too soft for this speed and these sizes. Use a \
+         stiffer law ({flag}, now {}), a smaller speed or larger --sizes",
+        num(*.t), num(*.overlap), num(*.reach), num(*.k)
+    )]
+    Through {
+        /// "bodies 1 and 2 passed through each other", "body 1 passed through the right wall".
+        who: String,
+        t: f64,
+        /// "x1 = 1.6, x2 = 1.5" or "x1 = 0.6 with the wall at 0.5", in the lab frame.
+        positions: String,
+        overlap: f64,
+        reach: f64,
+        /// The flag of the law that let them through, and its stiffness.
+        flag: &'static str,
+        k: f64,
+    },
+    #[error(
         "body {0} has size 0: contact forces act while bodies overlap, and a point overlaps \
          another only by passing through it; give --sizes (sizes = [...] in a scene)"
     )]
@@ -271,6 +314,28 @@ pub enum ContactError {
         end: f64,
         gain: f64,
     },
+}
+
+/// ", e = 1e-300" beside a damping ratio, when the restitution is above 0 in binary64.
+fn restitution_note(e: f64) -> String {
+    if e > 0.0 {
+        format!(", restitution e = {e:.3e}")
+    } else {
+        String::new()
+    }
+}
+
+/// What to give instead of a damping so heavy that the contact is too short to integrate.
+fn damping_way_out(e_min: f64, zeta_max: f64) -> String {
+    let bound = if e_min > 0.0 {
+        format!(" (e >= {e_min:.3e} here, zeta <= {zeta_max:.3e})")
+    } else {
+        format!(" (zeta <= {zeta_max:.3e} here)")
+    };
+    format!(
+        "give less damping or a larger restitution{bound}; for bodies that stick (e = 0), use \
+         collide track -e 0"
+    )
 }
 
 /// `x` to three decimals, or in scientific notation when large.
@@ -398,15 +463,25 @@ impl Setup {
         self.contacts()
             .into_iter()
             .map(|who| {
-                let (spec, which, mu) = match who {
-                    Contact::Pair(i) => (self.law, "", m[i] * m[i + 1] / (m[i] + m[i + 1])),
-                    Contact::LeftWall => (self.wall, "wall ", m[0]),
-                    Contact::RightWall => (self.wall, "wall ", m[m.len() - 1]),
+                let s = |i: usize| self.bodies[i].size;
+                let n = m.len();
+                let (spec, which, mu, reach) = match who {
+                    // m1 (m2 / (m1 + m2)): the product m1 m2 would underflow (1e-200 each)
+                    // or overflow (1e200) where the reduced mass does not.
+                    Contact::Pair(i) => (
+                        self.law,
+                        "",
+                        m[i] * (m[i + 1] / (m[i] + m[i + 1])),
+                        (s(i) + s(i + 1)) / 2.0,
+                    ),
+                    Contact::LeftWall => (self.wall, "wall ", m[0], s(0) / 2.0),
+                    Contact::RightWall => (self.wall, "wall ", m[n - 1], s(n - 1) / 2.0),
                 };
                 Ok(Slot {
                     who,
                     law: resolve(spec, mu, which)?,
                     mu,
+                    reach,
                 })
             })
             .collect()
@@ -503,10 +578,19 @@ pub fn simulate(setup: &Setup, settings: &Settings) -> Result<ContactRun, Contac
     if let Some(i) = setup.bodies.iter().position(|b| b.size <= 0.0) {
         return Err(ContactError::PointBody(i + 1));
     }
+    // Between two walls a moving body meets a wall or another body again and again: no run ends
+    // by itself (each contact leaves it some speed: e > 0 for every law).
+    if setup.left_wall.is_some()
+        && setup.right_wall.is_some()
+        && settings.until.is_none()
+        && setup.bodies.iter().any(|b| b.v != 0.0)
+    {
+        return Err(ContactError::Forever);
+    }
     let scales = Scales::of(setup, &slots);
     // Measured: contacts of 1e-75 run as well as any; at 1e-150 the solvers stall on steps.
-    if scales.t_min < 1e-100 {
-        return Err(ContactError::TooShort(scales.t_min));
+    if scales.t_min < SHORTEST {
+        return Err(too_short(&slots, &scales));
     }
     let method = settings.method.unwrap_or(scales.auto());
     let (dt, tol) = steps_for(method, settings, &scales)?;
@@ -529,13 +613,52 @@ pub fn simulate(setup: &Setup, settings: &Settings) -> Result<ContactRun, Contac
     Ok(run)
 }
 
+/// The shortest contact time integrated (measured: contacts of 1e-75 run as well as any; at
+/// 1e-150 the solvers stall on steps).
+const SHORTEST: f64 = 1e-100;
+
+/// Why the shortest contact is too short: heavy damping (a linear law whose damping rate `c/mu`
+/// is above its natural frequency), with the least restitution that would do; else the scales.
+fn too_short(slots: &[Slot], scales: &Scales) -> ContactError {
+    let shortest = (0..slots.len())
+        .max_by(|&a, &b| scales.omega[a].total_cmp(&scales.omega[b]))
+        .map(|i| &slots[i]);
+    if let Some(Slot {
+        law: Law::Linear { k, c },
+        mu,
+        ..
+    }) = shortest
+        && c / mu > (k / mu).sqrt()
+    {
+        let contact = closed::Linear::new(*k, *c, *mu);
+        // The fastest rate of a heavily damped contact is c/mu = 2 zeta omega0; its time
+        // scale pi / (c/mu) is SHORTEST at this zeta. Below zeta = 1 the undamped contact
+        // itself is too short: then the scales are the trouble.
+        let zeta_max = std::f64::consts::PI / (SHORTEST * 2.0 * contact.omega0);
+        if zeta_max <= 1.0 {
+            return ContactError::TooShort(scales.t_min);
+        }
+        return ContactError::TooDamped {
+            t: scales.t_min,
+            zeta: contact.zeta,
+            e: contact.restitution(),
+            e_min: closed::Linear::restitution_of(zeta_max),
+            zeta_max,
+        };
+    }
+    ContactError::TooShort(scales.t_min)
+}
+
 /// Time, length and speed scales of a setup, for tolerances, default steps and `auto`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scales {
     /// Largest initial relative speed.
     pub speed: f64,
-    /// Per slot: angular frequency at that speed.
+    /// Per slot: the fastest rate at that speed, the natural frequency or the damping rate
+    /// (`Law::frequency`).
     pub omega: Vec<f64>,
+    /// Per slot: the natural (undamped) frequency at that speed, the time scale of the contact.
+    pub natural: Vec<f64>,
     /// Smallest deepest overlap over the slots at that speed.
     pub overlap: f64,
     /// Shortest and longest contact time.
@@ -550,6 +673,10 @@ impl Scales {
         let speed = setup.speed_scale();
         let v = if speed > 0.0 { speed } else { 1.0 };
         let omega: Vec<f64> = slots.iter().map(|s| s.law.frequency(s.mu, v)).collect();
+        let natural: Vec<f64> = slots
+            .iter()
+            .map(|s| s.law.natural_frequency(s.mu, v))
+            .collect();
         let overlap = slots
             .iter()
             .map(|s| match s.law {
@@ -563,6 +690,7 @@ impl Scales {
             t_min: times.iter().copied().fold(f64::INFINITY, f64::min),
             t_max: times.iter().copied().fold(0.0, f64::max),
             omega,
+            natural,
             overlap,
             default_tol: if slots.iter().any(|s| matches!(s.law, Law::Hertz { .. })) {
                 AUTO_TOL_HERTZ
@@ -572,10 +700,13 @@ impl Scales {
         }
     }
 
-    /// Fastest over slowest contact frequency.
+    /// The fastest rate (a contact's frequency or damping rate) over the slowest natural
+    /// frequency: a soft contact beside a stiff one, or one contact damped so heavily that its
+    /// damping rate `c/mu` outruns its own time scale (`2 zeta` times its natural frequency),
+    /// is stiff.
     pub fn stiffness_ratio(&self) -> f64 {
         let hi = self.omega.iter().copied().fold(0.0, f64::max);
-        let lo = self.omega.iter().copied().fold(f64::INFINITY, f64::min);
+        let lo = self.natural.iter().copied().fold(f64::INFINITY, f64::min);
         if lo > 0.0 && lo.is_finite() {
             hi / lo
         } else {
@@ -583,7 +714,8 @@ impl Scales {
         }
     }
 
-    /// `auto`: bdf where two time scales differ by more than [`STIFF_RATIO`], else tsit45.
+    /// `auto`: bdf where two time scales differ by more than [`STIFF_RATIO`] (two contacts, or
+    /// one damped with `zeta` above 50), else tsit45.
     pub fn auto(&self) -> Method {
         if self.stiffness_ratio() > STIFF_RATIO {
             Method::Adaptive(Adaptive::Bdf)
@@ -778,13 +910,20 @@ fn integrate(
             }
             _ => unreachable!("steps_for gives a step to fixed methods and a tolerance otherwise"),
         }
-        .map_err(fail)?;
+        .map_err(|failure| match failure {
+            Failure::Through { t, slot, y } => {
+                // Positions in the lab frame: the stretch's start moved by y's displacements,
+                // and the frame's own motion.
+                let at: Vec<f64> = x.iter().zip(&y[..n]).map(|(x, u)| x + u + w * t).collect();
+                passed_through(setup, &slots[slot], t, &at, sys.overlap(slot, &y).0)
+            }
+            other => fail(other),
+        })?;
         for (xi, u) in x.iter_mut().zip(&end.y[..n]) {
             *xi += u;
         }
         v.copy_from_slice(&end.y[n..]);
         t = end.t;
-        through(setup, &x, t).map_err(fail)?;
         let Some(s) = end.event else {
             stop = "until";
             break;
@@ -878,33 +1017,48 @@ fn integrate(
     })
 }
 
-/// Bodies whose centres crossed (or crossed a wall) went through each other.
-fn through(setup: &Setup, x: &[f64], t: f64) -> Result<(), Failure> {
-    for i in 1..x.len() {
-        if x[i] <= x[i - 1] {
-            return Err(Failure::Through {
-                t,
-                what: format!("the centres of bodies {i} and {} crossed", i + 1),
-            });
-        }
+/// The error for slot `slot` overlapping as deep as its reach at `t`, with the lab positions
+/// `x`: who went through what, where, and what to change.
+fn passed_through(setup: &Setup, slot: &Slot, t: f64, x: &[f64], overlap: f64) -> ContactError {
+    let n = x.len();
+    let at = |i: usize| format!("x{} = {}", i + 1, num(x[i]));
+    let (who, positions, spec, flag) = match slot.who {
+        Contact::Pair(i) => (
+            format!("bodies {} and {} passed through each other", i + 1, i + 2),
+            format!("{}, {}", at(i), at(i + 1)),
+            setup.law,
+            "--stiffness",
+        ),
+        Contact::LeftWall => (
+            "body 1 passed through the left wall".to_string(),
+            format!(
+                "{} with the wall at {}",
+                at(0),
+                num(setup.left_wall.unwrap_or(f64::NAN))
+            ),
+            setup.wall,
+            "--wall-stiffness",
+        ),
+        Contact::RightWall => (
+            format!("body {n} passed through the right wall"),
+            format!(
+                "{} with the wall at {}",
+                at(n - 1),
+                num(setup.right_wall.unwrap_or(f64::NAN))
+            ),
+            setup.wall,
+            "--wall-stiffness",
+        ),
+    };
+    ContactError::Through {
+        who,
+        t,
+        positions,
+        overlap,
+        reach: slot.reach,
+        flag,
+        k: spec.k,
     }
-    if let Some(l) = setup.left_wall
-        && x[0] <= l
-    {
-        return Err(Failure::Through {
-            t,
-            what: "the centre of body 1 reached the left wall".into(),
-        });
-    }
-    if let Some(r) = setup.right_wall
-        && x[x.len() - 1] >= r
-    {
-        return Err(Failure::Through {
-            t,
-            what: format!("the centre of body {} reached the right wall", x.len()),
-        });
-    }
-    Ok(())
 }
 
 /// `collide track` on the same layout with the restitutions the contact laws give, where they do
@@ -915,7 +1069,9 @@ fn impulse_model(
     until: Option<f64>,
 ) -> Result<Option<ImpulseModel>, ContactError> {
     let e_of = |s: &Slot| match s.law {
-        Law::Linear { k, c } => Some(closed::Linear::new(k, c, s.mu).restitution()),
+        Law::Linear { k, c } => {
+            Some(closed::Linear::new(k, c, s.mu).restitution()).filter(|e| e.is_finite())
+        }
         Law::Hertz { chi, .. } => (chi == 0.0).then_some(1.0),
     };
     let mut pair: Option<f64> = None;

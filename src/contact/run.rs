@@ -37,8 +37,24 @@ pub enum Failure {
         "more than {0} steps (raise --max-steps, or use a larger --dt / --tol or an implicit method)"
     )]
     Steps(u64),
-    #[error("{what} at t = {t}: the bodies passed through each other or a wall")]
-    Through { t: f64, what: String },
+    /// Slot `slot`'s overlap reached the depth where the centres meet (`Slot::reach`) at `t`,
+    /// state `y`: a body went through another or through a wall.
+    #[error("a body passed through another or a wall at t = {t}")]
+    Through { t: f64, slot: usize, y: Vec<f64> },
+}
+
+/// Refuses a state in which any slot overlaps as deep as its reach (the centres met: a body
+/// went through another or a wall). Checked at every accepted step and every located instant,
+/// so a soft contact that lets the bodies through and back within one stretch is still caught.
+fn in_order(sys: &System, t: f64, y: &[f64]) -> Result<(), Failure> {
+    match (0..sys.slots.len()).find(|&s| sys.overlap(s, y).0 >= sys.slots[s].reach) {
+        Some(slot) => Err(Failure::Through {
+            t,
+            slot,
+            y: y.to_vec(),
+        }),
+        None => Ok(()),
+    }
 }
 
 /// What a run keeps across its stretches: work, the step budget, the deepest overlap of each
@@ -185,6 +201,7 @@ pub fn segment(
                 ratio: e / (ledger.energy_cap / 2.0),
             });
         }
+        in_order(sys, tb, &yb)?;
         let gb: Vec<f64> = (0..slots).map(|s| sys.gate(s, &yb)).collect();
         let mut first: Option<(f64, usize)> = None;
         for s in 0..slots {
@@ -211,12 +228,14 @@ pub fn segment(
                 let tp = locate(&mut f, (ta, ra), (tb, rb), &|r| r <= 0.0)?;
                 if tp <= t_end {
                     let (_, y) = drive(Ask::At(tp))?;
+                    in_order(sys, tp, &y)?;
                     ledger.peaks[s] = ledger.peaks[s].max(sys.overlap(s, &y).0);
                 }
             }
         }
         if let Some((t, s)) = first {
             let (_, y) = drive(Ask::At(t))?;
+            in_order(sys, t, &y)?;
             for p in (0..slots).filter(|&p| sys.active[p]) {
                 ledger.peaks[p] = ledger.peaks[p].max(sys.overlap(p, &y).0);
             }

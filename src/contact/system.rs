@@ -18,6 +18,9 @@ pub struct Slot {
     pub law: Law,
     /// `m1 m2 / (m1 + m2)`, or the body's mass against a wall.
     pub mu: f64,
+    /// The overlap at which the centres meet, `(s1 + s2) / 2` (a body's centre reaches a wall
+    /// at `s / 2`): an overlap this deep means one body went through the other or the wall.
+    pub reach: f64,
 }
 
 /// The system for one stretch: the bodies, the slots, which slots are active, and the overlaps

@@ -111,11 +111,13 @@ pub fn exact(setup: &Setup) -> Result<Option<Vec<f64>>, ContactError> {
     }))
 }
 
+/// The largest difference from the reference over `speed`; NaN if any difference is (`f64::max`
+/// would drop it and report 0 against a NaN reference).
 fn error(v: &[f64], reference: &[f64], speed: f64) -> f64 {
     v.iter()
         .zip(reference)
         .map(|(a, b)| (a - b).abs())
-        .fold(0.0, f64::max)
+        .fold(0.0, |m: f64, d| if d.is_nan() { d } else { m.max(d) })
         / speed
 }
 
@@ -183,6 +185,9 @@ pub fn work_precision(
             }
         }
     };
+    if let Some(v) = reference.v.iter().find(|v| !v.is_finite()) {
+        return Err(ContactError::Reference(*v));
+    }
     let horizon = simulate(
         setup,
         &Settings {
@@ -232,7 +237,8 @@ pub fn work_precision(
                 Err(
                     e @ (ContactError::Unstable { .. }
                     | ContactError::Failed { .. }
-                    | ContactError::EnergyGain { .. }),
+                    | ContactError::EnergyGain { .. }
+                    | ContactError::Through { .. }),
                 ) => rows.push(row(None, Some(e.to_string()))),
                 Err(e) => return Err(e),
             }

@@ -1,6 +1,7 @@
 //! The work-precision picture of `collide accuracy --plot`: each method on each family as a point,
-//! median time per solve across (log), worst error in ulps up (log); results that were not finite
-//! (or non-zero where the exact value is 0) sit on a marked top row.
+//! median time per solve across (log), worst error in ulps up (log, over the errors below 1e16
+//! ulps); results with no correct digit, and results that were not finite (or non-zero where
+//! the exact value is 0), sit in marked bands above the axis.
 
 use super::svg::{Svg, f};
 use crate::accuracy::Row;
@@ -41,35 +42,52 @@ pub fn svg(rows: &[Row], seed: u64) -> String {
             .ceil()
             .max(1.0),
     );
-    let e_top = rows
-        .iter()
-        .map(worst)
-        .filter(|e| e.is_finite())
+    // Errors up: a log axis from the exact row (0.1) to the largest error below 1e16 ulps (an
+    // error of 2^53 ulps or more leaves no correct digit), then two separate bands: results
+    // with no correct digit, and results that were not finite (or non-zero where the exact
+    // value is 0). Each band only when some point is in it.
+    const NO_DIGIT: f64 = 1e16;
+    let finite = rows.iter().map(worst).filter(|e| e.is_finite());
+    let e_top = finite
+        .clone()
+        .filter(|e| *e < NO_DIGIT)
         .fold(1.0f64, f64::max)
         .log10()
         .ceil()
         .max(1.0);
-    let (e0, e1) = (-1.0, e_top + 1.0);
+    let garbage = finite.clone().any(|e| e >= NO_DIGIT);
+    let infinite = rows.iter().map(worst).any(|e| !e.is_finite());
+    let (e0, e1) = (-1.0, e_top);
     let x = |ns: f64| LEFT + (ns.max(1e-3).log10() - t0) / (t1 - t0).max(1.0) * W;
+    let band = 34.0;
+    let axis_top = TOP + band * (f64::from(u8::from(garbage)) + f64::from(u8::from(infinite)));
+    let axis_h = TOP + H - axis_top;
+    let garbage_y = TOP + band * f64::from(u8::from(infinite)) + band / 2.0;
+    let infinite_y = TOP + band / 2.0;
     let y = |err: f64| {
-        let l = if err.is_finite() {
-            err.max(0.1).log10()
+        if !err.is_finite() {
+            infinite_y
+        } else if err >= NO_DIGIT {
+            garbage_y
         } else {
-            e1
-        };
-        TOP + H - (l - e0) / (e1 - e0) * H
+            let l = err.max(0.1).log10();
+            axis_top + axis_h - (l - e0) / (e1 - e0) * (axis_h - 10.0)
+        }
     };
     let mut s = Svg::new(WIDTH, HEIGHT);
     s.heading(
         LEFT,
         "Error against run time",
-        &format!("collide accuracy, seed {seed}: worst error of FIN, crunch and lost in ulps, against median time per solve"),
+        &format!(
+            "collide accuracy, seed {seed}: worst error of FIN, crunch and lost in ulps, \
+             against median time per solve"
+        ),
     );
     s.frame((LEFT, TOP, W, H));
     s.time_decades((t0, t1), x, (TOP, H));
-    // At most about 8 labelled decades (errors can span 300).
-    let step = (((e1 - e0) / 8.0).ceil() as usize).max(1);
-    for d in ((e0 as i32)..(e1 as i32)).step_by(step) {
+    // Every decade labelled, or every other one past 10.
+    let step = if e1 - e0 > 10.0 { 2 } else { 1 };
+    for d in ((e0 as i32)..=(e1 as i32)).step_by(step) {
         let py = y(10f64.powi(d));
         s.line(None, (LEFT, py), (LEFT + W, py), "stroke=\"#f3f4f6\"");
         let label = if d == -1 {
@@ -83,25 +101,45 @@ pub fn svg(rows: &[Row], seed: u64) -> String {
             "text-anchor=\"end\" fill=\"#6b7280\" font-size=\"11\"",
         );
     }
-    let top = y(f64::INFINITY);
-    s.line(
-        None,
-        (LEFT, top),
-        (LEFT + W, top),
-        "stroke=\"#fca5a5\" stroke-dasharray=\"4 3\"",
-    );
-    s.text(
-        (LEFT - 6.0, top + 4.0),
-        "inf",
-        "text-anchor=\"end\" fill=\"#dc2626\" font-size=\"11\"",
-    );
+    // The bands above the axis, each with its own label and a rule under it.
+    let bands = [
+        (
+            infinite,
+            infinite_y,
+            "not finite",
+            "inf or NaN, or non-zero where 0 is exact",
+        ),
+        (garbage, garbage_y, "> 1e16", "no correct digit"),
+    ];
+    for (shown, by, label, note) in bands {
+        if !shown {
+            continue;
+        }
+        s.line(
+            None,
+            (LEFT, by + band / 2.0),
+            (LEFT + W, by + band / 2.0),
+            "stroke=\"#fca5a5\" stroke-dasharray=\"4 3\"",
+        );
+        s.text(
+            (LEFT - 6.0, by + 4.0),
+            label,
+            "text-anchor=\"end\" fill=\"#dc2626\" font-size=\"11\"",
+        );
+        s.text(
+            (LEFT + W - 6.0, by - 6.0),
+            note,
+            "text-anchor=\"end\" fill=\"#dc2626\" font-size=\"10\"",
+        );
+    }
     s.text(
         (LEFT + W / 2.0, TOP + H + 38.0),
         "median time per solve",
         "text-anchor=\"middle\" font-weight=\"600\"",
     );
+    // The axis title above the axis, clear of its tick labels.
     s.text(
-        (20.0, TOP - 4.0),
+        (LEFT, TOP - 8.0),
         "worst error (ulps)",
         "font-weight=\"600\" font-size=\"12\"",
     );

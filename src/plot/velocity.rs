@@ -218,20 +218,19 @@ pub fn svg(p: &Picture) -> String {
         for v in [vi, vc, vf] {
             svg.circle(None, map.at(*v), 3.0, "fill=\"#a78bfa\"");
         }
+        // A number beside the frame's COM, across the segment (its name is in the legend): names
+        // written on the picture overlapped each other and the lines.
+        let (a, b) = (map.at(*vi), map.at(*vf));
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let len = dx.hypot(dy).max(1e-9);
         let (x, y) = map.at(*vc);
         svg.text(
-            (x + 6.0, y - 6.0),
-            name,
-            "fill=\"#7c3aed\" font-size=\"11\"",
+            (x + 12.0 * dy / len - 3.0, y - 12.0 * dx / len + 4.0),
+            &(i + 1).to_string(),
+            "fill=\"#7c3aed\" font-size=\"11\" font-weight=\"600\"",
         );
+        let _ = name;
     }
-    // The IN-FIN chord and the three points.
-    svg.line(
-        Some("chord"),
-        map.at(p.v_in),
-        map.at(p.v_fin),
-        &format!("stroke=\"{INK}\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\""),
-    );
     svg.raw("</g>");
     let stuck = p.e == 0.0;
     let points: Vec<(&str, &str, (f64, f64))> = if stuck {
@@ -295,17 +294,20 @@ pub fn svg(p: &Picture) -> String {
         &format!("stroke=\"{ENERGY_COM}\" stroke-width=\"1.6\""),
         format!("COM{com_fin} ellipse, KE {}", num(p.ellipse_com.ke)),
     );
-    entry(
-        &mut svg,
-        &format!("stroke=\"{INK}\" stroke-dasharray=\"2 3\""),
-        "IN-FIN chord".into(),
-    );
     if !p.others.is_empty() {
         entry(
             &mut svg,
             "stroke=\"#a78bfa\"",
-            "other frames (shifted by -w)".into(),
+            "other frames (shifted by -w):".into(),
         );
+        for (i, (name, ..)) in p.others.iter().enumerate() {
+            svg.text(
+                (lx + 34.0, ly + 4.0 - 6.0),
+                &format!("{}  {name}", i + 1),
+                "font-size=\"12\" fill=\"#7c3aed\"",
+            );
+            ly += 18.0;
+        }
     }
     svg.finish(&format!("Velocity plane: {}", p.title))
 }

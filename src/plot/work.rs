@@ -46,7 +46,8 @@ pub fn svg(work: &Work) -> String {
         LEFT,
         "Error against run time",
         &format!(
-            "collide contact --work-precision: final-velocity error ({} reference) against the fastest time of each run; stiffness ratio {}",
+            "collide contact --work-precision: final-velocity error ({} reference) against the \
+             fastest time of each run; stiffness ratio {}",
             work.reference.kind,
             short(work.stiffness_ratio)
         ),
@@ -68,11 +69,37 @@ pub fn svg(work: &Work) -> String {
         "run time (fastest of several)",
         "text-anchor=\"middle\" font-weight=\"600\"",
     );
+    // The axis title above the axis, clear of its tick labels.
     s.text(
-        (20.0, TOP - 6.0),
+        (LEFT, TOP - 8.0),
         "error / initial relative speed",
         "font-weight=\"600\" font-size=\"12\"",
     );
+    // Errors below the reference's own uncertainty cannot be told apart from it: a grey band,
+    // and the points in it drawn hollow.
+    let uncertain = work
+        .reference
+        .uncertainty
+        .filter(|u| *u > 0.0 && u.is_finite());
+    if let Some(u) = uncertain {
+        let top = y(u).max(TOP);
+        s.raw(&format!(
+            "<rect id=\"reference-uncertainty\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" \
+             fill=\"#e5e7eb\" fill-opacity=\"0.6\"/>",
+            super::svg::f(LEFT),
+            super::svg::f(top),
+            super::svg::f(W),
+            super::svg::f((TOP + H - top).max(0.0))
+        ));
+        s.text(
+            (LEFT + 6.0, TOP + H - 6.0),
+            &format!(
+                "below the reference's own uncertainty ({}): not told apart from it",
+                short(u)
+            ),
+            "fill=\"#4b5563\" font-size=\"11\"",
+        );
+    }
     let mut methods: Vec<&str> = Vec::new();
     for r in &work.rows {
         if !methods.contains(&r.method) {
@@ -101,8 +128,14 @@ pub fn svg(work: &Work) -> String {
             &points,
             &format!("stroke=\"{colour}\" stroke-width=\"2\"{dash}"),
         );
-        for p in &points {
-            s.circle(None, *p, 3.0, &format!("fill=\"{colour}\""));
+        for (r, p) in stable.iter().filter(|r| r.method == *m).zip(&points) {
+            let hollow = uncertain.is_some_and(|u| r.error.is_some_and(|e| e < u));
+            let style = if hollow {
+                format!("fill=\"white\" stroke=\"{colour}\" stroke-width=\"1.5\"")
+            } else {
+                format!("fill=\"{colour}\"")
+            };
+            s.circle(None, *p, 3.0, &style);
         }
         let unstable = work
             .rows
@@ -128,6 +161,21 @@ pub fn svg(work: &Work) -> String {
         "dashed: explicit",
         "fill=\"#6b7280\" font-size=\"11\"",
     );
+    if uncertain.is_some() {
+        for (k, line) in ["hollow: within the", "reference's uncertainty"]
+            .iter()
+            .enumerate()
+        {
+            s.text(
+                (
+                    lx,
+                    TOP + 10.0 + 22.0 * methods.len() as f64 + 26.0 + 14.0 * k as f64,
+                ),
+                line,
+                "fill=\"#6b7280\" font-size=\"11\"",
+            );
+        }
+    }
     s.finish("Error against run time")
 }
 

@@ -28,6 +28,7 @@ use crate::frame::Frame;
 use crate::quantity::{Exact, Scalar};
 use crate::solver::exact::ExactCollision;
 use crate::solver::{Lab, Solver};
+use crate::unknowns::Solved;
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
 #[derive(
@@ -109,6 +110,9 @@ pub struct Sections {
     pub heights: Option<crate::units::HeightScale>,
     /// The factor from the case's energy unit to the printed one (`--energy-unit`).
     pub energy_scale: Option<Q>,
+    /// The sections were asked for (`--show`), not the default: a pair that moves apart then
+    /// gets the FIN it would have if body 1 were on the right, not the note alone.
+    pub asked: bool,
 }
 
 impl Sections {
@@ -126,6 +130,7 @@ impl Sections {
             contact_time: None,
             heights: None,
             energy_scale: None,
+            asked: false,
         }
     }
     pub fn contains(&self, s: Section) -> bool {
@@ -364,8 +369,12 @@ pub struct ReverseEnergy<N> {
     pub ke_in: N,
     /// `KE_FIN' = KE_IN`.
     pub fin: N,
-    /// `KE_FIN' - KE_IN'`: the original's energy lost.
-    pub gained: N,
+    /// `KE_FIN' - KE_IN'`, the original's energy lost (`e <= 1`): never negative.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gained: Option<N>,
+    /// `KE_IN' - KE_FIN'`, the original's energy released (`e > 1`): never negative.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lost: Option<N>,
 }
 
 /// Why a collision cannot be reversed.
@@ -377,27 +386,52 @@ pub struct ReverseEnergy<N> {
 )]
 pub struct Irreversible;
 
+/// A time reverse whose `e' = 1/e` binary64 cannot hold.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "--reverse: e' = 1/e = 1/{e} is above binary64's largest number (1.8e308), so it cannot be \
+     printed in binary64; --exact prints it exactly"
+)]
+pub struct ReverseOverflow {
+    /// `e` as typed.
+    pub e: String,
+}
+
 impl<N: Scalar> Report<N> {
-    /// Adds the time-reversed collision (needs the vectors and energy of `c`).
+    /// Adds the time-reversed collision (needs the vectors and energy of `c`), its energies
+    /// times `energy_scale` (`--energy-unit`).
     pub fn with_reverse<S: Solver<N = N>>(
         mut self,
         c: &S,
         equals_original: bool,
-    ) -> Result<Self, Irreversible> {
+        energy_scale: Option<&Q>,
+    ) -> Result<Self, ReportError> {
         let recip = c.restitution().recip().ok_or(Irreversible)?;
+        if !recip.is_representable() {
+            return Err(ReportError::ReverseOverflow(ReverseOverflow {
+                e: c.restitution().show(),
+            }));
+        }
+        let energy = |x: N| match energy_scale {
+            Some(q) => x.scale(q),
+            None => x,
+        };
         let fin = c.v_fin();
         let v_in = c.v_in();
+        let superelastic = c.superelastic();
         self.reverse = Some(Reverse {
             v_in: [fin[0].neg(), fin[1].neg()],
             fin: [v_in[0].neg(), v_in[1].neg()],
             restitution: recip,
             energy: ReverseEnergy {
-                ke_in: c.ke_fin(),
-                fin: c.ke_in(),
-                gained: c.lost(),
+                ke_in: energy(c.ke_fin()),
+                fin: energy(c.ke_in()),
+                gained: (!superelastic).then(|| energy(c.lost())),
+                lost: superelastic.then(|| energy(c.lost().neg())),
             },
             equals_original,
         });
+        self.check_representable()?;
         Ok(self)
     }
 }
@@ -409,6 +443,9 @@ pub struct Notes<N = f64> {
     pub reduced_mass: N,
     /// `V1 - V2`.
     pub relative_velocity: N,
+    /// The crunch energy in the case's own unit (mass unit x velocity unit^2), the unit of the
+    /// quadratic forms, whatever unit the energies are printed in.
+    pub crunch: N,
     /// Momentum line `k1 V1 + k2 V2 = P_total` and its slope.
     pub line: (N, N, Option<N>),
 }
@@ -417,10 +454,31 @@ pub struct Notes<N = f64> {
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
     "{quantity} is not representable in binary64 (its magnitude is outside 2.2e-308 to 1.8e308): \
-     use --exact, rescale the units, or ask only for other sections with --show"
+     {way_out}"
 )]
 pub struct Unrepresentable {
     pub quantity: String,
+    /// What the command offers instead ([`WAY_OUT_SOLVE`] by default).
+    pub way_out: &'static str,
+}
+
+/// `collide solve` and a scene: other arithmetic, other units or other sections.
+pub const WAY_OUT_SOLVE: &str =
+    "use --exact, rescale the units, or ask only for other sections with --show";
+
+impl Unrepresentable {
+    /// `quantity` (a JSON path, `energy.in`), with `solve`'s ways out.
+    pub fn new(quantity: impl Into<String>) -> Unrepresentable {
+        Unrepresentable {
+            quantity: quantity.into(),
+            way_out: WAY_OUT_SOLVE,
+        }
+    }
+
+    /// The same, with the ways out a command that has no `--show` (or no `--exact`) offers.
+    pub fn with_way_out(self, way_out: &'static str) -> Unrepresentable {
+        Unrepresentable { way_out, ..self }
+    }
 }
 
 /// Why a report cannot be given.
@@ -432,6 +490,8 @@ pub enum ReportError {
     ExactTooLong(#[from] crate::number::ExactTooLong),
     #[error(transparent)]
     Irreversible(#[from] Irreversible),
+    #[error(transparent)]
+    ReverseOverflow(#[from] ReverseOverflow),
 }
 
 impl<N: Scalar> Report<N> {
@@ -449,7 +509,11 @@ impl<N: Scalar> Report<N> {
             w,
         });
         if reverse {
-            r = r.with_reverse(&seen, lab.is_own_time_reverse(frame))?;
+            r = r.with_reverse(
+                &seen,
+                lab.is_own_time_reverse(frame),
+                sections.energy_scale.as_ref(),
+            )?;
         }
         Ok(r)
     }
@@ -571,6 +635,11 @@ impl<N: Scalar> Report<N> {
                     N::default()
                 },
                 relative_velocity: c.relative_velocity(),
+                crunch: if has(Section::Forms) {
+                    c.crunch()
+                } else {
+                    N::default()
+                },
                 line: if has(Section::Momentum) {
                     c.momentum_line()
                 } else {
@@ -602,13 +671,11 @@ impl<N: Scalar> Report<N> {
     fn check_representable(&self) -> Result<(), Unrepresentable> {
         let value = serde_json::to_value(self).expect("a report serializes");
         if let Some(quantity) = first_unrepresentable(&value) {
-            return Err(Unrepresentable { quantity });
+            return Err(Unrepresentable::new(quantity));
         }
         let n = &self.notes;
         if !(n.reduced_mass.is_representable() && n.relative_velocity.is_representable()) {
-            return Err(Unrepresentable {
-                quantity: "the relative velocity V1 - V2".into(),
-            });
+            return Err(Unrepresentable::new("the relative velocity V1 - V2"));
         }
         Ok(())
     }
@@ -623,6 +690,22 @@ pub enum AnyReport {
 impl AnyReport {
     /// `case` seen from `frame`, in exact arithmetic from the typed values or in binary64.
     pub fn of(
+        case: &Case,
+        frame: &Frame,
+        exact: bool,
+        sections: &Sections,
+        reverse: bool,
+    ) -> Result<AnyReport, ReportError> {
+        AnyReport::compute(case, frame, exact, sections, reverse).map_err(|e| match e {
+            // Named as typed (5e-324), not as its binary64 (4.94065645841247e-324).
+            ReportError::ReverseOverflow(_) => ReportError::ReverseOverflow(ReverseOverflow {
+                e: case.restitution().number().to_string(),
+            }),
+            e => e,
+        })
+    }
+
+    fn compute(
         case: &Case,
         frame: &Frame,
         exact: bool,
@@ -651,11 +734,28 @@ impl AnyReport {
         .expect("reports serialize")
     }
 
-    /// Text of the sections in `show` (others were computed only for a scene's checks).
-    pub fn text(&self, case: &Case, show: &Sections) -> String {
-        match self {
-            AnyReport::Binary64(r) => text::render(case, &r.only(show)),
-            AnyReport::Exact(r) => text::render(case, &r.only(show)),
+    /// Text of the sections in `show` (others were computed only for a scene's checks), under
+    /// what the unknowns `solved` came out as and, for a case with units, the answer.
+    pub fn text(&self, case: &Case, show: &Sections, solved: Option<&Solved>) -> String {
+        let (head, body) = match self {
+            AnyReport::Binary64(r) => (
+                text::answer(case, r),
+                text::render(case, &r.only(show), show),
+            ),
+            AnyReport::Exact(r) => (
+                text::answer(case, r),
+                text::render(case, &r.only(show), show),
+            ),
+        };
+        let exact = matches!(self, AnyReport::Exact(_));
+        let mut out = solved.map_or_else(String::new, |s| solved::lines(s, exact, &case.units));
+        if show.contains(Section::Vectors) {
+            out.push_str(&head.unwrap_or_default());
+        }
+        if out.is_empty() {
+            body
+        } else {
+            out + "\n" + &body
         }
     }
 }

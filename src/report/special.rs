@@ -62,7 +62,7 @@ impl Special<'_> {
         };
         let json = json.expect("reports serialize");
         if let Some(quantity) = first_unrepresentable(&json) {
-            return Err(Unrepresentable { quantity });
+            return Err(Unrepresentable::new(quantity));
         }
         Ok(Rendered { text, json })
     }

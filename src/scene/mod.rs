@@ -1,7 +1,7 @@
 //! Scene files: a case in TOML, with the sections to show and the numbers to expect. One file
 //! per kind of scene: a two-body collision, separation or wall case (`two_body`, also `[sweep]`
 //! and `[plot]`), bodies on a track (`track`, `[track]`) and contact forces (`contact`,
-//! `[contact]`); this module holds what they share: reading a file, locating a problem in it,
+//! `[contact]`) and the plane, space and N bodies (`space`); this module holds what they share: reading a file, locating a problem in it,
 //! the `[expect]` table and a layout of bodies.
 //!
 //! ```toml
@@ -19,6 +19,7 @@
 //! line and column.
 
 mod contact;
+mod space;
 mod track;
 mod two_body;
 
@@ -33,6 +34,7 @@ use crate::expect::{ExpectError, Expectation};
 use crate::number::{Number, NumberError};
 
 pub use contact::{CONTACT_KEYS, ContactScene};
+pub use space::{SPACE_KEYS, SpaceScene, show_of};
 pub use track::{TRACK_KEYS, TrackScene};
 pub use two_body::{PlotTable, Scene, SceneSweep, SpecialEvent, SpecialScene};
 
@@ -78,15 +80,7 @@ fn read_capped(path: &Path) -> Result<String, String> {
 /// Text with its control characters escaped (`\u{1b}`): a shared scene cannot send escape
 /// sequences to a terminal.
 fn printable(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
+    crate::number::printable(text)
 }
 
 /// `[expect]` as written: JSON paths of the report, each with its value and place.
@@ -218,6 +212,8 @@ pub enum AnyScene {
     Special(SpecialScene),
     Track(TrackScene),
     Contact(ContactScene),
+    /// In the plane, in space or of N bodies.
+    Space(SpaceScene),
 }
 
 /// A problem in a scene file, located.
@@ -270,6 +266,8 @@ impl Scene {
             ContactScene::parse(path, &text).map(AnyScene::Contact)
         } else if has_table(&text, "track") {
             TrackScene::parse(path, &text).map(AnyScene::Track)
+        } else if space::is_space(&text) {
+            SpaceScene::parse(path, &text).map(AnyScene::Space)
         } else {
             Scene::parse_any(path, &text)
         }

@@ -266,6 +266,9 @@ impl Scene {
                     .map_err(|e| err(Some(t.span()), format!("contact_time: {e}")))?,
             ),
         };
+        if let Some(f) = &file.frame {
+            f.on_line().map_err(|e| err(None, e.to_string()))?;
+        }
         let mut show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         show.contact_time = contact_time;
         let units = posed.units().clone();

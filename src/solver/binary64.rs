@@ -12,7 +12,12 @@
 //!
 //! Shifts are exact: `w` is held as a double-double (`V_COM` or a body's FIN velocity exactly as
 //! the kinematics have them), so the COM frame puts COM at 0 and "body i finally at rest" puts
-//! FIN_i at 0, and each frame's energies come from its own relative velocity.
+//! FIN_i at 0, and each frame's energies come from its own relative velocity. In the frames that
+//! move with COM or with a body's FIN, the velocities that are small multiples of `e` are not
+//! differences of lab velocities (which would keep only their rounding, 1e-33 for `e = 1e-150`)
+//! but the impulse form's own terms: with `d = V2 - V1`, weights `w1, w2` (`w1 + w2 = 1`) and
+//! `k = 1 + e`, `IN_COM = (-w2 d, w1 d)`, `FIN_COM = e (w2 d, -w1 d)`; finally at rest,
+//! `FIN = (0, -e d)` (body 1) or `(e d, 0)` (body 2), `IN = FIN - k (w2 d, -w1 d)`.
 
 use nalgebra::Vector2;
 
@@ -28,9 +33,22 @@ use crate::solver::{Lab, Pair, Solver};
 pub struct Binary64<'a> {
     pub lab: &'a Collision,
     pub w: Dd,
+    /// How the frame's velocities are formed (module docs).
+    shift: Shift,
     /// `(KE_COM, crunch)` once computed: every energy is built from these two (a table row
     /// asks for several).
     parts: std::cell::Cell<Option<(Dd, Dd)>>,
+}
+
+/// How a frame's velocities are formed from the lab's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Shift {
+    /// Every velocity less `w` (the lab, a body initially at rest, an observer velocity).
+    By,
+    /// Moving with COM.
+    Com,
+    /// Moving with body `i`'s FIN (0 or 1).
+    Fin(usize),
 }
 
 /// The observer's velocity of `frame` for a binary64 collision (lecture Sec. 4).
@@ -41,15 +59,23 @@ pub fn observer_velocity(c: &Collision, frame: &Frame) -> Dd {
         Frame::RestIn(i) => Dd::new(c.v_in[i - 1]),
         Frame::RestFin(i) => c.v_fin_dd()[i - 1],
         Frame::Velocity(n) => Dd::new(n.value()),
+        // Refused on a line by `Frame::on_line` before a solver sees it.
+        Frame::Vector(v) => Dd::new(v.first().map_or(0.0, crate::number::Number::value)),
     }
 }
 
 impl<'a> Binary64<'a> {
     /// `lab` seen from `frame`.
     pub fn new(lab: &'a Collision, frame: &Frame) -> Binary64<'a> {
+        let shift = match frame {
+            Frame::Com => Shift::Com,
+            Frame::RestFin(i) => Shift::Fin(i - 1),
+            _ => Shift::By,
+        };
         Binary64 {
             lab,
             w: observer_velocity(lab, frame),
+            shift,
             parts: Default::default(),
         }
     }
@@ -59,21 +85,62 @@ impl<'a> Binary64<'a> {
         Binary64 {
             lab,
             w: Dd::new(0.0),
+            shift: Shift::By,
             parts: Default::default(),
         }
     }
 
+    /// `(d, w1 d, w2 d, e)` with `d = V2 - V1`: the terms of the impulse form.
+    fn terms(&self) -> (Dd, Dd, Dd, Dd) {
+        let (w1, w2) = self.lab.inertia.weights_dd();
+        let d = self.lab.relative_velocity_dd();
+        (d, w1 * d, w2 * d, Dd::new(self.lab.restitution.value()))
+    }
+    /// The impulse's change of velocity `k (w2 d, -w1 d)`, the same in every frame.
+    fn kick(&self) -> [Dd; 2] {
+        let (_, w1d, w2d, e) = self.terms();
+        let k = Dd::new(1.0) + e;
+        [k * w2d, zero() - k * w1d]
+    }
     fn in_dd(&self) -> [Dd; 2] {
-        [
-            Dd::new(self.lab.v_in.x) - self.w,
-            Dd::new(self.lab.v_in.y) - self.w,
-        ]
+        match self.shift {
+            Shift::By => [
+                Dd::new(self.lab.v_in.x) - self.w,
+                Dd::new(self.lab.v_in.y) - self.w,
+            ],
+            Shift::Com => {
+                let (_, w1d, w2d, _) = self.terms();
+                [zero() - w2d, w1d]
+            }
+            Shift::Fin(_) => {
+                let [f1, f2] = self.fin_dd();
+                let [k1, k2] = self.kick();
+                [f1 - k1, f2 - k2]
+            }
+        }
     }
     fn fin_dd(&self) -> [Dd; 2] {
-        self.lab.v_fin_dd().map(|f| f - self.w)
+        if self.lab.restitution.is_totally_inelastic() {
+            let c = self.com_dd();
+            return [c, c];
+        }
+        let (d, w1d, w2d, e) = self.terms();
+        match self.shift {
+            Shift::By => self.lab.v_fin_dd().map(|f| f - self.w),
+            Shift::Com => [e * w2d, zero() - e * w1d],
+            Shift::Fin(0) => [zero(), zero() - e * d],
+            Shift::Fin(_) => [e * d, zero()],
+        }
     }
     fn com_dd(&self) -> Dd {
-        self.lab.v_com_dd() - self.w
+        let (_, w1d, w2d, e) = self.terms();
+        match self.shift {
+            Shift::By => self.lab.v_com_dd() - self.w,
+            Shift::Com => zero(),
+            // V_COM - FIN1 = -e w2 d, V_COM - FIN2 = e w1 d.
+            Shift::Fin(0) => zero() - e * w2d,
+            Shift::Fin(_) => e * w1d,
+        }
     }
     /// `V1 - V2` from this frame's own IN velocities.
     fn relative_dd(&self) -> Dd {
@@ -106,6 +173,11 @@ impl<'a> Binary64<'a> {
     fn moving(&self) -> bool {
         self.relative_dd().value() != 0.0
     }
+}
+
+/// A double-double 0, so that `zero() - x` of a zero `x` is +0 (a negation would print -0).
+fn zero() -> Dd {
+    Dd::new(0.0)
 }
 
 fn vec2(p: &Pair<f64>) -> Vector2<f64> {
@@ -254,8 +326,17 @@ impl Solver for Binary64<'_> {
         self.lab.restitution.is_superelastic()
     }
     fn exact(&self) -> ExactCollision {
-        let w = crate::quantity::from_f64(self.w.hi) + crate::quantity::from_f64(self.w.lo);
-        ExactCollision::from_binary64(self.lab).observed(&w)
+        let x = ExactCollision::from_binary64(self.lab);
+        // COM and FIN frames move with the exact COM or FIN of these values, as the binary64
+        // frame moves with them (module docs).
+        let w = match self.shift {
+            Shift::By => {
+                crate::quantity::from_f64(self.w.hi) + crate::quantity::from_f64(self.w.lo)
+            }
+            Shift::Com => x.observer_velocity(&Frame::Com),
+            Shift::Fin(i) => x.observer_velocity(&Frame::RestFin(i + 1)),
+        };
+        x.observed(&w)
     }
     fn momentum_line(&self) -> (f64, f64, Option<f64>) {
         let m = self.lab.inertia.matrix();

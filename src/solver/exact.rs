@@ -82,6 +82,8 @@ impl ExactCollision {
             Frame::RestIn(i) => self.v[i - 1].clone(),
             Frame::RestFin(i) => self.v_fin_q()[i - 1].clone(),
             Frame::Velocity(n) => n.exact(),
+            // Refused on a line by `Frame::on_line` before a solver sees it.
+            Frame::Vector(v) => v.first().map_or_else(Q::zero, crate::number::Number::exact),
         }
     }
 

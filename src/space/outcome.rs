@@ -8,6 +8,7 @@
 
 use num_traits::{Signed, Zero};
 
+use crate::frame::Frame;
 use crate::quantity::Exact;
 use crate::rational::{Q, half, to_f64};
 
@@ -157,6 +158,43 @@ impl Outcome {
         }
     }
 
+    /// The velocity of the observer of `frame` (lecture Sec. 4): 0 in the lab, `V_COM`, body
+    /// i's velocity before (`rest-in:i`) or after (`rest-fin:i`), or the vector given (its
+    /// typed value with `typed`, else its binary64 value).
+    pub fn observer(&self, frame: &Frame, typed: bool) -> Result<Vec<Q>, FrameVelocityError> {
+        let q = |n: &crate::number::Number| {
+            if typed {
+                n.exact()
+            } else {
+                crate::rational::from_f64(n.value())
+            }
+        };
+        let body = |i: usize| {
+            (1..=self.bodies())
+                .contains(&i)
+                .then_some(i - 1)
+                .ok_or(FrameVelocityError::Body(frame.to_string(), self.bodies()))
+        };
+        Ok(match frame {
+            Frame::Lab => vec![Q::ZERO; self.dim],
+            Frame::Com => self.v_com(),
+            Frame::RestIn(i) => self.v_in[body(*i)?].clone(),
+            Frame::RestFin(i) => self.fin[body(*i)?].clone(),
+            Frame::Velocity(n) if self.dim == 1 => vec![q(n)],
+            Frame::Velocity(_) => {
+                return Err(FrameVelocityError::Size(frame.to_string(), 1, self.dim));
+            }
+            Frame::Vector(v) if v.len() == self.dim => v.iter().map(q).collect(),
+            Frame::Vector(v) => {
+                return Err(FrameVelocityError::Size(
+                    frame.to_string(),
+                    v.len(),
+                    self.dim,
+                ));
+            }
+        })
+    }
+
     /// Reversed in time: IN' = -FIN, FIN' = -IN (restitution 1/e).
     pub fn reversed(&self) -> Outcome {
         let neg = |vs: &[Vec<Q>]| vs.iter().map(|v| v.iter().map(|x| -x).collect()).collect();
@@ -201,6 +239,18 @@ impl Outcome {
             Exact::Rational(q)
         }
     }
+}
+
+/// A frame this event cannot be seen from.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FrameVelocityError {
+    #[error("frame '{0}': there are {1} bodies")]
+    Body(String, usize),
+    #[error(
+        "frame '{0}': an observer velocity of {1} component(s) for velocities of {2}: give it as \
+         the velocities are, e.g. '(2,1)' in the plane"
+    )]
+    Size(String, usize, usize),
 }
 
 /// The normal parts of two bodies' velocities, before and after.

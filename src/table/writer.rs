@@ -61,9 +61,6 @@ impl RowFormat {
     }
 }
 
-/// Width of a text column: the longest shortest-round-trip binary64 ("-1.2345678901234567e-308").
-const TEXT_WIDTH: usize = 24;
-
 /// Writes rows of numbers in one format.
 pub struct RowWriter {
     /// A two-body table's columns (empty for a table of runs).
@@ -157,14 +154,8 @@ impl RowWriter {
                 let _ = w.write_record(&self.names);
                 let _ = w.flush();
             }
-            RowFormat::Text => {
-                for (i, c) in self.names.iter().enumerate() {
-                    let sep = if i == 0 { "" } else { " " };
-                    let _ = write!(out, "{sep}{c:>TEXT_WIDTH$}");
-                }
-                out.push(b'\n');
-            }
-            RowFormat::Jsonl | RowFormat::Parquet => {}
+            // Text: each page of rows carries the names, aligned with its values.
+            RowFormat::Text | RowFormat::Jsonl | RowFormat::Parquet => {}
         }
     }
 
@@ -175,7 +166,14 @@ impl RowWriter {
         let per_row = match self.format {
             RowFormat::Csv => 20 * n,
             RowFormat::Jsonl => 32 * n,
-            RowFormat::Text => (TEXT_WIDTH + 1) * n,
+            RowFormat::Text => {
+                return RowBuf::Text(TextPage {
+                    names: self.names.clone(),
+                    named: self.header != Header::Never,
+                    fields: Vec::with_capacity(rows.min(1 << 16) * 12 * n),
+                    ends: Vec::with_capacity(rows.min(1 << 16) * n),
+                });
+            }
             RowFormat::Parquet => {
                 return RowBuf::Columns(Columns {
                     numbers: (0..n).map(|_| Vec::with_capacity(rows)).collect(),
@@ -206,7 +204,8 @@ impl RowWriter {
                 }
                 out.push(b'\n');
             }
-            RowBuf::Raw(out) if self.format == RowFormat::Jsonl => {
+            // JSON Lines (a text table has its page).
+            RowBuf::Raw(out) => {
                 out.push(b'{');
                 for (i, (c, v)) in self.names.iter().zip(values).enumerate() {
                     if i > 0 {
@@ -219,14 +218,11 @@ impl RowWriter {
                 }
                 out.extend_from_slice(b"}\n");
             }
-            RowBuf::Raw(out) => {
+            RowBuf::Text(page) => {
                 for (i, v) in values.iter().enumerate() {
-                    let s = fields.format(i, *v);
-                    let pad = TEXT_WIDTH.saturating_sub(s.len()) + usize::from(i > 0);
-                    out.extend(std::iter::repeat_n(b' ', pad));
-                    out.extend_from_slice(s);
+                    page.fields.extend_from_slice(fields.format(i, *v));
+                    page.ends.push(page.fields.len());
                 }
-                out.push(b'\n');
             }
             RowBuf::Columns(c) => c.push(values, None),
         }
@@ -245,6 +241,20 @@ impl RowWriter {
         let out = match buf {
             RowBuf::Raw(out) => out,
             RowBuf::Columns(c) => return c.push(values, self.text.map(|_| error)),
+            RowBuf::Text(page) => {
+                for (i, v) in values.iter().enumerate() {
+                    if Some(i) == self.text {
+                        let e = error.map_or("-".into(), |e| e.replace('\n', " "));
+                        page.fields.extend_from_slice(e.as_bytes());
+                    } else if v.is_nan() {
+                        page.fields.push(b'-');
+                    } else {
+                        page.fields.extend_from_slice(fields.format(i, *v));
+                    }
+                    page.ends.push(page.fields.len());
+                }
+                return;
+            }
         };
         for (i, v) in values.iter().enumerate() {
             let cell: Option<Vec<u8>> = if Some(i) == self.text {
@@ -261,7 +271,7 @@ impl RowWriter {
                     }
                     out.extend_from_slice(cell.as_deref().unwrap_or(b""));
                 }
-                RowFormat::Jsonl => {
+                _ => {
                     out.push(if i == 0 { b'{' } else { b',' });
                     out.extend_from_slice(
                         serde_json::to_string(&self.names[i])
@@ -270,20 +280,6 @@ impl RowWriter {
                     );
                     out.push(b':');
                     out.extend_from_slice(cell.as_deref().unwrap_or(b"null"));
-                }
-                _ => {
-                    let s = cell.as_deref().unwrap_or(b"-");
-                    if i > 0 {
-                        out.push(b' ');
-                    }
-                    // The error text, last in a row for people, is not padded.
-                    let pad = if Some(i) == self.text {
-                        0
-                    } else {
-                        TEXT_WIDTH.saturating_sub(s.len())
-                    };
-                    out.extend(std::iter::repeat_n(b' ', pad));
-                    out.extend_from_slice(s);
                 }
             }
         }
@@ -305,8 +301,7 @@ impl RowWriter {
                 let _ = w.flush();
                 w.into_inner().unwrap_or_default()
             }
-            RowFormat::Jsonl => serde_json::to_string(text).unwrap_or_default().into_bytes(),
-            _ => text.replace('\n', " ").into_bytes(),
+            _ => serde_json::to_string(text).unwrap_or_default().into_bytes(),
         }
     }
 
@@ -315,6 +310,7 @@ impl RowWriter {
     pub fn seal(&self, buf: RowBuf) -> io::Result<Sealed> {
         match (buf, &self.parquet) {
             (RowBuf::Raw(v), _) => Ok(Sealed::Bytes(v)),
+            (RowBuf::Text(page), _) => Ok(Sealed::Bytes(page.into_bytes())),
             (RowBuf::Columns(c), Some(schema)) => schema.encode(&c).map(Sealed::Group),
             (RowBuf::Columns(_), None) => Err(io::Error::other("Parquet is not built in")),
         }
@@ -395,6 +391,66 @@ impl<'a> Sink<'a> {
     }
 }
 
+/// A page of a text table (the rows of one chunk): the fields as they come, aligned when the
+/// page is done, each column as wide as its widest value (or name), right-aligned; a page wider
+/// than the terminal ([`crate::terminal::width`]) is folded into groups of columns, each
+/// repeating the first. Every page starts with the names (unless `--header never`): a text
+/// table is for people, who read pages, not shards.
+pub struct TextPage {
+    names: Vec<String>,
+    named: bool,
+    fields: Vec<u8>,
+    /// Where each field ends in `fields`, row after row.
+    ends: Vec<usize>,
+}
+
+impl TextPage {
+    fn into_bytes(self) -> Vec<u8> {
+        let columns = self.names.len().max(1);
+        let field = |k: usize| {
+            let start = if k == 0 { 0 } else { self.ends[k - 1] };
+            &self.fields[start..self.ends[k]]
+        };
+        let rows = self.ends.len() / columns;
+        if rows == 0 {
+            return Vec::new();
+        }
+        let mut widths: Vec<usize> = self
+            .names
+            .iter()
+            .map(|n| if self.named { n.len() } else { 0 })
+            .collect();
+        for k in 0..self.ends.len() {
+            widths[k % columns] = widths[k % columns].max(field(k).len());
+        }
+        let groups = crate::terminal::fold(&widths, 1, 2, crate::terminal::width());
+        let mut out = Vec::with_capacity(self.fields.len() + self.ends.len() * 4);
+        let cell = |out: &mut Vec<u8>, c: usize, text: &[u8], first: bool| {
+            let pad = widths[c] - text.len() + if first { 0 } else { 2 };
+            out.extend(std::iter::repeat_n(b' ', pad));
+            out.extend_from_slice(text);
+        };
+        for (g, group) in groups.iter().enumerate() {
+            if g > 0 {
+                out.push(b'\n');
+            }
+            if self.named {
+                for (j, &c) in group.iter().enumerate() {
+                    cell(&mut out, c, self.names[c].as_bytes(), j == 0);
+                }
+                out.push(b'\n');
+            }
+            for r in 0..rows {
+                for (j, &c) in group.iter().enumerate() {
+                    cell(&mut out, c, field(r * columns + c), j == 0);
+                }
+                out.push(b'\n');
+            }
+        }
+        out
+    }
+}
+
 /// Shortest round-trip text of each column's last value: in a sweep most fields repeat from one
 /// row to the next (inputs that do not vary, and whatever does not depend on the fastest
 /// parameter), and formatting numbers is most of a table's cost.
@@ -431,9 +487,11 @@ impl FieldCache {
     }
 }
 
-/// A chunk's rows as they are written: bytes, or columns for Parquet.
+/// A chunk's rows as they are written: bytes (CSV, JSON Lines), a text page, or columns for
+/// Parquet.
 pub enum RowBuf {
     Raw(Vec<u8>),
+    Text(TextPage),
     Columns(Columns),
 }
 
@@ -442,6 +500,7 @@ impl RowBuf {
     pub fn into_bytes(self) -> Vec<u8> {
         match self {
             RowBuf::Raw(v) => v,
+            RowBuf::Text(page) => page.into_bytes(),
             RowBuf::Columns(_) => Vec::new(),
         }
     }
@@ -449,7 +508,7 @@ impl RowBuf {
     /// Rows in the buffer, for Parquet (text formats do not count them).
     pub fn rows(&self) -> usize {
         match self {
-            RowBuf::Raw(_) => 0,
+            RowBuf::Raw(_) | RowBuf::Text(_) => 0,
             RowBuf::Columns(c) => c.rows,
         }
     }
@@ -476,9 +535,19 @@ mod tests {
         let mut buf = w.buffer(2);
         w.row(&[0.3, 7250.0], &mut buf, &mut FieldCache::new(2));
         assert_eq!(buf.into_bytes(), b"{\"e\":0.3,\"ke_in\":7250.0}\n");
-        let w = RowWriter::new(by_names(&["e"]).unwrap(), RowFormat::Text);
+        // Text: columns as wide as their widest value or name, right-aligned, names first.
+        let w = RowWriter::new(by_names(&["e", "ke_in"]).unwrap(), RowFormat::Text);
         let mut buf = w.buffer(2);
-        w.row(&[0.5], &mut buf, &mut FieldCache::new(1));
-        assert_eq!(buf.into_bytes(), format!("{:>24}\n", "0.5").as_bytes());
+        let mut f = FieldCache::new(2);
+        w.row(&[0.5, 7250.0], &mut buf, &mut f);
+        w.row(&[0.25, 1e300], &mut buf, &mut f);
+        assert_eq!(
+            String::from_utf8(buf.into_bytes()).unwrap(),
+            "   e   ke_in\n 0.5  7250.0\n0.25   1e300\n"
+        );
+        let w = w.with_header(Header::Never);
+        let mut buf = w.buffer(1);
+        w.row(&[0.5, 1.0], &mut buf, &mut FieldCache::new(2));
+        assert_eq!(buf.into_bytes(), b"0.5  1.0\n");
     }
 }

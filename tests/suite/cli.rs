@@ -366,3 +366,101 @@ fn help_and_version() {
         .stdout(predicate::str::contains("--restitution"));
     collide().arg("--version").assert().success();
 }
+
+// Issue 24: each message names the real limit and the real way out.
+
+/// Runs `collide args`, expects exit 2 and nothing on stdout, returns stderr.
+#[track_caller]
+fn failure(args: &[&str]) -> String {
+    refused(args, &[]);
+    String::from_utf8_lossy(&collide().args(args).output().unwrap().stderr).into_owned()
+}
+
+#[test]
+fn control_characters_in_a_bad_value_are_shown_escaped() {
+    // "mass '5' is not a number": the BEL vanished from the quoted value.
+    refused(
+        &["solve", "-m", "5\u{7},1", "-v", "1,0"],
+        &["mass '5\\u{7}' is not a number", "'5\\u{7},1'"],
+    );
+    let err = failure(&["solve", "-m", "1,1", "-v", "1,\u{1b}[31m"]);
+    assert!(
+        !err.contains('\u{1b}') && err.contains("'\\u{1b}[31m'"),
+        "{err}"
+    );
+}
+
+#[test]
+fn numbers_out_of_range_name_the_limit_they_hit() {
+    // "unknown length unit 'e9999 m'": the number was out of range, not the unit.
+    refused(
+        &["solve", "-m", "1,1", "-v", "height 1e9999 m,0"],
+        &["'1e9999' is too large for binary64"],
+    );
+    refused(
+        &["solve", "-m", "1e400 g,1 g", "-v", "1,0"],
+        &["'1e400' is too large for binary64"],
+    );
+    // 1e100000/1e100000 is 1: the limit is on the fraction's parts, not binary64.
+    let err = failure(&["solve", "-m", "1,1", "-v", "1e100000/1e100000,0"]);
+    assert!(
+        err.contains("decimal exponents of +-100000") && !err.contains("too large"),
+        "{err}"
+    );
+    // pi 200 --simulate said "try smaller units": the limit is the time the collisions take.
+    refused(
+        &["pi", "200", "--simulate"],
+        &["3.1e200 collisions", "N up to 10", "without --simulate"],
+    );
+    let out = collide()
+        .args(["pi", "200", "--simulate"])
+        .output()
+        .unwrap();
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("units"));
+}
+
+#[test]
+fn commands_without_show_do_not_suggest_it() {
+    // frames and plot suggested --show, which they do not have.
+    let err = failure(&["frames", "-m", "1e300,1e-300", "-v", "1e300,0"]);
+    assert!(err.contains("--exact") && !err.contains("--show"), "{err}");
+    let err = failure(&["plot", "-m", "1e300,1e-300", "-v", "1e300,0"]);
+    assert!(!err.contains("--show") && !err.contains("--exact"), "{err}");
+    // solve has both.
+    refused(
+        &["solve", "-m", "1e300,1e-300", "-v", "1e300,0"],
+        &["--exact", "--show"],
+    );
+}
+
+#[test]
+fn energy_unit_is_refused_where_nothing_is_printed_in_it() {
+    // sweep ignored it silently: its columns carry no unit.
+    refused(
+        &[
+            "sweep",
+            "-m",
+            "1 kg,12 kg",
+            "-v",
+            "2 m/s,0",
+            "--vary",
+            "e=0,1",
+            "--energy-unit",
+            "kJ",
+        ],
+        &["--energy-unit kJ", "J"],
+    );
+    // plot labels its ellipses in the case's own units.
+    refused(
+        &[
+            "plot",
+            "-m",
+            "1 kg,12 kg",
+            "-v",
+            "2 m/s,0",
+            "--energy-unit",
+            "eV",
+        ],
+        &["--energy-unit eV"],
+    );
+}

@@ -621,3 +621,197 @@ fn a_large_common_velocity_does_not_swamp_the_contact() {
     assert!((v[0] - (1e8 + 1.0 - (1.0 + e) / 2.0)).abs() < 3e-8, "{v:?}");
     assert!((v[1] - (1e8 + (1.0 + e) / 2.0)).abs() < 3e-8, "{v:?}");
 }
+
+// Issue 24: false physics or numbers from `collide contact`, each refused or corrected.
+
+/// Runs `collide contact args`: (exit code, stdout, stderr).
+fn outcome(args: &[&str]) -> (i32, String, String) {
+    let out = collide().arg("contact").args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn bodies_that_pass_through_each_other_or_a_wall_are_refused_at_the_step_it_happens() {
+    // A soft contact (k = 0.1, mu = 1/2, v = 1: d_max = v / sqrt(k / mu) = 2.236 > (s1 + s2)/2
+    // = 1) lets the centres cross and come back within one stretch; it was printed with exit 0
+    // and max_overlap 2.236 (refused only with --until 5, where the crossing was at the end).
+    for line in [
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 0.1",
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 0.1 --format json",
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 0.1 --method rk4",
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 0.1 --method bdf",
+        // Sizes 1e-300: any overlap at all crosses the centres (both ended at 2.1107).
+        "-m 1,1 -x 0,1 --sizes 1e-300,1e-300 -v 1,0",
+        // k = 5e-324 printed "impulse model: e = NaN" and d_max 3e161.
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 5e-324",
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 5e-324 --work-precision",
+    ] {
+        let (code, out, err) = outcome(&args(line));
+        assert_eq!(code, 2, "{line}: {out}{err}");
+        assert!(out.is_empty(), "{line}: {out}");
+        for needle in [
+            "bodies 1 and 2 passed through each other at t = ",
+            "x1 = ",
+            "x2 = ",
+            "--stiffness",
+            "smaller speed",
+        ] {
+            assert!(err.contains(needle), "{line}: {err} lacks {needle:?}");
+        }
+        assert!(!err.contains("NaN") && !err.contains("inf"), "{err}");
+    }
+    // Through a wall: k = 0.01 against m = 1 at v = 1 needs d_max = 10, past the centre at 0.5.
+    let (code, _, err) = outcome(&args(
+        "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 0.01",
+    ));
+    assert_eq!(code, 2, "{err}");
+    for needle in [
+        "body 1 passed through the right wall at t = ",
+        "with the wall at 0.5",
+        "--wall-stiffness, now 0.01",
+    ] {
+        assert!(err.contains(needle), "{err} lacks {needle:?}");
+    }
+    // Just stiff enough (d_max = sqrt(mu / k) = 0.707 < 1 at k = 1): runs, and the deepest
+    // overlap is the closed form's, below the sum of the half sizes.
+    let j = run(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0"));
+    let d = f(&j["contacts"][0]["max_overlap"]);
+    rel(d, 0.5f64.sqrt(), 1e-9, "d_max = v / omega0");
+}
+
+#[test]
+fn heavy_damping_is_stiff_and_auto_integrates_it_with_bdf() {
+    // A heavily damped contact's decay rate c/mu = 2 zeta omega0 outruns its own time scale:
+    // tsit45 (which auto picked) ran 10-14 s to the 2e7-step cap. Expected: the closed forms of
+    // an overdamped linear contact (Schwager & Poeschel; zeta > 1):
+    // omega0 t_c = 2 ln(zeta + s) / s with s = sqrt(zeta^2 - 1), e = exp(-zeta omega0 t_c).
+    let e_of = |zeta: f64| {
+        let s = ((zeta - 1.0) * (zeta + 1.0)).sqrt();
+        (-zeta * 2.0 * (zeta - 1.0 + s).ln_1p() / s).exp()
+    };
+    // mu = 1/2, k = 1: c = 1e10 is zeta = 1e10 / (2 sqrt(1/2)).
+    for (flag, value, zeta) in [
+        ("--zeta", "1e6", 1e6),
+        ("--damping", "1e10", 1e10 / 2f64.sqrt()),
+    ] {
+        let j = run(&[
+            "-m", "1,1", "-x", "0,1", "--sizes", "1,1", "-v", "1,0", flag, value,
+        ]);
+        assert_eq!(j["method"], "bdf", "{flag} {value}");
+        let e = e_of(zeta);
+        let v = floats(&j["v"]);
+        // Impulse form J = (1 + e) mu u, to the default accuracy (1e-8 of the speed, 1).
+        assert!(
+            (v[0] - (1.0 - e) / 2.0).abs() < 1e-8,
+            "{flag} {value}: {v:?}"
+        );
+        assert!(
+            (v[1] - (1.0 + e) / 2.0).abs() < 1e-8,
+            "{flag} {value}: {v:?}"
+        );
+    }
+    let j = run(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 -e 1e-10"));
+    assert_eq!(j["method"], "bdf");
+    let v = floats(&j["v"]);
+    assert!((v[1] - (1.0 + 1e-10) / 2.0).abs() < 1e-8, "{v:?}");
+    // Light damping stays with tsit45.
+    let j = run(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2"));
+    assert_eq!(j["method"], "tsit45");
+}
+
+#[test]
+fn a_body_between_two_walls_asks_for_until_not_a_tolerance() {
+    // It bounces for ever; the run failed after 15 s suggesting --tol.
+    let (code, out, err) = outcome(&args(
+        "-m 1 -x 0 --sizes 1 -v 1 --left-wall -0.5 --right-wall 0.5",
+    ));
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(err.contains("--until") && !err.contains("--tol"), "{err}");
+    // With --until it runs (stiff enough walls: d_max = 1e-2): elastic, so the energy (kinetic
+    // and elastic) stays 1/2 m v^2 = 1/2, to the default accuracy.
+    let j = run(&args(
+        "-m 1 -x 0 --sizes 0.5 -v 1 --left-wall -0.5 --right-wall 0.5 --stiffness 1e4 --until 10",
+    ));
+    rel(f(&j["energy"]["end"]), 0.5, 1e-8, "energy at t = 10");
+    assert!(
+        j["contacts"].as_array().unwrap().len() > 10,
+        "{}",
+        j["contacts"]
+    );
+    // At rest between the walls: nothing happens, and that is the answer.
+    let j = run(&args(
+        "-m 1 -x 0 --sizes 1 -v 0 --left-wall -0.5 --right-wall 0.5",
+    ));
+    assert_eq!(floats(&j["v"]), vec![0.0]);
+}
+
+#[test]
+fn a_horizon_below_the_solvers_resolution_returns_the_initial_state() {
+    // "ODE solver error: Stop time is at the current state time", exit 2.
+    for method in ["auto", "bdf", "sdirk", "rk4"] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --until 1e-300 --method {method}"
+        )));
+        assert_eq!(floats(&j["v"]), vec![1.0, 0.0], "{method}");
+        // x1 = 0 + 1 x 1e-300, exactly.
+        assert_eq!(floats(&j["x"]), vec![1e-300, 1.0], "{method}");
+        assert_eq!(j["stop"], "until");
+    }
+}
+
+#[test]
+fn damping_too_heavy_to_integrate_says_so_and_not_rescale_the_masses() {
+    // -e 1e-300 needs zeta ~ 5e149: the contact lasts 2e-150. The message said "rescale the
+    // units (masses, stiffness)", which changes nothing about a restitution.
+    let (code, _, err) = outcome(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 -e 1e-300"));
+    assert_eq!(code, 2, "{err}");
+    for needle in ["damping", "larger restitution", "collide track -e 0"] {
+        assert!(err.contains(needle), "{err} lacks {needle:?}");
+    }
+    assert!(!err.contains("rescale"), "{err}");
+    // The bound it names works: e just above it runs.
+    let bound: f64 = err
+        .split("e >= ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("no bound in {err}"));
+    let e = format!("{:e}", bound * 1.01);
+    let (code, _, err) = outcome(&[
+        "-m", "1,1", "-x", "0,1", "--sizes", "1,1", "-v", "1,0", "-e", &e,
+    ]);
+    assert!(!err.contains("too short"), "-e {e}: {code} {err}");
+    // Masses that make the contact short still say rescale.
+    refused(
+        &args("-m 1e300,1e-300 -x 0,1 --sizes 1,1 -v 1,0"),
+        "rescale the units",
+    );
+}
+
+#[test]
+fn work_precision_refuses_the_flags_of_a_single_run() {
+    // --method, --dt and --tol were silently ignored by the ladder.
+    let base = "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --work-precision --methods rk4";
+    for extra in ["--method bdf", "--dt 1e-3", "--tol 1e-6", "--max-steps 10"] {
+        let line = format!("{base} {extra}");
+        let flag = extra.split(' ').next().unwrap();
+        refused(&args(&line), &format!("{flag} is for one run"));
+    }
+}
+
+#[test]
+fn the_reduced_mass_of_tiny_or_huge_masses_does_not_underflow() {
+    // mu = m1 m2 / (m1 + m2) underflowed to 0 for masses 1e-200 (the contact "lasted 0e0" and
+    // was refused); 1e200 overflowed. Elastic, equal masses: the bodies swap velocities.
+    for (m, k) in [("1e-200,1e-200", "1"), ("1e200,1e200", "1e200")] {
+        let j = run(&args(&format!(
+            "-m {m} -x 0,1 --sizes 1,1 -v 1,0 --stiffness {k}"
+        )));
+        let v = floats(&j["v"]);
+        assert!(v[0].abs() < 1e-8 && (v[1] - 1.0).abs() < 1e-8, "{m}: {v:?}");
+    }
+}

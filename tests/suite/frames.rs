@@ -232,7 +232,18 @@ fn bad_frames_are_refused() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("'rest-in:3' is not a frame"));
+    // Two bodies on a line have no third body to be at rest with.
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("frame 'rest-in:3': two bodies on a line"),
+        "{err}"
+    );
+    let out = collide()
+        .args(["solve", "-m", "4,1", "-v", "60,10", "--frame", "rest-in:x"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("'rest-in:x' is not a frame"));
 }
 
 #[test]
@@ -272,5 +283,115 @@ proptest! {
             let scale = fin_w[i].abs().max(w.abs()).max(lab.v_fin()[i].abs()).max(1e-300);
             prop_assert!(collide::accuracy::ulps(fin_w[i], &expected, scale) <= 1.0);
         }
+    }
+}
+
+// Issue 24: small restitutions and energy units in the frames table.
+
+/// `collide frames ARGS`: (exit code, stdout, stderr).
+fn outcome(args: &[&str]) -> (i32, String, String) {
+    common::run(&[&["frames"], args].concat())
+}
+
+#[test]
+fn a_tiny_restitution_agrees_in_every_frame_relative_to_its_own_size() {
+    // -e 1e-17 exited 2: "restitution e is not the same in every frame: -3.08e-33 in the lab".
+    // e seen in a frame, -(FIN1 - FIN2)/(IN1 - IN2), cancels FIN's digits: it is checked
+    // against e beyond that rounding, and the invariant printed is e itself.
+    for e in ["1e-17", "1e-100", "1e-150"] {
+        let (code, out, err) = outcome(&["-m", "1,2", "-v", "1,0", "-e", e, "--format", "json"]);
+        assert_eq!(code, 0, "-e {e}: {err}");
+        let t: Table = serde_json::from_str(&out).unwrap();
+        assert_eq!(
+            t.invariants.restitution,
+            e.parse::<f64>().unwrap(),
+            "-e {e}"
+        );
+        // crunch = 1/2 mu u^2 = 1/2 (2/3) 1 = 1/3 in every frame.
+        assert_close(t.invariants.crunch, 1.0 / 3.0, REL, "crunch");
+        let (_, text, _) = outcome(&["-m", "1,2", "-v", "1,0", "-e", e]);
+        assert!(
+            text.contains(&format!("e = -(FIN1 - FIN2)/(IN1 - IN2) = {e}")),
+            "{text}"
+        );
+    }
+    // At 1e-300 the COM frame's KE_FIN = e^2 crunch = 1e-600/3 is below binary64: refused by
+    // name, with the way out frames has (no --show), and --exact prints it.
+    for e in ["1e-300", "5e-324"] {
+        let (code, out, err) = outcome(&["-m", "1,2", "-v", "1,0", "-e", e]);
+        assert_eq!(code, 2, "{out}");
+        assert!(
+            err.contains("energy.fin in frame com") && err.contains("--exact"),
+            "{err}"
+        );
+        assert!(
+            !err.contains("--show") && !err.contains("not the same"),
+            "{err}"
+        );
+        let (code, out, err) = outcome(&["-m", "1,2", "-v", "1,0", "-e", e, "--exact"]);
+        assert_eq!(code, 0, "{err}");
+        assert!(out.contains(&format!("(IN1 - IN2) = {e}")), "{out}");
+    }
+}
+
+#[test]
+fn frames_energies_are_in_the_unit_the_label_names() {
+    // They were joules under an eV label, in text and JSON. KE_IN = 1/2 1 kg (2 m/s)^2 = 2 J
+    // = 2 / 1.602176634e-19 eV (exact), rounded once.
+    let ev = |j: &str| {
+        let q = |s: &str| s.parse::<collide::number::Number>().unwrap().exact();
+        collide::quantity::to_f64(&(q(j) / q("1.602176634e-19"))).unwrap()
+    };
+    let args = ["-m", "1 kg,12 kg", "-v", "2 m/s,0", "--energy-unit", "eV"];
+    let (code, out, err) = outcome(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(code, 0, "{err}");
+    let t: Table = serde_json::from_str(&out).unwrap();
+    let lab = &t.frames[0];
+    assert_eq!(lab.energy.ke_in, ev("2"));
+    // crunch = 1/2 mu u^2 with mu = 12/13: 24/13 J, in every frame.
+    assert_close(t.invariants.crunch, ev("24") / 13.0, REL, "crunch in eV");
+    for row in &t.frames {
+        assert_close(row.energy.crunch, ev("24") / 13.0, REL, &row.name);
+    }
+    let (_, text, _) = outcome(&args);
+    assert!(text.contains("energies in eV"), "{text}");
+    assert!(text.contains(&collide::number::num(ev("2"))), "{text}");
+}
+
+#[test]
+fn frames_moving_with_com_or_fin_keep_every_digit_of_a_small_restitution() {
+    // m = (1, 2), V = (1, 0): V_COM = 1/3, IN_COM = (2/3, -1/3), FIN_COM = -e IN_COM; finally
+    // at rest FIN2 - FIN1 = e (V1 - V2) = e. FIN was the difference of lab velocities, which
+    // kept only their rounding: (3.08e-33, 0) in the COM frame for e = 1e-150.
+    for e in [1e-150, 1e-17, 0.5] {
+        let t: Table = serde_json::from_str(&stdout(&[
+            "frames",
+            "-m",
+            "1,2",
+            "-v",
+            "1,0",
+            "-e",
+            &format!("{e:e}"),
+            "--format",
+            "json",
+        ]))
+        .unwrap();
+        let row = |n: &str| t.frames.iter().find(|r| r.name == n).unwrap();
+        let rel = 4.0 * f64::EPSILON;
+        let com = row("com");
+        assert_close(com.fin[0], -e * 2.0 / 3.0, rel, "COM FIN1");
+        assert_close(com.fin[1], e / 3.0, rel, "COM FIN2");
+        assert_eq!(row("rest-fin:1").fin[0], 0.0);
+        assert_close(row("rest-fin:1").fin[1], e, rel, "rest-fin:1 FIN2");
+        assert_close(row("rest-fin:2").fin[0], -e, rel, "rest-fin:2 FIN1");
+        assert_eq!(row("rest-fin:2").fin[1], 0.0);
+        // COM in the finally-at-rest frames: V_COM - FIN1 = -e w2 d = 2e/3 (d = V2 - V1 = -1,
+        // w2 = m2 / M = 2/3).
+        assert_close(
+            row("rest-fin:1").com[0],
+            2.0 * e / 3.0,
+            rel,
+            "rest-fin:1 COM",
+        );
     }
 }

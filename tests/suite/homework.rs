@@ -223,3 +223,44 @@ fn units_are_kept_converted_or_refused() {
     refused(&["-m", "4,1", "-v", "1,2", "--si"], &["--si needs a unit"]);
     refused(&["-m", "1e999,1", "-v", "1,2"], &["'1e999'", "too large"]);
 }
+
+#[test]
+fn a_scenes_energy_unit_converts_every_energy_it_labels() {
+    // energy_unit = "kJ" printed "energies in kJ" over joules: KE_IN = 1/2 1 kg (2 m/s)^2 = 2 J
+    // = 0.002 kJ; per body (changes) 2 J and 0; crunch 1/2 (12/13) 4 = 24/13 J.
+    let path = std::env::temp_dir().join(format!("collide-kj-{}.toml", std::process::id()));
+    std::fs::write(
+        &path,
+        "masses = [\"1 kg\", \"12 kg\"]\nvelocities = [\"2 m/s\", \"0\"]\nenergy_unit = \"kJ\"\n\
+         show = [\"energy\", \"changes\"]\n",
+    )
+    .unwrap();
+    let p = path.to_str().unwrap();
+    let j: Value = serde_json::from_str(&stdout(&["scene", p, "--format", "json"])).unwrap();
+    let r = &j["report"];
+    let close = |v: &Value, x: f64| (v.as_f64().unwrap() - x).abs() <= 4.0 * f64::EPSILON * x;
+    assert!(close(&r["energy"]["in"], 0.002), "{}", r["energy"]);
+    assert!(
+        close(&r["energy"]["crunch"], 24.0 / 13.0 / 1000.0),
+        "{}",
+        r["energy"]
+    );
+    assert!(close(&r["changes"]["ke_in"][0], 0.002), "{}", r["changes"]);
+    assert_eq!(r["units"]["energy"], "kJ");
+    let text = stdout(&["scene", p]);
+    assert!(
+        text.contains("energies in kJ") && text.contains(" 0.002 "),
+        "{text}"
+    );
+    // A [sweep] scene has no unit labels: energy_unit is refused, not ignored.
+    std::fs::write(
+        &path,
+        "masses = [\"1 kg\", \"12 kg\"]\nvelocities = [\"2 m/s\", \"0\"]\nenergy_unit = \"kJ\"\n\
+         [sweep]\nvary = [\"e=0,1\"]\n",
+    )
+    .unwrap();
+    let out = collide().args(["scene", p]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--energy-unit kJ"));
+    std::fs::remove_file(&path).unwrap();
+}

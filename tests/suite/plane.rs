@@ -252,9 +252,9 @@ fn bad_planar_input_is_named() {
         (vec!["-m", "1,1", "-v", "?,0", "--fin", "?,?"], "unknowns"),
         (
             vec![
-                "-m", "1,1", "-v", "(1,0),0", "--normal", "(1,0)", "--frame", "com",
+                "-m", "1,1", "-v", "(1,0),0", "--normal", "(1,0)", "--frame", "(1,2,3)",
             ],
-            "--frame",
+            "3 component",
         ),
         (vec!["-m", "1,1", "-v", "3 @ 30,0"], "give its unit"),
     ] {
@@ -546,4 +546,140 @@ fn the_reversed_event_is_a_collision_with_restitution_one_over_e() {
     assert_eq!(again["fin"], r["fin"]);
     assert_eq!(again["reverse"]["in"], j["in"]);
     assert_eq!(again["reverse"]["fin"], j["fin"]);
+}
+
+#[test]
+fn frames_in_the_plane_agree_with_solve_seen_from_each_frame() {
+    // Every frame's FIN is the lab FIN less the observer's w, as `solve --frame` prints it; the
+    // crunch and lost energy are the same in every frame; in the COM frame momentum is 0.
+    let q = |x: &Value| {
+        x.as_str()
+            .unwrap()
+            .parse::<collide::number::Number>()
+            .unwrap()
+            .exact()
+    };
+    let flat = |v: &Value| -> Vec<Q> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|b| b.as_array().unwrap().iter().map(q))
+            .collect()
+    };
+    let case = [
+        "-m",
+        "1,2",
+        "-v",
+        "(4,1),(-1,2)",
+        "--normal",
+        "(1,1)",
+        "--exact",
+    ];
+    let mut args = vec!["frames"];
+    args.extend(case);
+    args.extend(["--format", "json", "--reverse", "-e", "1"]);
+    let t: Value = serde_json::from_str(&stdout(&args)).unwrap();
+    let frames = t["frames"].as_array().unwrap();
+    let words = [
+        "lab",
+        "rest-in:1",
+        "rest-in:2",
+        "com",
+        "rest-fin:1",
+        "rest-fin:2",
+    ];
+    assert_eq!(frames.len(), words.len());
+    for (f, word) in frames.iter().zip(words) {
+        let mut a = case.to_vec();
+        a.extend(["-e", "1", "--frame", word]);
+        let s = json(&a);
+        assert_eq!(s["fin"], f["fin"], "{word}");
+        assert_eq!(s["in"], f["in"], "{word}");
+        // The reversed event (IN' = -FIN, FIN' = -IN) is the same event only where -FIN = IN:
+        // with tangential motion, in no frame (the rail's COM rule needs a head-on impact).
+        let neg: Vec<Q> = flat(&f["fin"]).into_iter().map(|x| -x).collect();
+        assert!(neg != flat(&f["in"]), "{word}");
+        assert_eq!(f["reverse_equals_original"], Value::Bool(false), "{word}");
+    }
+    let com = &frames[3];
+    for k in 0..2 {
+        let p = q(&com["in"][0][k]) + q(&com["in"][1][k]) * int(2);
+        assert_eq!(p, Q::ZERO, "COM momentum, component {k}");
+    }
+    // crunch = 1/2 mu (n.(v1 - v2))^2 / n.n = 1/2 (2/3) (5 - 1)^2 / 2 = 8/3.
+    assert_eq!(t["invariants"]["crunch"], "8/3");
+    assert_eq!(t["invariants"]["lost"], "0");
+    // Head-on (no tangential motion): the COM frame's reverse is the event itself.
+    let t: Value = serde_json::from_str(&stdout(&[
+        "frames",
+        "-m",
+        "1,2",
+        "-v",
+        "(4,4),(-1,-1)",
+        "--normal",
+        "(1,1)",
+        "--exact",
+        "--format",
+        "json",
+        "--reverse",
+    ]))
+    .unwrap();
+    for f in t["frames"].as_array().unwrap() {
+        assert_eq!(
+            f["reverse_equals_original"],
+            Value::Bool(f["name"] == "COM"),
+            "{}",
+            f["name"]
+        );
+    }
+}
+
+#[test]
+fn planar_scenes_check_their_hand_derived_numbers() {
+    let mut files: Vec<String> = std::fs::read_dir("scenarios")
+        .unwrap()
+        .map(|e| e.unwrap().path().display().to_string())
+        .filter(|p| p.contains("/plane-") && p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 5, "{files:?}");
+    let mut args = vec!["scene"];
+    args.extend(files.iter().map(String::as_str));
+    args.extend(["--format", "json"]);
+    let all: Value = serde_json::from_str(&stdout(&args)).unwrap();
+    for s in all.as_array().unwrap() {
+        assert_eq!(s["failed"], serde_json::json!([]), "{}", s["scene"]);
+        assert!(s["checks"].as_u64().unwrap() >= 2, "{}", s["scene"]);
+    }
+}
+
+#[test]
+fn planar_scene_errors_name_file_and_line() {
+    let dir = std::env::temp_dir().join(format!("collide-plane-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (body, needle) in [
+        (
+            "masses = [1, 1]\nvelocities = [[4, 0], 0]\nnormal = [1, 1]\nnorml = 3\n",
+            ":4:1: unknown field `norml`",
+        ),
+        (
+            "masses = [1, 1]\nvelocities = [[4, \"x\"], 0]\nnormal = [1, 1]\n",
+            ":2:14: velocities: '(4,x)': component 'x' is not a number",
+        ),
+        (
+            "masses = [1, 1, 1]\nvelocities = [[4, 0], 0]\nrestitution = 0\n",
+            "give one per body",
+        ),
+        (
+            "masses = [1, 1]\nvelocities = [[4, 0], 0]\nnormal = [1, 1]\n[expect]\nfinn = 3\n",
+            ":5:8: [expect] \"finn\": unknown quantity 'finn'",
+        ),
+    ] {
+        let path = dir.join("bad.toml");
+        std::fs::write(&path, body).unwrap();
+        let (code, out, err) = run(&["scene", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{body}: {out}");
+        assert!(err.contains(needle), "{body}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
 }

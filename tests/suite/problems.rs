@@ -120,7 +120,7 @@ fn recoil_from_rest_is_a_separation() {
     );
     let (code, out, _) = run(&args);
     assert_eq!(code, 0);
-    assert!(out.starts_with("Solved: m2 = 4, e undefined"), "{out}");
+    assert!(out.starts_with("Solved: m2 = 4 kg, e undefined"), "{out}");
     assert!(out.contains("released = 1/2 mu (f1 - f2)^2  210"), "{out}");
     assert!(out.contains("in N"), "{out}");
     // The same in exact arithmetic.
@@ -574,7 +574,8 @@ fn headers_show_typed_values_and_no_solved_fractions() {
     assert!(out.contains("e = 2/3 (ka-whump)"), "{out}");
     // 10 g and 2 kg are converted to kg as decimals, not fractions.
     let (_, out, _) = run(&["-m", "10 g,2 kg", "-v", "1 m/s,0", "--show", "vectors"]);
-    assert!(out.starts_with("M = diag(0.01, 2)"), "{out}");
+    // (after the answer, FIN with units, which a case with units puts first)
+    assert!(out.contains("\nM = diag(0.01, 2)"), "{out}");
 }
 
 #[test]
@@ -596,4 +597,118 @@ fn a_near_miss_in_a_scene_check_shows_every_digit() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("got 23.333333333333332"), "{text}");
     std::fs::remove_file(&dir).unwrap();
+}
+
+// Issue 24: no false number from --reverse, --energy-unit, a wall or a typed -0.
+
+#[test]
+fn the_reversed_restitution_is_refused_by_name_or_printed_exactly_never_inf() {
+    // e' = 1/e overflowed: "e' inf" in text, "restitution": null in JSON, exit 0.
+    for e in ["5e-324", "1e-309"] {
+        for format in ["text", "json"] {
+            let (code, out, err) = run(&[
+                "-m",
+                "1,2",
+                "-v",
+                "1,0",
+                "-e",
+                e,
+                "--reverse",
+                "--format",
+                format,
+            ]);
+            assert_eq!(code, 2, "-e {e}: {out}");
+            assert!(out.is_empty(), "{out}");
+            assert!(
+                err.contains(&format!("1/e = 1/{e}")) && err.contains("--exact"),
+                "{err}"
+            );
+        }
+    }
+    // Exactly: 1/(5e-324) = 2e323, a terminating decimal, printed in exact notation.
+    let (code, out, _) = run(&[
+        "-m",
+        "1,2",
+        "-v",
+        "1,0",
+        "-e",
+        "5e-324",
+        "--reverse",
+        "--exact",
+    ]);
+    assert_eq!(code, 0);
+    let line = out.lines().find(|l| l.contains("e'")).unwrap();
+    assert!(line.contains(" 2e323 "), "{line}");
+    let (_, j) = json("-m 1,2 -v 1,0 -e 5e-324 --reverse --exact");
+    assert_eq!(j["reverse"]["restitution"], format!("2{}", "0".repeat(323)));
+}
+
+#[test]
+fn reversed_energies_are_in_the_energy_unit_and_never_negative() {
+    // -m '1 kg,12 kg' -v '2 m/s,0' -e 1/2: KE_IN = 2 J, V_COM = 2/13, FIN = (-10/13, 3/13):
+    // KE_FIN = 1/2 (100/169) + 6 (9/169) = 104/169 = 8/13 J; lost = 2 - 8/13 = 18/13 J. In kJ
+    // each is 1/1000 of that; they were printed in J under the kJ label.
+    let (code, j) = json("-m 1kg,12kg -v 2m/s,0 -e 1/2 --reverse --energy-unit kJ");
+    assert_eq!(code, 0);
+    let r = &j["reverse"]["energy"];
+    assert_close(f(&r["in"]), 8.0 / 13.0 / 1000.0, REL, "KE_IN' = KE_FIN");
+    assert_close(f(&r["fin"]), 0.002, REL, "KE_FIN' = KE_IN");
+    assert_close(f(&r["gained"]), 18.0 / 13.0 / 1000.0, REL, "gained");
+    assert!(r.get("lost").is_none(), "{r}");
+    // e = 2 (superelastic: the original releases (e^2 - 1) crunch = 3 (1/3) = 1): its reverse
+    // loses 1, said as "lost", not as "gained": -1.
+    let (code, j) = json("-m 1,2 -v 1,0 -e 2 --reverse");
+    assert_eq!(code, 0);
+    let r = &j["reverse"]["energy"];
+    assert_close(f(&r["lost"]), 1.0, REL, "lost");
+    assert!(r.get("gained").is_none(), "{r}");
+    // No -0 in the reversed vectors (FIN' = -IN with IN2 = 0).
+    assert_eq!(j["reverse"]["fin"], serde_json::json!([-1.0, 0.0]));
+    assert!(!serde_json::to_string(&j).unwrap().contains("-0.0"), "{j}");
+}
+
+#[test]
+fn the_forms_line_is_in_one_unit() {
+    // "1 - -0.846 = crunch = 1.15e19" mixed the forms' J with eV: the forms and their crunch
+    // stay in the case's unit (J), the energy section is in eV. crunch = 1/2 (12/13) 4 = 24/13.
+    let (code, out, _) = run(&["-m", "1 kg,12 kg", "-v", "2 m/s,0", "--energy-unit", "eV"]);
+    assert_eq!(code, 0);
+    let line = out.lines().find(|l| l.contains("V_IN.M.V_IN/4")).unwrap();
+    assert!(
+        line.contains(&format!("= crunch = {}", collide::number::num(24.0 / 13.0))),
+        "{line}"
+    );
+}
+
+#[test]
+fn an_unknown_against_a_wall_is_never_a_receding_ball() {
+    // FIN -0.5 with e = 1/2 "solved" v2 = 1: the ball moving away from the wall on its left.
+    for line in [
+        "-m wall,1 -v 0,? --fin 0,-0.5 -e 0.5",
+        "-m wall,1 -v 0,1 --fin 0,-0.5",
+        "-m 1,wall -v ?,0 --fin 0.5,0 -e 0.5",
+    ] {
+        let args: Vec<&str> = line.split(' ').collect();
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{line}: {out}");
+        assert!(
+            err.contains("moves away from the wall") && err.contains("unphysical"),
+            "{line}: {err}"
+        );
+    }
+    // The bounce it describes: v2 = -1 toward the wall, f2 = -e v2 = 1/2.
+    let (code, j) = json("-m wall,1 -v 0,? --fin 0,0.5 -e 0.5 --exact");
+    assert_eq!(code, 0);
+    assert_eq!(j["solved"]["v2"], "-1");
+}
+
+#[test]
+fn typed_negative_zeros_print_as_zero_in_headers() {
+    let (code, out, _) = run(&["-m", "1,2", "-v", "-0.0,1", "-e", "-0"]);
+    assert_eq!(code, 0);
+    let header = out.lines().next().unwrap();
+    assert_eq!(
+        header,
+        "M = diag(1, 2)   V_IN = (0, 1)   e = 0 (totally inelastic: ka-runch)"
+    );
 }

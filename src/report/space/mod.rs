@@ -5,6 +5,10 @@
 //!
 //! Every value is exact (`space::outcome`) and rounded once here: binary64 text and JSON carry the
 //! correctly rounded value, `--exact` fractions (or `≈` digits of irrational ones).
+//!
+//! - this module: one event's sections, its time reverse;
+//! - `frames`: the event from every standard frame;
+//! - `solved`: a problem's solutions (what was solved, which are physical, the checks).
 
 use std::cell::Cell;
 use std::fmt::Write;
@@ -16,13 +20,16 @@ use crate::number::num;
 use crate::quantity::{Exact, Scalar};
 use crate::rational::{Q, to_f64};
 use crate::space::outcome::{Outcome, angle_between, dot, polar};
-use crate::space::solve::{Check, Unknown};
+
 use crate::units::Units;
 
 use super::text::Block;
 
+pub mod frames;
+pub mod solved;
+
 /// Text lines fit a terminal of this width.
-const WIDTH: usize = 80;
+pub(crate) const WIDTH: usize = 80;
 
 /// What a planar report shows (`--show`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -32,6 +39,30 @@ pub struct Show {
     pub forms: bool,
     pub energy: bool,
     pub angles: bool,
+}
+
+impl Show {
+    /// No section.
+    pub fn none() -> Show {
+        Show {
+            vectors: false,
+            momentum: false,
+            forms: false,
+            energy: false,
+            angles: false,
+        }
+    }
+
+    /// Every section.
+    pub fn all() -> Show {
+        Show {
+            vectors: true,
+            momentum: true,
+            forms: true,
+            energy: true,
+            angles: true,
+        }
+    }
 }
 
 impl Default for Show {
@@ -127,7 +158,7 @@ impl Style {
 }
 
 /// `(a, b)`, or `a` on a line.
-fn vector(style: &Style, v: &[Q], approx: bool) -> String {
+pub(crate) fn vector(style: &Style, v: &[Q], approx: bool) -> String {
     let parts: Vec<String> = v.iter().map(|x| style.show(x, approx)).collect();
     if parts.len() == 1 {
         parts[0].clone()
@@ -137,7 +168,7 @@ fn vector(style: &Style, v: &[Q], approx: bool) -> String {
 }
 
 /// `4 @ 30°`: a vector's speed and direction (in the plane), or its speed (in space).
-fn speed_angle(v: &[Q]) -> String {
+pub(crate) fn speed_angle(v: &[Q]) -> String {
     let (speed, angle) = polar(v);
     match angle {
         Some(a) if v.len() == 2 => format!("{} @ {}°", num(speed), num(a)),
@@ -148,7 +179,7 @@ fn speed_angle(v: &[Q]) -> String {
 }
 
 /// The velocities' unit after a vector (` m/s`), when the case has one.
-fn unit_suffix(units: &Units) -> String {
+pub(crate) fn unit_suffix(units: &Units) -> String {
     units.velocity.map(|u| format!(" {u}")).unwrap_or_default()
 }
 
@@ -193,71 +224,8 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
 }
 
 /// `v2'`, `v1` and the like.
-fn name(i: usize, fin: bool) -> String {
+pub(crate) fn name(i: usize, fin: bool) -> String {
     format!("v{}{}", i + 1, if fin { "'" } else { "" })
-}
-
-/// The `Solved:` lines for the unknowns of one solution.
-pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
-    if unknowns.is_empty() {
-        return String::new();
-    }
-    let mut parts: Vec<String> = Vec::new();
-    let mut seen: Vec<(usize, bool)> = Vec::new();
-    for u in unknowns {
-        match *u {
-            Unknown::Mass(i) => parts.push(format!(
-                "m{} = {}",
-                i + 1,
-                style.show(&o.masses[i], o.approx)
-            )),
-            Unknown::Restitution => {
-                if let Some(e) = &o.e {
-                    parts.push(format!("e = {}", style.show(e, o.approx)));
-                }
-            }
-            Unknown::Component(i, fin, _)
-            | Unknown::Speed(i, fin)
-            | Unknown::Direction(i, fin, _) => {
-                if seen.contains(&(i, fin)) {
-                    continue;
-                }
-                seen.push((i, fin));
-                let v = if fin { &o.fin[i] } else { &o.v_in[i] };
-                let polar = speed_angle(v);
-                let polar = if polar.is_empty() {
-                    String::new()
-                } else {
-                    format!(" = {polar}")
-                };
-                parts.push(format!(
-                    "{} = {}{polar}",
-                    name(i, fin),
-                    vector(style, v, o.approx)
-                ));
-            }
-        }
-    }
-    let mut out = String::from("Solved:\n");
-    for p in parts {
-        let _ = writeln!(out, "  {p}");
-    }
-    out
-}
-
-/// The laws checked rather than used, when any fails or the problem gave more than it needed.
-pub fn checks_text(checks: &[Check], used: usize) -> String {
-    let mut out = String::new();
-    for c in checks.iter().skip(used).filter(|c| !c.ok) {
-        let _ = writeln!(
-            out,
-            "Check: {} does NOT hold: it misses by {} (of terms of size {})",
-            c.law.name(),
-            num(c.residual),
-            num(c.scale)
-        );
-    }
-    out
 }
 
 /// The report's sections as text.
@@ -550,12 +518,15 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
         }
         m.insert("energy".into(), Value::Object(energy));
     }
-    if show.angles
-        && o.dim >= 2
-        && o.bodies() == 2
-        && let Some(t) = angle_between(&o.fin[0], &o.fin[1])
-    {
-        m.insert("angle_between_deg".into(), json!(t));
+    if show.angles && o.dim >= 2 && o.bodies() == 2 {
+        if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
+            m.insert("angle_between_deg".into(), json!(t));
+        }
+        // How far each body turned, from v to v' (0 for a body at rest before or after).
+        let turned: Vec<f64> = (0..2)
+            .map(|i| angle_between(&o.v_in[i], &o.fin[i]).unwrap_or(0.0))
+            .collect();
+        m.insert("turned_deg".into(), json!(turned));
     }
     style.checked(Value::Object(m))
 }

@@ -1,0 +1,368 @@
+//! What a problem in the plane or in space was solved for, and its solutions: which are
+//! physical collisions, the laws checked rather than used, rendered as text and JSON.
+
+use std::fmt::Write;
+
+use serde_json::{Map, Value, json};
+
+use crate::frame::Frame;
+use crate::number::num;
+use crate::rational::Q;
+use crate::space::outcome::{FrameVelocityError, Outcome, dot, sub};
+use crate::space::pose::{Posed, outcomes};
+use crate::space::solve::{Check, Solved, Statement, Unknown, Velocity};
+use crate::units::{EnergyUnit, EnergyUnitError, Units};
+
+use super::super::text::{header_units, wrap};
+use super::{
+    Overflow, Show, Style, WIDTH, header, name, reverse_json, reverse_text, speed_angle, vector,
+};
+
+/// The `Solved:` lines for the unknowns of one solution.
+pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
+    if unknowns.is_empty() {
+        return String::new();
+    }
+    let mut parts: Vec<String> = Vec::new();
+    let mut seen: Vec<(usize, bool)> = Vec::new();
+    for u in unknowns {
+        match *u {
+            Unknown::Mass(i) => parts.push(format!(
+                "m{} = {}",
+                i + 1,
+                style.show(&o.masses[i], o.approx)
+            )),
+            Unknown::Restitution => {
+                if let Some(e) = &o.e {
+                    parts.push(format!("e = {}", style.show(e, o.approx)));
+                }
+            }
+            Unknown::Component(i, fin, _)
+            | Unknown::Speed(i, fin)
+            | Unknown::Direction(i, fin, _) => {
+                if seen.contains(&(i, fin)) {
+                    continue;
+                }
+                seen.push((i, fin));
+                let v = if fin { &o.fin[i] } else { &o.v_in[i] };
+                let polar = speed_angle(v);
+                let polar = if polar.is_empty() {
+                    String::new()
+                } else {
+                    format!(" = {polar}")
+                };
+                parts.push(format!(
+                    "{} = {}{polar}",
+                    name(i, fin),
+                    vector(style, v, o.approx)
+                ));
+            }
+        }
+    }
+    let mut out = String::from("Solved:\n");
+    for p in parts {
+        let _ = writeln!(out, "  {p}");
+    }
+    out
+}
+
+/// The laws checked rather than used, when any fails or the problem gave more than it needed.
+pub fn checks_text(checks: &[Check], used: usize) -> String {
+    let mut out = String::new();
+    for c in checks.iter().skip(used).filter(|c| !c.ok) {
+        let _ = writeln!(
+            out,
+            "Check: {} does NOT hold: it misses by {} (of terms of size {})",
+            c.law.name(),
+            num(c.residual),
+            num(c.scale)
+        );
+    }
+    out
+}
+
+/// How a problem's solutions are printed.
+pub struct Options<'a> {
+    /// The frame to see each solution from.
+    pub frame: &'a Frame,
+    pub show: Show,
+    pub exact: bool,
+    pub reverse: bool,
+    /// The problem gave final velocities (its FIN unknowns are asked for, not computed).
+    pub fin_given: bool,
+    pub energy_unit: Option<&'static EnergyUnit>,
+}
+
+/// A problem's solutions, as text and as JSON.
+pub struct Rendered {
+    pub text: String,
+    pub json: Value,
+    /// Given values contradict a law checked rather than used (exit 1; no event printed).
+    pub inconsistent: bool,
+}
+
+/// Why solutions cannot be printed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RenderError {
+    #[error(transparent)]
+    Overflow(#[from] Overflow),
+    #[error(transparent)]
+    Frame(#[from] FrameVelocityError),
+    #[error(transparent)]
+    EnergyUnit(#[from] EnergyUnitError),
+    #[error(
+        "no real solution: the given values cannot satisfy the laws together (the energy \
+         equation has no real root); check them"
+    )]
+    NoSolution,
+}
+
+/// Why a solution is left out when another one is physical.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    Physical,
+    /// FIN = IN: the bodies pass without an impulse.
+    NoImpulse,
+    /// They would approach after or separate before, along the impulse.
+    Unphysical,
+    /// A speed along a given direction came out negative (the opposite direction).
+    NegativeSpeed,
+}
+
+impl Verdict {
+    pub fn describe(self) -> &'static str {
+        match self {
+            Verdict::Physical => "physical",
+            Verdict::NoImpulse => "no impulse: the bodies pass each other unchanged",
+            Verdict::Unphysical => {
+                "unphysical: along the impulse the bodies would separate before or approach after"
+            }
+            Verdict::NegativeSpeed => "a speed along a given direction is negative",
+        }
+    }
+
+    /// Whether a solution is a physical collision.
+    pub fn of(o: &Outcome, st: &Statement) -> Verdict {
+        for (i, v) in st.fin.iter().chain(&st.v_in).enumerate() {
+            if let Velocity::Speed { unit } = v {
+                let body = i % o.bodies();
+                let vel = if i < o.bodies() {
+                    &o.fin[body]
+                } else {
+                    &o.v_in[body]
+                };
+                if dot(vel, unit) < Q::ZERO {
+                    return Verdict::NegativeSpeed;
+                }
+            }
+        }
+        if o.bodies() != 2 {
+            return Verdict::Physical;
+        }
+        if o.impulse_line().is_none() {
+            return if o.v_in == o.fin {
+                Verdict::NoImpulse
+            } else {
+                Verdict::Physical
+            };
+        }
+        match o.physical() {
+            Some(false) => Verdict::Unphysical,
+            _ => Verdict::Physical,
+        }
+    }
+}
+
+/// The solutions of a posed problem, judged in the lab and printed as `opts.frame` sees them:
+/// the physical ones (or all, when none is), what was solved, the checks; a collision asked
+/// outright whose bodies do not approach along the line of impact gets the note alone.
+pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered, RenderError> {
+    // The final velocities are unknowns of the laws, but only what the problem marked '?' (or
+    // gave as final velocities) is "solved" for the reader.
+    let asked: Vec<Unknown> = solved
+        .unknowns
+        .iter()
+        .filter(|u| opts.fin_given || !matches!(u, Unknown::Component(_, true, _)))
+        .copied()
+        .collect();
+    let mut units = posed.units.clone();
+    if let Some(u) = opts.energy_unit {
+        units = units.with_energy_unit(u)?;
+    }
+    let style = Style::new(opts.exact, units.energy_scale());
+    let all = outcomes(posed, solved);
+    if all.is_empty() {
+        return Err(RenderError::NoSolution);
+    }
+    let mut judged: Vec<(Outcome, Vec<Check>, Verdict)> = Vec::new();
+    for (o, c) in all {
+        let v = Verdict::of(&o, &posed.statement);
+        let w = o.observer(opts.frame, posed.typed_values)?;
+        judged.push((o.boost(&w), c, v));
+    }
+    let keep: Vec<&(Outcome, Vec<Check>, Verdict)> =
+        if judged.iter().any(|(_, _, v)| *v == Verdict::Physical) {
+            judged
+                .iter()
+                .filter(|(_, _, v)| *v == Verdict::Physical)
+                .collect()
+        } else {
+            judged.iter().collect()
+        };
+    let inconsistent = keep.iter().all(|(_, c, _)| c.iter().any(|c| !c.ok));
+    if let [(o, _, Verdict::Unphysical)] = keep.as_slice()
+        && asked.is_empty()
+        && let Some(n) = &o.normal
+    {
+        let along = dot(n, &sub(&o.v_in[0], &o.v_in[1]));
+        return receding(o, &along, &style, &units);
+    }
+    let frame_line = (*opts.frame != Frame::Lab).then(|| {
+        format!(
+            "Seen from: {} (every velocity less the observer's)\n",
+            opts.frame.describe()
+        )
+    });
+    let many = keep.len() > 1;
+    let mut text = String::new();
+    let mut list = Vec::new();
+    for (k, (o, checks, v)) in keep.iter().enumerate() {
+        if many {
+            let _ = writeln!(
+                text,
+                "{}Solution {} of {} ({})",
+                if k > 0 { "\n" } else { "" },
+                k + 1,
+                keep.len(),
+                v.describe()
+            );
+        } else if *v != Verdict::Physical {
+            text.push_str(&wrap(&format!("Note: {}", v.describe()), WIDTH, "  "));
+        }
+        text.push_str(&header(o, &style, &units));
+        text.push_str(frame_line.as_deref().unwrap_or_default());
+        text.push_str(&header_units(&units));
+        text.push_str(&solved_text(o, &asked, &style));
+        text.push_str(&checks_text(checks, 0));
+        let mut j = if inconsistent {
+            text.push_str(
+                "The given values contradict each other, so no collision is printed: check them, \
+                 or mark one '?' to solve for it.\n",
+            );
+            json!({ "consistent": false })
+        } else {
+            text.push_str(&super::text(o, opts.show, &style, &units)?);
+            if opts.reverse {
+                text.push_str(&reverse_text(o, &style)?);
+            }
+            super::json(o, opts.show, &style)?
+        };
+        let m = j.as_object_mut().expect("a report is an object");
+        if opts.reverse && !inconsistent {
+            m.insert("reverse".into(), reverse_json(o, &style)?);
+        }
+        if !asked.is_empty() {
+            m.insert("solved".into(), solved_json(o, &asked, &style));
+        }
+        let failed: Vec<Value> = checks
+            .iter()
+            .filter(|c| !c.ok)
+            .map(|c| json!({"law": c.law.name(), "residual": c.residual}))
+            .collect();
+        if !failed.is_empty() {
+            m.insert("failed_checks".into(), failed.into());
+        }
+        if *v != Verdict::Physical {
+            m.insert("note".into(), v.describe().into());
+        }
+        list.push(j);
+    }
+    let mut json = if many {
+        json!({ "solutions": list })
+    } else {
+        list.pop().unwrap_or_default()
+    };
+    annotate_units(&mut json, &units);
+    Ok(Rendered {
+        text,
+        json,
+        inconsistent,
+    })
+}
+
+/// `"units": {"mass", "velocity", "energy"}` when the case has units.
+fn annotate_units(json: &mut Value, units: &Units) {
+    if units.mass.is_none() && units.velocity.is_none() {
+        return;
+    }
+    let Some(m) = json.as_object_mut() else {
+        return;
+    };
+    let mut u = Map::new();
+    if let Some(x) = units.mass {
+        u.insert("mass".into(), x.into());
+    }
+    if let Some(x) = units.velocity {
+        u.insert("velocity".into(), x.into());
+    }
+    u.insert("energy".into(), units.energy().into());
+    m.insert("units".into(), u.into());
+}
+
+/// Bodies that do not approach along the line of impact: the note alone.
+fn receding(o: &Outcome, along: &Q, style: &Style, units: &Units) -> Result<Rendered, RenderError> {
+    let mut text = header(o, style, units);
+    text.push_str(&wrap(
+        &format!(
+            "Note: the bodies do not approach along the line of impact: n.(v1 - v2) = {} <= 0, \
+             so they do not collide (no FIN).",
+            style.show(along, o.approx)
+        ),
+        WIDTH,
+        "  ",
+    ));
+    let a = o.approx;
+    let vecs: Vec<Value> = o
+        .v_in
+        .iter()
+        .map(|v| v.iter().map(|x| style.json(x, a)).collect())
+        .collect();
+    let mut json = json!({
+        "dim": o.dim,
+        "masses": o.masses.iter().map(|m| style.json(m, a)).collect::<Vec<_>>(),
+        "normal": o.normal.as_ref().map(|n| n.iter().map(|x| style.json(x, a)).collect::<Vec<_>>()),
+        "in": vecs,
+        "approaching": false,
+    });
+    annotate_units(&mut json, units);
+    Ok(Rendered {
+        text,
+        json,
+        inconsistent: false,
+    })
+}
+
+/// `"solved": {"v2'": [..], "m1": ..}`.
+pub fn solved_json(o: &Outcome, unknowns: &[Unknown], style: &Style) -> Value {
+    let mut m = Map::new();
+    for u in unknowns {
+        let (key, value) = match *u {
+            Unknown::Mass(i) => (format!("m{}", i + 1), style.json(&o.masses[i], o.approx)),
+            Unknown::Restitution => match &o.e {
+                Some(e) => ("e".to_string(), style.json(e, o.approx)),
+                None => continue,
+            },
+            Unknown::Component(i, fin, _)
+            | Unknown::Speed(i, fin)
+            | Unknown::Direction(i, fin, _) => {
+                let v = if fin { &o.fin[i] } else { &o.v_in[i] };
+                (
+                    name(i, fin),
+                    Value::Array(v.iter().map(|x| style.json(x, o.approx)).collect()),
+                )
+            }
+        };
+        m.insert(key, value);
+    }
+    m.into()
+}
