@@ -392,16 +392,71 @@ pub struct TrackArgs {
     pub max_collisions: u64,
 
     /// Write every collision (time, who, velocities before and after) to FILE ('-': stderr)
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", conflicts_with = "vary")]
     pub log: Option<PathBuf>,
 
     /// Format of the log [default: jsonl for a .jsonl file, else csv]
     #[arg(long, value_enum)]
     pub log_format: Option<InputFormat>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    /// Output format [default: text; with --vary, from -o's extension, else csv]
+    #[arg(long, value_enum)]
+    pub format: Option<RunFormat>,
+
+    #[command(flatten)]
+    pub table: RunTableArgs,
+}
+
+/// The output of `track` and `contact`: a report of one run, or with --vary a table of runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum RunFormat {
+    /// Aligned text for people (a report; with --vary, aligned columns)
+    Text,
+    /// One JSON object (stable schema: docs/json.md); not with --vary (use jsonl)
+    Json,
+    /// With --vary: comma-separated values with a header line
+    Csv,
+    /// With --vary: one JSON object a line
+    Jsonl,
+    /// With --vary: Apache Parquet, zstd, float64 columns (needs -o FILE)
+    Parquet,
+}
+
+/// A table of runs (`--vary`): one row per run over a grid of parameters, as `collide sweep`.
+#[derive(Args, Debug, Clone)]
+pub struct RunTableArgs {
+    /// A parameter to vary, one row per run: NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or
+    /// NAME=a,b,c, with NAME any number of the run: m1, x1, v1, s1 (mass, position, velocity,
+    /// size of body 1), ... and the flags (stiffness, zeta, e, gravity, until, ...; '_' or '-');
+    /// repeat for a cartesian product (the last varies fastest)
+    #[arg(long, value_name = "NAME=RANGE", allow_hyphen_values = true)]
+    pub vary: Vec<String>,
+
+    /// Only the K-th of N contiguous slices of the runs (K from 1), as for collide sweep
+    #[arg(long, value_name = "K/N", requires = "vary")]
+    pub shard: Option<Shard>,
+
+    /// Refuse sweeps of more runs than this
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_ROWS)]
+    pub max_rows: u64,
+
+    /// Columns of a table of runs, comma-separated [default: the varied parameters, the run's
+    /// summary, error]
+    #[arg(long, value_delimiter = ',', value_name = "COLUMNS", requires = "vary")]
+    pub columns: Vec<String>,
+
+    /// Write the table of runs to FILE atomically
+    #[arg(short, long, value_name = "FILE", requires = "vary")]
+    pub output: Option<PathBuf>,
+
+    /// Report each failed run on stderr and leave it out (default: a row with its error, or,
+    /// without an error column, stop at the first)
+    #[arg(long, requires = "vary")]
+    pub skip_bad: bool,
+
+    /// Which shards carry the header line (CSV, text), as for collide sweep
+    #[arg(long, value_enum, requires = "vary")]
+    pub header: Option<Header>,
 }
 
 /// Output of a table of rows.
@@ -910,7 +965,7 @@ pub struct ContactArgs {
     pub max_steps: u64,
 
     /// Error against run time for each method on a ladder of tolerances or steps
-    #[arg(long)]
+    #[arg(long, conflicts_with = "vary")]
     pub work_precision: bool,
 
     /// Methods for --work-precision [default: all]
@@ -925,10 +980,28 @@ pub struct ContactArgs {
 
     /// Write a picture to FILE.svg: the work-precision diagram with --work-precision, else the
     /// force and overlap of each contact against time
-    #[arg(long, value_name = "FILE.svg")]
+    #[arg(long, value_name = "FILE.svg", conflicts_with = "vary")]
     pub plot: Option<PathBuf>,
 
-    /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    /// Output format [default: text; with --vary, from -o's extension, else csv]
+    #[arg(long, value_enum)]
+    pub format: Option<RunFormat>,
+
+    #[command(flatten)]
+    pub table: RunTableArgs,
+}
+
+impl RunFormat {
+    /// The format of one run's report.
+    pub fn report(format: Option<RunFormat>) -> anyhow::Result<Format> {
+        match format {
+            None | Some(RunFormat::Text) => Ok(Format::Text),
+            Some(RunFormat::Json) => Ok(Format::Json),
+            Some(f) => anyhow::bail!(
+                "--format {} is for a table of runs: add --vary NAME=RANGE, or use text or json",
+                f.to_possible_value()
+                    .map_or("?".into(), |v| v.get_name().to_string())
+            ),
+        }
+    }
 }

@@ -5,11 +5,16 @@ use anyhow::Result;
 use collide::contact::{self, Damping, Laws, Method, Settings, Setup};
 use collide::output::write_file;
 use collide::report::{contact as report, json};
+use collide::table::runs::contact::ContactSweep;
 
 use super::Outcome;
-use crate::cli::{ContactArgs, Format, MethodArg};
+use crate::cli::{ContactArgs, Format, MethodArg, RunFormat};
 
 pub fn run(args: ContactArgs) -> Result<Outcome> {
+    if !args.table.vary.is_empty() {
+        return sweep(args);
+    }
+    let format = RunFormat::report(args.format)?;
     let bodies = args.layout.bodies()?;
     let laws = Laws {
         kind: args.law,
@@ -57,7 +62,7 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
         let work = contact::work::work_precision(&setup, &methods, until)?;
         // Every number checked, whatever the format: none is NaN or infinite.
         let checked = report::work_json(&work)?;
-        let stdout = match args.format {
+        let stdout = match format {
             Format::Json => json::render(&checked),
             Format::Text => report::work_text(&setup, &work),
         };
@@ -76,7 +81,7 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
     };
     let run = contact::simulate(&setup, &settings)?;
     let checked = report::json(&run)?;
-    let stdout = match args.format {
+    let stdout = match format {
         Format::Json => json::render(&checked),
         Format::Text => report::text(&setup, &run),
     };
@@ -84,4 +89,32 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
         write_file(path, collide::plot::work::history(&setup, &run).as_bytes())?;
     }
     Ok(Outcome::print(stdout))
+}
+
+/// `--vary`: a table of runs, one row each (`collide::table::runs::contact`).
+fn sweep(args: ContactArgs) -> Result<Outcome> {
+    let damping = |c, z, e| Damping::given(c, z, e);
+    let base = ContactSweep {
+        bodies: args.layout.bodies()?,
+        walls: (
+            args.layout.left_wall.map(|x| x.value()),
+            args.layout.right_wall.map(|x| x.value()),
+        ),
+        laws: Laws {
+            kind: args.law,
+            k: args.stiffness,
+            damping: damping(args.damping, args.zeta, args.restitution),
+            wall_k: args.wall_stiffness,
+            wall_damping: damping(args.wall_damping, args.wall_zeta, args.wall_restitution),
+        },
+        settings: Settings {
+            method: args.method.method(),
+            dt: args.dt,
+            tol: args.tol,
+            until: args.until.map(|t| t.value()),
+            max_steps: args.max_steps,
+            trace: false,
+        },
+    };
+    super::table::run_table(&base, &args.table, args.format)
 }

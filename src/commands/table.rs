@@ -1,6 +1,7 @@
 //! `collide sweep` and `collide batch`: tables of collisions for scripts; also a `[sweep]` scene.
 
 use anyhow::Result;
+use clap::ValueEnum;
 use collide::case::Case;
 use collide::output::{Output, Progress};
 use collide::table::batch;
@@ -9,8 +10,10 @@ use collide::table::engine::{RowsError, Summary, write_batch, write_sweep};
 use collide::table::sweep::{Grid, Param, Shard};
 use collide::table::writer::{Header, RowFormat, RowWriter};
 
+use collide::table::runs::{self, Kind};
+
 use super::Outcome;
-use crate::cli::{BatchArgs, SweepArgs, TableArgs};
+use crate::cli::{BatchArgs, RunFormat, RunTableArgs, SweepArgs, TableArgs};
 
 pub fn sweep(args: SweepArgs) -> Result<Outcome> {
     let case = args.case.into_case(false)?;
@@ -79,11 +82,30 @@ fn columns(chosen: &[&'static Column], general: bool) -> Vec<&'static Column> {
 }
 
 /// How the rows are written: `--format`, else the format `-o`'s extension names (`.csv`,
-/// `.jsonl`, `.ndjson`), else CSV; a format the name contradicts is refused (`-o x.jsonl` wrote
-/// CSV). The header goes in every shard written to a file (each reads on its own), only in the
-/// first on stdout or a device (the shards concatenated are the whole table), unless `--header`
-/// says otherwise.
+/// `.jsonl`, `.ndjson`, `.parquet`), else CSV; a format the name contradicts is refused (`-o
+/// x.jsonl` wrote CSV). The header goes in every shard written to a file (each reads on its
+/// own), only in the first on stdout or a device (the shards concatenated are the whole table),
+/// unless `--header` says otherwise. Parquet is written to a file only (`-o`), and always has
+/// its schema.
 fn writer(columns: Vec<&'static Column>, table: &TableArgs, out: &Output) -> Result<RowWriter> {
+    let format = format_of(table, out)?;
+    let header = header(table, out);
+    let w = RowWriter::new(columns, format).with_header(header);
+    w.check().map_err(anyhow::Error::msg)?;
+    Ok(w)
+}
+
+/// The header's pieces: `--header`, else every shard of a file, the first on stdout.
+fn header(table: &TableArgs, out: &Output) -> Header {
+    table.header.unwrap_or(if out.is_file() {
+        Header::Always
+    } else {
+        Header::First
+    })
+}
+
+/// The format of a table (see [`writer`]).
+fn format_of(table: &TableArgs, out: &Output) -> Result<RowFormat> {
     let named = table
         .output
         .as_deref()
@@ -92,6 +114,7 @@ fn writer(columns: Vec<&'static Column>, table: &TableArgs, out: &Output) -> Res
         .and_then(|e| match e.to_ascii_lowercase().as_str() {
             "csv" => Some(RowFormat::Csv),
             "jsonl" | "ndjson" => Some(RowFormat::Jsonl),
+            "parquet" | "pq" => Some(RowFormat::Parquet),
             _ => None,
         });
     let format = match (table.format, named) {
@@ -105,12 +128,22 @@ fn writer(columns: Vec<&'static Column>, table: &TableArgs, out: &Output) -> Res
         (Some(f), _) | (None, Some(f)) => f,
         (None, None) => RowFormat::Csv,
     };
-    let header = table.header.unwrap_or(if out.is_file() {
-        Header::Always
-    } else {
-        Header::First
-    });
-    Ok(RowWriter::new(columns, format).with_header(header))
+    if format == RowFormat::Parquet {
+        if matches!(out, Output::Stdout(_)) {
+            anyhow::bail!(
+                "--format parquet writes a file: give -o FILE.parquet (a Parquet file ends with \
+                 its footer, so it is not streamed to stdout)"
+            );
+        }
+        if let Some(h) = table.header {
+            anyhow::bail!(
+                "--header {} is for csv and text: a Parquet file always carries its schema",
+                h.to_possible_value()
+                    .map_or("?".into(), |v| v.get_name().to_string())
+            );
+        }
+    }
+    Ok(format)
 }
 
 /// Where the table goes (`-o FILE`, atomically, or stdout).
@@ -162,5 +195,80 @@ fn finish(
             summary.rows, summary.skipped
         ));
     }
+    if summary.errors > 0 {
+        collide::output::diagnostic(format_args!(
+            "{} of {} runs failed: their rows give why in the error column",
+            summary.errors, summary.rows
+        ));
+    }
     Ok(Outcome::print(String::new()))
+}
+
+/// `collide track --vary`, `collide contact --vary`: the table of runs of `kind` over the grid
+/// of `args.vary`.
+pub fn run_table<K: Kind>(
+    kind: &K,
+    args: &RunTableArgs,
+    format: Option<RunFormat>,
+) -> Result<Outcome> {
+    let vary = args
+        .vary
+        .iter()
+        .map(|v| runs::vary(kind, v))
+        .collect::<Result<Vec<_>, _>>()?;
+    for group in [
+        ["damping", "zeta", "e"],
+        ["wall_damping", "wall_zeta", "wall_restitution"],
+    ] {
+        let named: Vec<&str> = vary
+            .iter()
+            .filter_map(|v| match v.param {
+                runs::Knob::Named(n) if group.contains(&n) => Some(n),
+                _ => None,
+            })
+            .collect();
+        if named.len() > 1 {
+            anyhow::bail!(
+                "{} are one damping given two ways: vary one of them",
+                named.join(" and ")
+            );
+        }
+    }
+    let grid = Grid::new(vary, args.max_rows)?;
+    let (cells, names) = runs::cells(kind, &grid, &args.columns).map_err(anyhow::Error::msg)?;
+    let table = TableArgs {
+        columns: Vec::new(),
+        format: match format {
+            None => None,
+            Some(RunFormat::Json) => anyhow::bail!(
+                "--format json is one run's report: a table of runs is csv, jsonl (one JSON \
+                 object a line), text or parquet"
+            ),
+            Some(RunFormat::Text) => Some(RowFormat::Text),
+            Some(RunFormat::Csv) => Some(RowFormat::Csv),
+            Some(RunFormat::Jsonl) => Some(RowFormat::Jsonl),
+            Some(RunFormat::Parquet) => Some(RowFormat::Parquet),
+        },
+        output: args.output.clone(),
+        skip_bad: args.skip_bad,
+        header: args.header,
+    };
+    let mut out = open(&table)?;
+    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(&table, &out)?)
+        .with_header(header(&table, &out));
+    writer.check().map_err(anyhow::Error::msg)?;
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    let rows = shard.rows(grid.total);
+    let mut progress = Progress::new(Some(rows.end - rows.start));
+    let result = runs::write_runs(
+        kind,
+        &grid,
+        shard,
+        &cells,
+        &writer,
+        table.skip_bad,
+        &mut out,
+        &mut progress,
+    );
+    finish(result, out, &progress, &table)
 }

@@ -7,35 +7,25 @@ use anyhow::{Context, Result};
 use collide::output::Output;
 use collide::report::{json, track as report};
 use collide::table::batch::InputFormat;
+use collide::table::runs::track::TrackSweep;
 use collide::track::{Event, Limits, Run, Track, TrackReport};
 
 use super::Outcome;
-use crate::cli::{Format, TrackArgs};
+use crate::cli::{Format, RunFormat, TrackArgs};
 
 pub fn run(args: TrackArgs) -> Result<Outcome> {
-    let bodies = args.layout.bodies()?;
-    let e = args.rules.restitution.value();
-    let track = Track {
-        bodies,
-        left_wall: args.layout.left_wall.map(|x| x.value()),
-        right_wall: args.layout.right_wall.map(|x| x.value()),
-        e,
-        e_wall: args.rules.wall_restitution.map_or(e, |r| r.value()),
-        gravity: args.rules.gravity.value(),
-    };
-    track.check()?;
-    let limits = Limits {
-        until: args.until.map(|t| t.value()),
-        max_collisions: args.max_collisions,
-    };
-    limits.check()?;
+    if !args.table.vary.is_empty() {
+        return sweep(args);
+    }
+    let format = RunFormat::report(args.format)?;
+    let (track, limits) = base(&args)?;
     let (run, log) = match &args.log {
         None => (track.run(limits, None)?, None),
         Some(path) => run_logged(&track, limits, path, args.log_format)?,
     };
     let result = TrackReport::new(&track, run);
     let value = report::json(&result)?;
-    let stdout = match args.format {
+    let stdout = match format {
         Format::Json => json::render(&value),
         Format::Text => report::text(&track, &result, limits),
     };
@@ -45,6 +35,37 @@ pub fn run(args: TrackArgs) -> Result<Outcome> {
             .with_context(|| format!("cannot write the log {}", path.display()))?;
     }
     Ok(Outcome::print(stdout))
+}
+
+/// `--vary`: a table of runs, one row each (`collide::table::runs::track`).
+fn sweep(args: TrackArgs) -> Result<Outcome> {
+    let (track, limits) = base(&args)?;
+    super::table::run_table(&TrackSweep { track, limits }, &args.table, args.format)
+}
+
+/// The track and limits as given, checked.
+fn base(args: &TrackArgs) -> Result<(Track, Limits)> {
+    let bodies = args.layout.bodies()?;
+    let e = args.rules.restitution.value();
+    let track = Track {
+        bodies,
+        left_wall: args.layout.left_wall.as_ref().map(|x| x.value()),
+        right_wall: args.layout.right_wall.as_ref().map(|x| x.value()),
+        e,
+        e_wall: args
+            .rules
+            .wall_restitution
+            .as_ref()
+            .map_or(e, |r| r.value()),
+        gravity: args.rules.gravity.value(),
+    };
+    track.check()?;
+    let limits = Limits {
+        until: args.until.as_ref().map(|t| t.value()),
+        max_collisions: args.max_collisions,
+    };
+    limits.check()?;
+    Ok((track, limits))
 }
 
 /// Runs `track`, writing each collision to `path` ('-': stderr) as CSV or JSON Lines. A file is

@@ -12,7 +12,7 @@ use super::batch::Batch;
 use super::columns::Column;
 use super::row::{Row, RowCase, RowError, RowProblem};
 use super::sweep::{Grid, Param, Shard};
-use super::writer::{FieldCache, RowWriter};
+use super::writer::{FieldCache, RowWriter, Sealed, Sink};
 use crate::case::Case;
 use crate::collision::Collision;
 use crate::inertia::InertiaTensor;
@@ -49,7 +49,9 @@ pub fn solve_row(
 
 /// What a chunk of rows became.
 pub struct ChunkOut {
-    pub bytes: Vec<u8>,
+    /// Its rows as they go out (bytes, or a Parquet row group); `Err` if they could not be
+    /// encoded.
+    pub body: std::io::Result<Sealed>,
     pub rows: u64,
     /// Rows skipped (`--skip-bad`), in order.
     pub skipped: Vec<RowError>,
@@ -69,7 +71,7 @@ pub fn chunk(
     let mut fields = FieldCache::new(writer.columns().len());
     let mut values = vec![0.0; writer.columns().len()];
     let mut out = ChunkOut {
-        bytes: Vec::new(),
+        body: Ok(Sealed::Bytes(Vec::new())),
         rows: 0,
         skipped: Vec::new(),
         stop: None,
@@ -93,7 +95,7 @@ pub fn chunk(
             }
         }
     }
-    out.bytes = buf.into_bytes();
+    out.body = writer.seal(buf);
     out
 }
 
@@ -102,6 +104,8 @@ pub fn chunk(
 pub struct Summary {
     pub rows: u64,
     pub skipped: u64,
+    /// Rows of failed runs, with their `error` (a table of runs).
+    pub errors: u64,
 }
 
 /// Why a table run stopped.
@@ -121,14 +125,17 @@ pub const CHUNK_ROWS: usize = 8192;
 pub fn write_chunks<C: Send>(
     chunks: impl Iterator<Item = C>,
     solve: impl Fn(C) -> ChunkOut + Sync + Send,
-    out: &mut dyn Write,
+    out: &mut Sink,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
     let mut summary = Summary::default();
     for batch in batched(chunks) {
         let done: Vec<ChunkOut> = batch.into_par_iter().map(&solve).collect();
         for c in done {
-            out.write_all(&c.bytes)?;
+            // A chunk with no rows is no row group.
+            if c.rows > 0 || !matches!(c.body, Ok(Sealed::Group(_))) {
+                out.put(c.body?)?;
+            }
             summary.rows += c.rows;
             progress.advance(c.rows + c.skipped.len() as u64);
             for s in &c.skipped {
@@ -156,7 +163,8 @@ fn batched<C>(chunks: impl Iterator<Item = C>) -> impl Iterator<Item = Vec<C>> {
 }
 
 /// Solves the rows of `shard` of a sweep of `case` over `grid` and writes them (with the header
-/// when the writer puts one in this shard: by default, the first) to `out`.
+/// when the writer puts one in this shard: by default, the first) to `out`. A Parquet table is
+/// complete (footer written) only when this returns `Ok`.
 pub fn write_sweep(
     case: &Case,
     grid: &Grid,
@@ -179,11 +187,7 @@ pub fn write_sweep(
         e: c.restitution.value(),
     };
     let rows = shard.rows(grid.total);
-    if writer.heads(shard.k) {
-        let mut header = Vec::new();
-        writer.header(&mut header);
-        out.write_all(&header)?;
-    }
+    let mut sink = Sink::open(writer, shard.k, out)?;
     let chunk_ranges = (rows.start..rows.end)
         .step_by(CHUNK_ROWS)
         .map(move |s| s..(s + CHUNK_ROWS as u64).min(rows.end));
@@ -212,7 +216,9 @@ pub fn write_sweep(
             skip_bad,
         )
     };
-    write_chunks(chunk_ranges, solve, out, progress)
+    let summary = write_chunks(chunk_ranges, solve, &mut sink, progress)?;
+    sink.finish()?;
+    Ok(summary)
 }
 
 /// Solves every case of `input` and writes its rows, with the header (unless `Header::Never`),
@@ -225,11 +231,7 @@ pub fn write_batch(
     out: &mut dyn Write,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
-    if writer.heads(1) {
-        let mut header = Vec::new();
-        writer.header(&mut header);
-        out.write_all(&header)?;
-    }
+    let mut sink = Sink::open(writer, 1, out)?;
     let mut input = input.peekable();
     let chunks = std::iter::from_fn(move || {
         input.peek()?;
@@ -244,7 +246,9 @@ pub fn write_batch(
             skip_bad,
         )
     };
-    write_chunks(chunks, solve, out, progress)
+    let summary = write_chunks(chunks, solve, &mut sink, progress)?;
+    sink.finish()?;
+    Ok(summary)
 }
 
 #[cfg(test)]
@@ -290,20 +294,24 @@ mod tests {
         };
         let place = |r: u64| format!("row {r}");
         // FIN of row 2 is representable (-1e200, 1e200): only what is asked is computed.
+        let bytes = |c: ChunkOut| match c.body {
+            Ok(Sealed::Bytes(b)) => b,
+            _ => panic!("CSV is bytes"),
+        };
         let all = chunk(items(), &place, None, &w, false);
-        assert_eq!(all.bytes, b"40.0\n-1e200\n50.0\n");
+        assert_eq!(bytes(all), b"40.0\n-1e200\n50.0\n");
         // Its KE (1e400) is not.
         let w = RowWriter::new(by_names(&["ke_in"]).unwrap(), RowFormat::Csv);
-        let stopped = chunk(items(), &place, None, &w, false);
-        assert_eq!(stopped.bytes, b"7250.0\n");
-        assert_eq!(stopped.stop.unwrap().place, "row 2");
+        let mut stopped = chunk(items(), &place, None, &w, false);
+        assert_eq!(stopped.stop.take().unwrap().place, "row 2");
+        assert_eq!(bytes(stopped), b"7250.0\n");
         let skipping = chunk(items(), &place, None, &w, true);
-        assert_eq!(skipping.bytes, b"7250.0\n7250.0\n");
         assert_eq!(skipping.skipped.len(), 1);
         assert!(
             skipping.skipped[0]
                 .to_string()
                 .contains("ke_in is not representable")
         );
+        assert_eq!(bytes(skipping), b"7250.0\n7250.0\n");
     }
 }

@@ -86,6 +86,9 @@ pub enum RowProblem {
          use collide solve --exact"
     )]
     Unrepresentable(&'static str),
+    /// A run of a sweep of runs failed (`table::runs`).
+    #[error("{0}")]
+    Run(String),
 }
 
 impl RowProblem {
@@ -106,6 +109,9 @@ pub enum ValueProblem {
     Mass(#[from] MassError),
     #[error(transparent)]
     Restitution(#[from] RestitutionError),
+    /// Outside what a run's parameter may take (`stiffness` must be > 0, ...).
+    #[error("{0}")]
+    Range(String),
 }
 
 /// What is wrong with the names of an input's columns (a CSV header, a JSON object's keys).

@@ -58,12 +58,12 @@ impl Param {
 /// Why a `--vary` is refused.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum VaryError {
-    #[error("'{0}': {VARY_FORM}")]
-    Form(String),
-    #[error("'{0}' is not a parameter: {VARY_FORM}")]
-    Param(String),
-    #[error("{}: {error}", .param.name())]
-    Value { param: Param, error: ValueProblem },
+    #[error("'{0}': {1}")]
+    Form(String, String),
+    #[error("'{0}' is not a parameter: {1}")]
+    Param(String, String),
+    #[error("{param}: {error}")]
+    Value { param: String, error: ValueProblem },
     #[error("'{text}': COUNT '{count}' must be a whole number >= 1")]
     Count { text: String, count: String },
     #[error("'{0}': COUNT is 0, so the range is empty; use 1 or more")]
@@ -72,8 +72,8 @@ pub enum VaryError {
     Same(String, u64),
     #[error("'{0}': a log range needs FROM and TO > 0")]
     LogSign(String),
-    #[error("'{0}': the list is empty; {VARY_FORM}")]
-    EmptyList(String),
+    #[error("'{0}': the list is empty; {1}")]
+    EmptyList(String, String),
     #[error(
         "'{0}': the list has an empty entry (two commas in a row, or one at an end); give a value between every two commas"
     )]
@@ -260,20 +260,24 @@ fn power_of_ten(q: &Q) -> Option<i64> {
     (n.is_one() && d.is_one()).then_some(k)
 }
 
-/// One `--vary NAME=...`.
+/// One `--vary NAME=...`: of a two-body sweep's [`Param`], or of any parameter `P` of a run
+/// (`table::runs`).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Vary {
-    pub param: Param,
+pub struct Vary<P = Param> {
+    pub param: P,
     pub values: Values,
     /// As typed, for messages.
     pub text: String,
 }
 
-impl fmt::Display for Vary {
+impl<P> fmt::Display for Vary<P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.text)
     }
 }
+
+/// The forms of a `--vary`, for messages.
+pub const RANGE_FORMS: &str = "expected NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or NAME=a,b,c";
 
 const VARY_FORM: &str = "expected NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or NAME=a,b,c with NAME one of m1, m2, v1, v2, e";
 
@@ -281,80 +285,110 @@ impl FromStr for Vary {
     type Err = VaryError;
 
     fn from_str(s: &str) -> Result<Vary, VaryError> {
-        let text = s.trim().to_string();
-        let (name, spec) = text
-            .split_once('=')
-            .ok_or_else(|| VaryError::Form(text.clone()))?;
-        let param = Param::ALL
-            .into_iter()
-            .find(|p| p.name() == name.trim())
-            .ok_or_else(|| VaryError::Param(name.trim().to_string()))?;
-        let num = |t: &str| -> Result<Number, VaryError> {
-            let value = |error| VaryError::Value { param, error };
-            let n: Number = t.parse().map_err(|e: NumberError| value(e.into()))?;
-            param.check(&n).map_err(value)?;
-            Ok(n)
+        parse_vary(
+            s,
+            VARY_FORM,
+            |name| Param::ALL.into_iter().find(|p| p.name() == name),
+            |p, n| p.check(n),
+        )
+    }
+}
+
+/// Parses `NAME=RANGE`: `name` resolves NAME to a parameter (`None`: not one, and `form` says
+/// what is expected), `check` refuses a value it cannot take.
+pub fn parse_vary<P: Copy + Named>(
+    s: &str,
+    form: &str,
+    name: impl Fn(&str) -> Option<P>,
+    check: impl Fn(P, &Number) -> Result<(), ValueProblem>,
+) -> Result<Vary<P>, VaryError> {
+    let text = s.trim().to_string();
+    let (typed, spec) = text
+        .split_once('=')
+        .ok_or_else(|| VaryError::Form(text.clone(), form.to_string()))?;
+    let param = name(typed.trim())
+        .ok_or_else(|| VaryError::Param(typed.trim().to_string(), form.into()))?;
+    let num = |t: &str| -> Result<Number, VaryError> {
+        let value = |error| VaryError::Value {
+            param: param.name(),
+            error,
         };
-        let parts: Vec<&str> = spec.split(':').collect();
-        let values = match parts.as_slice() {
-            [from, to, count] | [from, to, count, "log"] => {
-                let count: u64 = count.trim().parse().map_err(|_| VaryError::Count {
-                    text: text.clone(),
-                    count: count.trim().to_string(),
-                })?;
-                if count == 0 {
-                    return Err(VaryError::Empty(text));
+        let n: Number = t.parse().map_err(|e: NumberError| value(e.into()))?;
+        check(param, &n).map_err(value)?;
+        Ok(n)
+    };
+    let parts: Vec<&str> = spec.split(':').collect();
+    let values = match parts.as_slice() {
+        [from, to, count] | [from, to, count, "log"] => {
+            let count: u64 = count.trim().parse().map_err(|_| VaryError::Count {
+                text: text.clone(),
+                count: count.trim().to_string(),
+            })?;
+            if count == 0 {
+                return Err(VaryError::Empty(text));
+            }
+            let (from, to) = (num(from)?, num(to)?);
+            if count > 1 && from.same_value(&to) {
+                return Err(VaryError::Same(text, count));
+            }
+            if parts.len() == 4 {
+                if from.value() <= 0.0 || to.value() <= 0.0 {
+                    return Err(VaryError::LogSign(text));
                 }
-                let (from, to) = (num(from)?, num(to)?);
-                if count > 1 && from.same_value(&to) {
-                    return Err(VaryError::Same(text, count));
+                let (from, to) = (from.exact(), to.exact());
+                let decades = power_of_ten(&(&to / &from));
+                let stored = store(count, |i| log(&from, &to, decades, count, i));
+                Values::Log {
+                    from,
+                    to,
+                    decades,
+                    count,
+                    stored,
                 }
-                if parts.len() == 4 {
-                    if from.value() <= 0.0 || to.value() <= 0.0 {
-                        return Err(VaryError::LogSign(text));
-                    }
-                    let (from, to) = (from.exact(), to.exact());
-                    let decades = power_of_ten(&(&to / &from));
-                    let stored = store(count, |i| log(&from, &to, decades, count, i));
-                    Values::Log {
-                        from,
-                        to,
-                        decades,
-                        count,
-                        stored,
-                    }
-                } else {
-                    let (from, to) = (from.exact(), to.exact());
-                    let fast = linear_fast(&from, &to, count);
-                    let stored = store(count, |i| linear(&from, &to, count, fast, i));
-                    Values::Linear {
-                        from,
-                        to,
-                        count,
-                        fast,
-                        stored,
-                    }
+            } else {
+                let (from, to) = (from.exact(), to.exact());
+                let fast = linear_fast(&from, &to, count);
+                let stored = store(count, |i| linear(&from, &to, count, fast, i));
+                Values::Linear {
+                    from,
+                    to,
+                    count,
+                    fast,
+                    stored,
                 }
             }
-            [list] if list.trim().is_empty() => return Err(VaryError::EmptyList(text)),
-            [list] => {
-                // `e=1,,2` dropped the empty entry: a typo, refused rather than guessed.
-                if list.split(',').any(|t| t.trim().is_empty()) {
-                    return Err(VaryError::EmptyEntry(text));
-                }
-                let values = list
-                    .split(',')
-                    .map(|t| num(t).map(|n| n.value()))
-                    .collect::<Result<Vec<f64>, VaryError>>()?;
-                Values::List(values)
+        }
+        [list] if list.trim().is_empty() => {
+            return Err(VaryError::EmptyList(text, form.to_string()));
+        }
+        [list] => {
+            // `e=1,,2` dropped the empty entry: a typo, refused rather than guessed.
+            if list.split(',').any(|t| t.trim().is_empty()) {
+                return Err(VaryError::EmptyEntry(text));
             }
-            _ => return Err(VaryError::Form(text)),
-        };
-        Ok(Vary {
-            param,
-            values,
-            text,
-        })
+            let values = list
+                .split(',')
+                .map(|t| num(t).map(|n| n.value()))
+                .collect::<Result<Vec<f64>, VaryError>>()?;
+            Values::List(values)
+        }
+        _ => return Err(VaryError::Form(text, form.to_string())),
+    };
+    Ok(Vary {
+        param,
+        values,
+        text,
+    })
+}
+
+/// A parameter's name as typed (`m2`, `stiffness`), for messages and column headers.
+pub trait Named {
+    fn name(&self) -> String;
+}
+
+impl Named for Param {
+    fn name(&self) -> String {
+        Param::name(*self).to_string()
     }
 }
 
@@ -398,8 +432,8 @@ impl FromStr for Shard {
 
 /// The grid of a sweep: the product of its `--vary`s, last fastest.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Grid {
-    pub vary: Vec<Vary>,
+pub struct Grid<P = Param> {
+    pub vary: Vec<Vary<P>>,
     pub total: u64,
 }
 
@@ -408,23 +442,23 @@ pub struct Grid {
 pub enum GridError {
     #[error("a sweep needs at least one --vary NAME=FROM:TO:COUNT")]
     Empty,
-    #[error("{param} is varied twice ('{text}'); give each parameter one --vary", param = .0.name(), text = .1)]
-    Twice(Param, String),
+    #[error("{0} is varied twice ('{1}'); give each parameter one --vary")]
+    Twice(String, String),
     #[error(
         "the sweep has {rows:.3e} rows, more than --max-rows {max_rows}; raise --max-rows to run it"
     )]
     TooMany { rows: f64, max_rows: u64 },
 }
 
-impl Grid {
+impl<P: Copy + PartialEq + Named> Grid<P> {
     /// Refuses a product of more than `max_rows` rows, and a parameter varied twice.
-    pub fn new(vary: Vec<Vary>, max_rows: u64) -> Result<Grid, GridError> {
+    pub fn new(vary: Vec<Vary<P>>, max_rows: u64) -> Result<Grid<P>, GridError> {
         if vary.is_empty() {
             return Err(GridError::Empty);
         }
         for (i, v) in vary.iter().enumerate() {
             if vary[..i].iter().any(|u| u.param == v.param) {
-                return Err(GridError::Twice(v.param, v.text.clone()));
+                return Err(GridError::Twice(v.param.name(), v.text.clone()));
             }
         }
         let total = vary
@@ -440,7 +474,7 @@ impl Grid {
     }
 
     /// The varied values of row `r`, as `(param, value)`.
-    pub fn row(&self, mut r: u64, out: &mut [(Param, f64)]) {
+    pub fn row(&self, mut r: u64, out: &mut [(P, f64)]) {
         for (slot, v) in out.iter_mut().zip(&self.vary).rev() {
             let n = v.values.len();
             *slot = (v.param, v.values.get(r % n));
@@ -448,7 +482,7 @@ impl Grid {
         }
     }
 
-    pub fn varies(&self, p: Param) -> bool {
+    pub fn varies(&self, p: P) -> bool {
         self.vary.iter().any(|v| v.param == p)
     }
 }

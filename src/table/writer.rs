@@ -1,7 +1,15 @@
-//! Rows written as CSV (the csv crate), JSON Lines or aligned text, numbers shortest round-trip
-//! (ryu) with no allocation per field.
+//! Rows written as CSV (the csv crate), JSON Lines, aligned text or Parquet (`table::parquet`),
+//! numbers shortest round-trip (ryu) with no allocation per field.
+//!
+//! A two-body table's cells are all numbers. A table of runs (`table::runs`) may have missing
+//! cells (a contact that did not happen: NaN stands for missing there, written as an empty CSV
+//! field, `null` in JSON Lines and Parquet, `-` in text) and one text column, the `error` of a
+//! run that failed.
+
+use std::io::{self, Write};
 
 use super::columns::Column;
+use super::parquet;
 
 /// How rows are written (`--format`, `format` in a scene's `[sweep]`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
@@ -13,6 +21,8 @@ pub enum RowFormat {
     Jsonl,
     /// Aligned columns for people
     Text,
+    /// Apache Parquet, zstd, float64 columns (needs -o FILE; the `parquet` Cargo feature)
+    Parquet,
 }
 
 /// Which pieces of a table carry its header line (`--header`): a sharded table's shards, read
@@ -46,24 +56,68 @@ impl RowFormat {
             RowFormat::Csv => "csv",
             RowFormat::Jsonl => "jsonl",
             RowFormat::Text => "text",
+            RowFormat::Parquet => "parquet",
         }
     }
 }
 
 /// Writes rows of numbers in one format.
 pub struct RowWriter {
+    /// A two-body table's columns (empty for a table of runs).
     columns: Vec<&'static Column>,
+    /// The header's names.
+    names: Vec<String>,
+    /// Where the text column (`error`) is, in a table of runs.
+    text: Option<usize>,
+    /// Whether cells may be missing (a table of runs).
+    optional: bool,
     format: RowFormat,
     header: Header,
+    parquet: Option<parquet::Schema>,
 }
 
 impl RowWriter {
-    /// A writer whose header goes in the first piece of a table only ([`Header::First`]).
+    /// A writer of a two-body table, whose header goes in the first piece of a table only
+    /// ([`Header::First`]). Parquet needs the `parquet` feature (see [`RowWriter::check`]).
     pub fn new(columns: Vec<&'static Column>, format: RowFormat) -> RowWriter {
+        let names = columns.iter().map(|c| c.name.to_string()).collect();
+        RowWriter::build(columns, names, None, false, format)
+    }
+
+    /// A writer of a table of runs: cells may be missing, and `text` is the column of the
+    /// `error` text, if chosen.
+    pub fn runs(names: Vec<String>, text: Option<usize>, format: RowFormat) -> RowWriter {
+        RowWriter::build(Vec::new(), names, text, true, format)
+    }
+
+    fn build(
+        columns: Vec<&'static Column>,
+        names: Vec<String>,
+        text: Option<usize>,
+        optional: bool,
+        format: RowFormat,
+    ) -> RowWriter {
+        let parquet = (format == RowFormat::Parquet)
+            .then(|| parquet::Schema::new(&names, optional, text))
+            .and_then(Result::ok);
         RowWriter {
             columns,
+            names,
+            text,
+            optional,
             format,
             header: Header::First,
+            parquet,
+        }
+    }
+
+    /// Whether this writer can write its format: Parquet needs the `parquet` feature.
+    pub fn check(&self) -> Result<(), String> {
+        match (self.format, &self.parquet) {
+            (RowFormat::Parquet, None) => Err(parquet::Schema::new(&self.names, false, None)
+                .err()
+                .unwrap_or_else(|| "cannot write Parquet".into())),
+            _ => Ok(()),
         }
     }
 
@@ -77,42 +131,61 @@ impl RowWriter {
         self.header.in_piece(k)
     }
 
+    /// A two-body table's columns.
     pub fn columns(&self) -> &[&'static Column] {
         &self.columns
     }
 
-    /// The header line (CSV and text; nothing for JSON Lines).
+    /// The header's names.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    pub fn format(&self) -> RowFormat {
+        self.format
+    }
+
+    /// The header line (CSV and text; nothing for JSON Lines and Parquet, whose schema
+    /// [`Sink::open`] writes).
     pub fn header(&self, out: &mut Vec<u8>) {
         match self.format {
             RowFormat::Csv => {
                 let mut w = csv::Writer::from_writer(out);
-                let _ = w.write_record(self.columns.iter().map(|c| c.name));
+                let _ = w.write_record(&self.names);
                 let _ = w.flush();
             }
             // Text: each page of rows carries the names, aligned with its values.
-            RowFormat::Text | RowFormat::Jsonl => {}
+            RowFormat::Text | RowFormat::Jsonl | RowFormat::Parquet => {}
         }
     }
 
     /// A buffer for a chunk of `rows` rows in this format, sized for a typical row so it
     /// rarely grows (each growth copies the chunk).
     pub fn buffer(&self, rows: usize) -> RowBuf {
+        let n = self.names.len();
         let per_row = match self.format {
-            RowFormat::Csv => 20 * self.columns.len(),
-            RowFormat::Jsonl => 32 * self.columns.len(),
+            RowFormat::Csv => 20 * n,
+            RowFormat::Jsonl => 32 * n,
             RowFormat::Text => {
                 return RowBuf::Text(TextPage {
-                    names: self.columns.iter().map(|c| c.name).collect(),
+                    names: self.names.clone(),
                     named: self.header != Header::Never,
-                    fields: Vec::with_capacity(rows.min(1 << 16) * 12 * self.columns.len()),
-                    ends: Vec::with_capacity(rows.min(1 << 16) * self.columns.len()),
+                    fields: Vec::with_capacity(rows.min(1 << 16) * 12 * n),
+                    ends: Vec::with_capacity(rows.min(1 << 16) * n),
+                });
+            }
+            RowFormat::Parquet => {
+                return RowBuf::Columns(Columns {
+                    numbers: (0..n).map(|_| Vec::with_capacity(rows)).collect(),
+                    texts: Vec::new(),
+                    rows: 0,
                 });
             }
         };
         RowBuf::Raw(Vec::with_capacity(rows.min(1 << 16) * per_row))
     }
 
-    /// Writes one row of values (all finite).
+    /// Writes one row of values (all finite: a two-body table).
     pub fn row(&self, values: &[f64], buf: &mut RowBuf, fields: &mut FieldCache) {
         match buf {
             // Fields are ASCII numbers: a CSV writer would never quote them (the header, which
@@ -134,12 +207,12 @@ impl RowWriter {
             // JSON Lines (a text table has its page).
             RowBuf::Raw(out) => {
                 out.push(b'{');
-                for (i, (c, v)) in self.columns.iter().zip(values).enumerate() {
+                for (i, (c, v)) in self.names.iter().zip(values).enumerate() {
                     if i > 0 {
                         out.push(b',');
                     }
                     out.push(b'"');
-                    out.extend_from_slice(c.name.as_bytes());
+                    out.extend_from_slice(c.as_bytes());
                     out.extend_from_slice(b"\":");
                     out.extend_from_slice(fields.format(i, *v));
                 }
@@ -151,6 +224,175 @@ impl RowWriter {
                     page.ends.push(page.fields.len());
                 }
             }
+            RowBuf::Columns(c) => c.push(values, None),
+        }
+    }
+
+    /// Writes one row of a table of runs: a NaN value is a missing cell, and `error` goes in
+    /// the text column (the value there is ignored).
+    pub fn row_of_run(
+        &self,
+        values: &[f64],
+        error: Option<&str>,
+        buf: &mut RowBuf,
+        fields: &mut FieldCache,
+    ) {
+        debug_assert!(self.optional, "a two-body table has no missing cells");
+        let out = match buf {
+            RowBuf::Raw(out) => out,
+            RowBuf::Columns(c) => return c.push(values, self.text.map(|_| error)),
+            RowBuf::Text(page) => {
+                for (i, v) in values.iter().enumerate() {
+                    if Some(i) == self.text {
+                        let e = error.map_or("-".into(), |e| e.replace('\n', " "));
+                        page.fields.extend_from_slice(e.as_bytes());
+                    } else if v.is_nan() {
+                        page.fields.push(b'-');
+                    } else {
+                        page.fields.extend_from_slice(fields.format(i, *v));
+                    }
+                    page.ends.push(page.fields.len());
+                }
+                return;
+            }
+        };
+        for (i, v) in values.iter().enumerate() {
+            let cell: Option<Vec<u8>> = if Some(i) == self.text {
+                error.map(|e| self.quoted(e))
+            } else if v.is_nan() {
+                None
+            } else {
+                Some(fields.format(i, *v).to_vec())
+            };
+            match self.format {
+                RowFormat::Csv => {
+                    if i > 0 {
+                        out.push(b',');
+                    }
+                    out.extend_from_slice(cell.as_deref().unwrap_or(b""));
+                }
+                _ => {
+                    out.push(if i == 0 { b'{' } else { b',' });
+                    out.extend_from_slice(
+                        serde_json::to_string(&self.names[i])
+                            .unwrap_or_default()
+                            .as_bytes(),
+                    );
+                    out.push(b':');
+                    out.extend_from_slice(cell.as_deref().unwrap_or(b"null"));
+                }
+            }
+        }
+        if self.format == RowFormat::Jsonl {
+            out.push(b'}');
+        }
+        out.push(b'\n');
+    }
+
+    /// An error text as a cell: quoted as CSV or JSON needs, on one line for text.
+    fn quoted(&self, text: &str) -> Vec<u8> {
+        match self.format {
+            RowFormat::Csv => {
+                let mut w = csv::WriterBuilder::new()
+                    .has_headers(false)
+                    .terminator(csv::Terminator::Any(b'\n'))
+                    .from_writer(Vec::new());
+                // A whole record: csv-core closes a quoted field only at its delimiter or
+                // terminator (a lone write_field leaves the closing quote out).
+                let _ = w.write_record([text]);
+                let _ = w.flush();
+                let mut cell = w.into_inner().unwrap_or_default();
+                if cell.last() == Some(&b'\n') {
+                    cell.pop();
+                }
+                cell
+            }
+            _ => serde_json::to_string(text).unwrap_or_default().into_bytes(),
+        }
+    }
+
+    /// A chunk's rows as they go out: bytes, or a Parquet row group encoded here (in the
+    /// thread that solved the chunk).
+    pub fn seal(&self, buf: RowBuf) -> io::Result<Sealed> {
+        match (buf, &self.parquet) {
+            (RowBuf::Raw(v), _) => Ok(Sealed::Bytes(v)),
+            (RowBuf::Text(page), _) => Ok(Sealed::Bytes(page.into_bytes())),
+            (RowBuf::Columns(c), Some(schema)) => schema.encode(&c).map(Sealed::Group),
+            (RowBuf::Columns(_), None) => Err(io::Error::other("Parquet is not built in")),
+        }
+    }
+}
+
+/// The columns of a chunk, for Parquet.
+pub struct Columns {
+    /// One vector per column (NaN: missing, in a table of runs).
+    pub numbers: Vec<Vec<f64>>,
+    /// The text column, per row (a table of runs that has one).
+    pub texts: Vec<Option<String>>,
+    pub rows: usize,
+}
+
+impl Columns {
+    fn push(&mut self, values: &[f64], text: Option<Option<&str>>) {
+        for (col, v) in self.numbers.iter_mut().zip(values) {
+            col.push(*v);
+        }
+        if let Some(t) = text {
+            self.texts.push(t.map(str::to_string));
+        }
+        self.rows += 1;
+    }
+}
+
+/// A chunk ready to go out.
+pub enum Sealed {
+    Bytes(Vec<u8>),
+    Group(parquet::Group),
+}
+
+/// Where a table's chunks go, in order: bytes to a writer, or a Parquet file's row groups.
+pub enum Sink<'a> {
+    Bytes(&'a mut dyn Write),
+    Parquet(Box<parquet::File<'a>>),
+}
+
+impl<'a> Sink<'a> {
+    /// Starts piece `k` of a table on `out`: its header line if it has one, or a Parquet
+    /// file's magic number.
+    pub fn open(writer: &RowWriter, k: u64, out: &'a mut dyn Write) -> io::Result<Sink<'a>> {
+        if let Some(schema) = &writer.parquet {
+            return parquet::File::new(schema, out).map(|f| Sink::Parquet(Box::new(f)));
+        }
+        if writer.heads(k) {
+            let mut header = Vec::new();
+            writer.header(&mut header);
+            out.write_all(&header)?;
+        }
+        Ok(Sink::Bytes(out))
+    }
+
+    pub fn put(&mut self, chunk: Sealed) -> io::Result<()> {
+        match (self, chunk) {
+            (Sink::Bytes(out), Sealed::Bytes(b)) => out.write_all(&b),
+            (Sink::Parquet(f), Sealed::Group(g)) => f.put(g),
+            _ => Err(io::Error::other("a chunk of another format")),
+        }
+    }
+
+    /// Flushes what was written (a Parquet file's row groups so far: the footer comes with
+    /// [`Sink::finish`]).
+    pub fn flush(&mut self) -> io::Result<()> {
+        match self {
+            Sink::Bytes(out) => out.flush(),
+            Sink::Parquet(f) => f.flush(),
+        }
+    }
+
+    /// Ends the table: a Parquet file's footer.
+    pub fn finish(self) -> io::Result<()> {
+        match self {
+            Sink::Bytes(out) => out.flush(),
+            Sink::Parquet(f) => f.finish(),
         }
     }
 }
@@ -161,7 +403,7 @@ impl RowWriter {
 /// repeating the first. Every page starts with the names (unless `--header never`): a text
 /// table is for people, who read pages, not shards.
 pub struct TextPage {
-    names: Vec<&'static str>,
+    names: Vec<String>,
     named: bool,
     fields: Vec<u8>,
     /// Where each field ends in `fields`, row after row.
@@ -251,17 +493,29 @@ impl FieldCache {
     }
 }
 
-/// A chunk's bytes as they are written (CSV, JSON Lines), or its text page.
+/// A chunk's rows as they are written: bytes (CSV, JSON Lines), a text page, or columns for
+/// Parquet.
 pub enum RowBuf {
     Raw(Vec<u8>),
     Text(TextPage),
+    Columns(Columns),
 }
 
 impl RowBuf {
+    /// The bytes of a text format (none for Parquet's columns).
     pub fn into_bytes(self) -> Vec<u8> {
         match self {
             RowBuf::Raw(v) => v,
             RowBuf::Text(page) => page.into_bytes(),
+            RowBuf::Columns(_) => Vec::new(),
+        }
+    }
+
+    /// Rows in the buffer, for Parquet (text formats do not count them).
+    pub fn rows(&self) -> usize {
+        match self {
+            RowBuf::Raw(_) | RowBuf::Text(_) => 0,
+            RowBuf::Columns(c) => c.rows,
         }
     }
 }

@@ -22,6 +22,7 @@ mod resources;
 mod rigid;
 mod rigid_symmetry;
 mod shell;
+mod sweeps;
 mod tables;
 mod track;
 mod view;
