@@ -16,10 +16,44 @@ pub fn assert_close(actual: f64, expected: f64, rel: f64, what: &str) {
     );
 }
 
+/// `actual == expected` exactly: for values exact in binary64 (the lecture's 40, 90, 7250), or
+/// the correctly rounded value of an exact one, where the README claims correct rounding.
+#[track_caller]
+pub fn assert_exact(actual: f64, expected: f64, what: &str) {
+    assert!(
+        actual == expected,
+        "{what}: expected exactly {expected:e}, got {actual:e}"
+    );
+}
+
+/// Both entries exactly (see [`assert_exact`]).
 #[track_caller]
 pub fn assert_pair(actual: [f64; 2], expected: [f64; 2], what: &str) {
-    assert_close(actual[0], expected[0], REL, &format!("{what}[0]"));
-    assert_close(actual[1], expected[1], REL, &format!("{what}[1]"));
+    assert_exact(actual[0], expected[0], &format!("{what}[0]"));
+    assert_exact(actual[1], expected[1], &format!("{what}[1]"));
+}
+
+/// `|actual - expected| <= n` ulps of `expected`, an ulp being `2^(floor(log2 |expected|) - 52)`
+/// as in the README's accuracy table.
+#[track_caller]
+pub fn assert_ulps(actual: f64, expected: f64, n: f64, what: &str) {
+    let ulp =
+        collide::compensated::pow2(collide::compensated::exponent(expected).max(-1022 + 52) - 52);
+    assert!(
+        (actual - expected).abs() <= n * ulp,
+        "{what}: expected {expected:e} to {n} ulps, got {actual:e} ({:.2} ulps)",
+        (actual - expected).abs() / ulp
+    );
+}
+
+/// The nearest binary64 to an exact rational (ties to even).
+pub fn rounded(q: &collide::rational::Q) -> f64 {
+    collide::rational::to_f64(q).expect("within binary64")
+}
+
+/// The exact value of a binary64.
+pub fn exact(x: f64) -> collide::rational::Q {
+    collide::rational::from_f64(x)
 }
 
 /// Runs `collide args` whatever its exit status: (exit code, stdout, stderr).
@@ -56,6 +90,25 @@ pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(2026);
+    proptest::test_runner::Config {
+        cases,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
+        ..proptest::test_runner::Config::default()
+    }
+}
+
+/// proptest configuration for a run that draws new cases each time: `cases` cases from a seed
+/// taken from the clock (or `COLLIDE_PROPTEST_SEED`). The seed goes to stderr, which the test
+/// harness prints with a failure, so the failing run can be replayed.
+pub fn proptest_config_fresh(cases: u32) -> proptest::test_runner::Config {
+    let seed = std::env::var("COLLIDE_PROPTEST_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or_else(|| {
+            let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH);
+            now.map_or(0, |d| d.as_nanos() as u64 ^ u64::from(std::process::id()))
+        });
+    eprintln!("proptest seed {seed} (COLLIDE_PROPTEST_SEED={seed} replays this run)");
     proptest::test_runner::Config {
         cases,
         rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
