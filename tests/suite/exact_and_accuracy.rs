@@ -74,6 +74,7 @@ fn exact_scene_passes_with_fractions() {
 
 #[test]
 fn diagnostics_report_residuals_and_time() {
+    let clock = std::time::Instant::now();
     let json: Value = serde_json::from_str(&stdout(&[
         "solve",
         "-m",
@@ -89,8 +90,25 @@ fn diagnostics_report_residuals_and_time() {
     let d = &json["diagnostics"];
     assert_eq!(d["momentum_residual"], 0.0);
     assert_eq!(d["energy_residual"], 0.0);
-    assert!(d["solve_ns"].as_f64().unwrap() > 0.0);
-    assert!(d["repetitions"].as_u64().unwrap() >= 11);
+    // The timing is the median of 11 timed batches of `batch` solves, `batch` a power of two
+    // (doubled until a batch takes 100 us): repetitions = 11 batch. At least 6 of the 11
+    // batches took the median or longer, so the process ran for at least 6 batch solve_ns: a
+    // time in the wrong unit (us for ns: 1000 times too long) exceeds the wall time measured
+    // around the command.
+    let wall_ns = clock.elapsed().as_nanos() as f64;
+    let (ns, reps) = (
+        d["solve_ns"].as_f64().unwrap(),
+        d["repetitions"].as_u64().unwrap(),
+    );
+    assert!(ns > 0.0 && ns.is_finite());
+    assert!(
+        reps % 11 == 0 && (reps / 11).is_power_of_two(),
+        "{reps} repetitions"
+    );
+    assert!(
+        6.0 * (reps / 11) as f64 * ns <= wall_ns,
+        "{reps} x {ns} ns in {wall_ns} ns"
+    );
     let text = stdout(&[
         "solve",
         "-m",
@@ -110,6 +128,7 @@ fn diagnostics_report_residuals_and_time() {
 
 #[test]
 fn accuracy_report_puts_error_beside_run_time() {
+    let clock = std::time::Instant::now();
     let json: Value = serde_json::from_str(&stdout(&[
         "accuracy",
         "--cases",
@@ -124,14 +143,30 @@ fn accuracy_report_puts_error_beside_run_time() {
     .unwrap();
     let rows = json["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 7 * 5, "7 families x 5 methods");
+    // Times per solve: the median pass between the fastest and the slowest, and, since at
+    // least 5 passes over the family are timed and at least half of them took the median or
+    // longer, at least 3 cases x median of each row was spent inside the command: the sum must
+    // fit in its wall time (a wrong unit would not).
+    let wall_ns = clock.elapsed().as_nanos() as f64;
+    let mut spent = 0.0;
     for r in rows {
-        assert!(r["ns_median"].as_f64().unwrap() > 0.0);
+        let t = |k: &str| r[k].as_f64().unwrap();
+        assert!(
+            0.0 < t("ns_min") && t("ns_min") <= t("ns_median") && t("ns_median") <= t("ns_max"),
+            "{r}"
+        );
+        spent += 3.0 * r["cases"].as_f64().unwrap() * t("ns_median");
         if r["method"] == "impulse" || r["method"] == "exact" {
+            // Correctly rounded, as the README claims: at most half an ulp.
             for q in ["fin_ulps", "crunch_ulps", "lost_ulps"] {
-                assert!(r[q]["worst"].as_f64().unwrap() <= 1.0, "{r}");
+                assert!(r[q]["worst"].as_f64().unwrap() <= 0.5, "{r}");
             }
         }
     }
+    assert!(
+        spent <= wall_ns,
+        "rows claim {spent} ns of a {wall_ns} ns run"
+    );
     // The textbook formula loses the crunch of a boosted collision entirely.
     let boost = rows
         .iter()

@@ -7,7 +7,7 @@ use collide::frame::Frame;
 use collide::quantity::from_f64;
 use collide::solver::Solver;
 use collide::solver::binary64::Binary64;
-use common::{REL, assert_close, assert_pair, collide, stdout};
+use common::{assert_exact, assert_pair, collide, stdout};
 use proptest::prelude::*;
 use serde::Deserialize;
 use serde_json::Value;
@@ -57,6 +57,7 @@ fn fig_3_4_table_from_collide_frames() {
     );
     let row = |n: &str| t.frames.iter().find(|r| r.name == n).unwrap();
     // Lecture Fig. 3.4: (frame, w, IN, FIN): Earth, VW initially at rest, COM, VW finally at rest.
+    // Every value is an integer, exact in binary64: compared exactly.
     for (name, w, v_in, fin) in [
         ("lab", 0.0, [3.0, -4.0], [1.0, 8.0]),
         ("rest-in:2", -4.0, [7.0, 0.0], [5.0, 12.0]),
@@ -64,10 +65,10 @@ fn fig_3_4_table_from_collide_frames() {
         ("rest-fin:2", 8.0, [-5.0, -12.0], [-7.0, 0.0]),
     ] {
         let r = row(name);
-        assert_close(r.w, w, REL, name);
+        assert_exact(r.w, w, name);
         assert_pair(r.v_in, v_in, &format!("{name} IN"));
         assert_pair(r.fin, fin, &format!("{name} FIN"));
-        assert_close(r.energy.crunch, 21.0, REL, &format!("{name} crunch"));
+        assert_exact(r.energy.crunch, 21.0, &format!("{name} crunch"));
         assert_eq!(r.energy.lost, Some(0.0));
     }
     assert_pair(
@@ -75,16 +76,14 @@ fn fig_3_4_table_from_collide_frames() {
         [0.0, 0.0],
         "COM at the origin of the COM frame",
     );
-    assert_close(
+    assert_exact(
         row("com").energy.ke_in,
         21.0,
-        REL,
         "KE in the COM frame is all crunch",
     );
-    assert_close(
+    assert_exact(
         row("rest-in:2").energy.ke_in,
         147.0,
-        REL,
         "KE with the VW initially at rest",
     );
     assert_eq!(t.invariants.crunch, 21.0);
