@@ -7,7 +7,7 @@ use collide::frame::Frame;
 use collide::quantity::from_f64;
 use collide::solver::Solver;
 use collide::solver::binary64::Binary64;
-use common::{assert_exact, assert_pair, collide, stdout};
+use common::{REL, assert_close, assert_exact, assert_pair, collide, stdout};
 use proptest::prelude::*;
 use serde::Deserialize;
 use serde_json::Value;
