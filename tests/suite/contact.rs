@@ -815,3 +815,312 @@ fn the_reduced_mass_of_tiny_or_huge_masses_does_not_underflow() {
         assert!(v[0].abs() < 1e-8 && (v[1] - 1.0).abs() < 1e-8, "{m}: {v:?}");
     }
 }
+
+// Issue 31 §2, §4: contacts against closed forms chained by hand, every runtime failure forced.
+
+/// `(t_c, e, d_max, d_end)` of a linear contact with ratio `zeta < 1` for stiffness `k`,
+/// reduced mass `mu`, impact speed `u`: as `linear_closed`, and the overlap left when the force
+/// reaches zero, `d_end = -(c/k) d'_end = (c/k) e u` with `c = 2 zeta sqrt(k mu)`.
+fn linear_contact(k: f64, mu: f64, zeta: f64, u: f64) -> (f64, f64, f64, f64) {
+    let (tc, e, dmax) = linear_closed(k, mu, zeta, u);
+    let c = 2.0 * zeta * (k * mu).sqrt();
+    (tc, e, dmax, c / k * e * u)
+}
+
+/// Contacts of a run as `(between, start, duration, max_overlap, speed, restitution)`.
+fn records(j: &Value) -> Vec<(String, f64, f64, f64, f64, f64)> {
+    j["contacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            (
+                c["between"].to_string(),
+                f(&c["start"]),
+                f(&c["duration"]),
+                f(&c["max_overlap"]),
+                f(&c["speed"]),
+                f(&c["restitution"]),
+            )
+        })
+        .collect()
+}
+
+/// Two equal bodies (sizes 1, at 0 and 2, body 1 at speed 1) and a right wall at 5, linear
+/// contacts with zeta = 0.2: body 1 hits body 2 at t = 1 (gap 1 / closing speed 1), body 2
+/// leaves at (1 + e)/2 and hits the wall, comes back at -e (1 + e)/2 and meets body 1 again.
+/// Every start, duration, deepest overlap, impact speed and restitution from the closed forms
+/// of the linear law, chained by hand through the free flights between contacts:
+/// - pair (mu = 1/2): starts at 1; ends at 1 + t_c with overlap d_end left (force zero), the
+///   centre of mass at 1 + t/2, so x2 = 1 + t/2 + (1 - d_end)/2;
+/// - wall (mu = 1): body 2's right edge reaches 5 after (4.5 - x2) / v2; it ends with body 2 at
+///   4.5 + d_end(wall) moving at -e v2;
+/// - pair again: the gap x2 - x1 - 1 closes at v1 - v2'.
+fn chained_contacts(k: f64) -> [(f64, f64, f64, f64, f64); 3] {
+    let zeta = 0.2;
+    let (tc, e, dmax, dend) = linear_contact(k, 0.5, zeta, 1.0);
+    let (t1, t1_end) = (1.0, 1.0 + tc);
+    let (v1, v2) = ((1.0 - e) / 2.0, (1.0 + e) / 2.0);
+    let com = 1.0 + t1_end / 2.0;
+    let (x1, x2) = (com - (1.0 - dend) / 2.0, com + (1.0 - dend) / 2.0);
+    let t2 = t1_end + (4.5 - x2) / v2;
+    let (tcw, ew, dmaxw, dendw) = linear_contact(k, 1.0, zeta, v2);
+    let t2_end = t2 + tcw;
+    let x1_at = x1 + v1 * (t2_end - t1_end);
+    let (x2_at, v2_back) = (4.5 + dendw, -ew * v2);
+    let u3 = v1 - v2_back;
+    let t3 = t2_end + (x2_at - x1_at - 1.0) / u3;
+    let (tc3, e3, dmax3, _) = linear_contact(k, 0.5, zeta, u3);
+    [
+        (t1, tc, dmax, 1.0, e),
+        (t2, tcw, dmaxw, v2, ew),
+        (t3, tc3, dmax3, u3, e3),
+    ]
+}
+
+#[test]
+fn contact_starts_order_and_values_follow_the_closed_forms() {
+    let expected = chained_contacts(1e4);
+    let j = run(&args(
+        "-m 1,1 -x 0,2 --sizes 1,1 -v 1,0 --right-wall 5 --stiffness 1e4 --zeta 0.2 --tol 1e-12",
+    ));
+    let got = records(&j);
+    assert!(got.len() >= 3, "{got:?}");
+    let who = ["[1,2]", "[2,\"right\"]", "[1,2]"];
+    for (i, ((between, start, duration, dmax, speed, e), (t, tc, d, u, ee))) in
+        got.iter().zip(expected).enumerate()
+    {
+        assert_eq!(between, who[i], "contact {i}: order");
+        let what = |q: &str| format!("contact {i} ({between}): {q}");
+        rel(*start, t, 1e-10, &what("start"));
+        rel(*duration, tc, 1e-9, &what("duration"));
+        rel(*dmax, d, 1e-9, &what("max_overlap"));
+        rel(*speed, u, 1e-9, &what("speed"));
+        rel(*e, ee, 1e-9, &what("restitution"));
+    }
+    // The first contact begins after an exact free flight: gap 1 at closing speed 1.
+    assert_eq!(got[0].1, 1.0);
+    // Listed in order of their start.
+    assert!(got.windows(2).all(|w| w[0].1 <= w[1].1), "{got:?}");
+}
+
+#[test]
+fn fixed_step_event_times_match_the_closed_forms() {
+    // The same chain with the fixed-step methods. The first contact starts after an exact free
+    // flight (gap / closing speed = 1, to the bit); later starts carry each method's error in
+    // the contact before them: O((omega h)^2) for Verlet and implicit midpoint, O((omega h)^4)
+    // for RK4, here omega h = sqrt(2e4) 1e-4 = 0.014.
+    let expected = chained_contacts(1e4);
+    for (method, tol) in [("verlet", 1e-4), ("implicit-midpoint", 1e-4), ("rk4", 1e-8)] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,2 --sizes 1,1 -v 1,0 --right-wall 5 --stiffness 1e4 --zeta 0.2 --method {method} --dt 1e-4"
+        )));
+        let got = records(&j);
+        assert_eq!(got[0].1, 1.0, "{method}: first start");
+        for (i, (g, x)) in got.iter().zip(expected).enumerate() {
+            rel(g.1, x.0, tol, &format!("{method}: start of contact {i}"));
+            rel(
+                g.2,
+                x.1,
+                100.0 * tol,
+                &format!("{method}: duration of contact {i}"),
+            );
+        }
+    }
+}
+
+#[test]
+fn dissipated_energy_is_the_sum_of_each_contacts_loss() {
+    // Contacts apart in time (checked below), each between two bodies or a body and a wall,
+    // lose (1 - e_i^2) 1/2 mu_i u_i^2 (the crunch of the pair, lecture Sec. 2), with u_i the
+    // recorded impact speed and e_i the recorded restitution: the sum must be the run's
+    // `dissipated`, which the program computes from energies instead. For the linear law each
+    // e_i is also the closed form of its zeta_i = c / (2 sqrt(k mu_i)).
+    for (law, damping) in [("linear", "0.3"), ("hunt-crossley", "0.5")] {
+        let j = run(&args(&format!(
+            "-m 1,2,1 -x 0,2,4.5 --sizes 1,1,1 -v 1,0,-0.5 --law {law} --damping {damping} --left-wall -3 --right-wall 7 --stiffness 100 --until 20 --tol 1e-12"
+        )));
+        let m: [f64; 3] = [1.0, 2.0, 1.0];
+        let contacts = j["contacts"].as_array().unwrap();
+        assert!(contacts.len() >= 4, "{law}: {} contacts", contacts.len());
+        let mut spans: Vec<(f64, f64)> = Vec::new();
+        let mut loss = 0.0;
+        for c in contacts {
+            let (start, u) = (f(&c["start"]), f(&c["speed"]));
+            let Some(d) = c["duration"].as_f64() else {
+                panic!("{law}: a contact still open at --until: {c}")
+            };
+            spans.push((start, start + d));
+            let b = &c["between"];
+            let mu = match (b[0].as_u64(), b[1].as_u64()) {
+                (Some(i), Some(k)) => {
+                    m[i as usize - 1] * m[k as usize - 1] / (m[i as usize - 1] + m[k as usize - 1])
+                }
+                (None, Some(k)) => m[k as usize - 1],
+                (Some(i), None) => m[i as usize - 1],
+                _ => unreachable!(),
+            };
+            let e = f(&c["restitution"]);
+            if law == "linear" {
+                let zeta = 0.3 / (2.0 * (100.0 * mu).sqrt());
+                rel(
+                    e,
+                    linear_closed(100.0, mu, zeta, u).1,
+                    1e-9,
+                    &format!("{b}: e(zeta)"),
+                );
+            }
+            loss += (1.0 - e * e) * 0.5 * mu * u * u;
+        }
+        spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+        assert!(
+            spans.windows(2).all(|w| w[0].1 < w[1].0),
+            "{law}: contacts overlap in time {spans:?}"
+        );
+        let e = &j["energy"];
+        rel(
+            f(&e["dissipated"]),
+            loss,
+            1e-8,
+            &format!("{law}: dissipated"),
+        );
+        rel(
+            f(&e["start"]) - loss,
+            f(&e["end"]),
+            1e-8,
+            &format!("{law}: end"),
+        );
+    }
+    // Undamped: the loss is zero to the integration's accuracy, not merely not negative.
+    let j = run(&args(
+        "-m 1,2,1 -x 0,2,4.5 --sizes 1,1,1 -v 1,0,-0.5 --left-wall -3 --right-wall 7 --stiffness 100 --until 20 --tol 1e-12",
+    ));
+    assert!(
+        f(&j["energy"]["dissipated"]) <= 1e-9 * f(&j["energy"]["start"]),
+        "{}",
+        j["energy"]
+    );
+}
+
+#[test]
+fn the_hertz_cradle_matches_the_scipy_reference() {
+    let j = run(&args(
+        "-m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz --tol 1e-12",
+    ));
+    let v = floats(&j["v"]);
+    for i in 0..3 {
+        assert!((v[i] - HERTZ_CRADLE_SCIPY[i]).abs() < 1e-9, "{v:?}");
+    }
+    // Energy is kept (elastic contacts): 1/2 sum v^2 = 1/2.
+    let ke: f64 = v.iter().map(|v| 0.5 * v * v).sum();
+    rel(ke, 0.5, 1e-9, "kinetic energy");
+}
+
+/// The sequential-impulse model of a layout in which every body touches its neighbours and
+/// the walls at t = 0, derived by hand: pairs and walls are resolved left to right, each with
+/// the velocities the previous one left (the documented rule for simultaneous events), until
+/// no pair approaches and no body moves into a wall. Pair rule (lecture, impulse form):
+/// v1' = v1 + (1 + e) m2/(m1 + m2) (v2 - v1), v2' = v2 - (1 + e) m1/(m1 + m2) (v2 - v1); wall:
+/// v' = -e_w v.
+fn touching_impulses(m: &[f64], v: &mut [f64], e: f64, e_wall: f64, right_wall: bool) {
+    for _ in 0..10_000 {
+        let mut changed = false;
+        for i in 0..m.len() - 1 {
+            if v[i] > v[i + 1] {
+                let (d, total) = (v[i + 1] - v[i], m[i] + m[i + 1]);
+                let (a, b) = (v[i], v[i + 1]);
+                v[i] = a + (1.0 + e) * m[i + 1] / total * d;
+                v[i + 1] = b - (1.0 + e) * m[i] / total * d;
+                changed = true;
+            }
+        }
+        let last = m.len() - 1;
+        if right_wall && v[last] > 0.0 {
+            v[last] *= -e_wall;
+            changed = true;
+        }
+        if !changed {
+            return;
+        }
+    }
+    panic!("no end to the impulses");
+}
+
+#[test]
+fn impulse_models_are_derived_by_hand() {
+    // The stiff backstop (scenarios/contact-backstop-*.toml): body 1 at speed 1 hits body 2,
+    // which touches a critically damped wall. Calibrated restitutions from the closed forms:
+    // pair c = 0.4, mu = 1/2, zeta = 0.4 / (2 sqrt(1/2)); wall zeta = 1 gives e_w = exp(-2)
+    // (t_c = 2 / omega0). The impulses iterate to about (-0.0174, -0.0080).
+    let e = linear_closed(1.0, 0.5, 0.4 / (2.0 * 0.5f64.sqrt()), 1.0).1;
+    let e_wall = (-2.0f64).exp();
+    let mut v = [1.0, 0.0];
+    touching_impulses(&[1.0, 1.0], &mut v, e, e_wall, true);
+    assert!(
+        (v[0] + 0.0174).abs() < 1e-4 && (v[1] + 0.008).abs() < 1e-3,
+        "{v:?}"
+    );
+    for k in ["1e4", "1e10"] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --stiffness 1 --damping 0.4 --wall-stiffness {k} --wall-zeta 1"
+        )));
+        let im = &j["impulse_model"];
+        rel(f(&im["e"]), e, 1e-12, "pair restitution");
+        rel(f(&im["e_wall"]), e_wall, 1e-12, "wall restitution");
+        let got = floats(&im["v"]);
+        for i in 0..2 {
+            assert!((got[i] - v[i]).abs() <= 1e-14, "{got:?} against {v:?}");
+        }
+    }
+    // The cradle: equal elastic balls exchange velocities, (1, 0, 0) -> (0, 0, 1), exactly.
+    let mut v = [1.0, 0.0, 0.0];
+    touching_impulses(&[1.0, 1.0, 1.0], &mut v, 1.0, 1.0, false);
+    assert_eq!(v, [0.0, 0.0, 1.0]);
+}
+
+/// Runs and expects exit 2 with a runtime failure: `needle` in the message, nothing on stdout.
+#[track_caller]
+fn fails_at_run_time(line: &str, needle: &str) {
+    refused(&args(line), needle);
+}
+
+#[test]
+fn every_runtime_failure_that_input_can_cause_is_refused() {
+    // Bodies through each other: a contact so soft (k = 1e-6, mu = 1/2: deepest overlap
+    // 1 / omega0 = 707) that the centres cross and cross back during one contact; the state at
+    // the end is in order again, so only the deepest overlap (> 1, the sum of the half-sizes)
+    // shows it.
+    fails_at_run_time(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1e-6",
+        "bodies 1 and 2 passed through each other",
+    );
+    // Through a wall likewise (mu = 1, overlap 1000 > the half-size 0.5).
+    fails_at_run_time(
+        "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 1e-6",
+        "body 1 passed through the right wall",
+    );
+    // Blow-up: symplectic Euler at omega h = 1.2, inside its stability limit 2 (so not refused
+    // up front), puts 1/2 k (h v)^2 = 0.72 of elastic energy into the first step: 2.44 times
+    // the start.
+    fails_at_run_time(
+        "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 1e6 --method symplectic-euler --dt 1.2e-3",
+        "symplectic-euler failed: the energy grew to 2.440e0 times its start at t = 0.0012",
+    );
+    // Energy gain: Verlet at omega h = 0.1 on an undamped wall contact ends 3.4e-6 above the
+    // start (its modified energy, cut at the event), above the 1e-6 allowed.
+    fails_at_run_time(
+        "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 1e6 --method verlet --dt 1e-4",
+        "verlet gained energy: 0.50000170",
+    );
+    // The step budget.
+    fails_at_run_time(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --method rk4 --dt 1e-6 --max-steps 10",
+        "rk4 failed: more than 10 steps",
+    );
+}
+/// The Hertz cradle's final velocities from an integration that shares nothing with collide:
+/// `scenarios/reference/contact.py` (SciPy 1.17.1), run once by hand and recorded here, so that
+/// CI needs no Python. Radau IIA (implicit, order 5) and DOP853 (explicit, order 8) at rtol
+/// 1e-13, each restarted at every contact opening and closing located by SciPy's own event
+/// search, agree to the digits given.
+const HERTZ_CRADLE_SCIPY: [f64; 3] = [-0.070_952_353_66, 0.076_403_039_07, 0.994_549_314_6];
