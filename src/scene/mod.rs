@@ -331,8 +331,29 @@ fn layout(
                 ),
             )
         }
-        crate::track::BodiesError::Track(e) => err(masses.span(), format!("[{table}] {e}")),
+        crate::track::BodiesError::Track(e) => err(
+            where_in_layout(&e, [masses, positions], sizes),
+            format!("[{table}] {e}"),
+        ),
     })
+}
+
+/// The list a layout error is about: positions for bodies out of order, outside a wall or not
+/// finite; sizes for a bad size; masses otherwise.
+fn where_in_layout(
+    e: &crate::track::TrackError,
+    [masses, positions]: [&Spanned<Vec<Number>>; 2],
+    sizes: Option<&Spanned<Vec<Number>>>,
+) -> Range<usize> {
+    use crate::track::TrackError;
+    match e {
+        TrackError::Order(_)
+        | TrackError::LeftOfWall(_)
+        | TrackError::RightOfWall(..)
+        | TrackError::NotFinite(_) => positions.span(),
+        TrackError::Size(..) => sizes.unwrap_or(masses).span(),
+        _ => masses.span(),
+    }
 }
 
 #[cfg(test)]

@@ -6,10 +6,10 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::{About, ExpectTable, SceneError, among, from_toml, layout, located};
+use super::{About, ExpectTable, SceneError, among, from_toml, layout, located, where_in_layout};
 use crate::number::Number;
 use crate::restitution::{Restitution, RestitutionError};
-use crate::track::{Limits, Track};
+use crate::track::{Limits, Track, TrackError};
 
 /// `[track]` in a scene: bodies on a track (`collide track`).
 #[derive(Deserialize)]
@@ -30,10 +30,10 @@ struct TrackTable {
     sizes: Option<Spanned<Vec<Number>>>,
     left_wall: Option<Number>,
     right_wall: Option<Number>,
-    restitution: Option<Restitution>,
-    wall_restitution: Option<Restitution>,
-    gravity: Option<Number>,
-    until: Option<Number>,
+    restitution: Option<Spanned<Restitution>>,
+    wall_restitution: Option<Spanned<Restitution>>,
+    gravity: Option<Spanned<Number>>,
+    until: Option<Spanned<Number>>,
     max_collisions: Option<u64>,
 }
 
@@ -71,33 +71,49 @@ impl TrackScene {
             [&t.masses, &t.positions, &t.velocities],
             t.sizes.as_ref(),
         )?;
-        for r in [&t.restitution, &t.wall_restitution].into_iter().flatten() {
-            if r.is_superelastic() {
-                let e = RestitutionError::Superelastic(r.to_string());
-                return Err(err(None, format!("[track] {e}")));
+        for (key, r) in [
+            ("restitution", &t.restitution),
+            ("wall_restitution", &t.wall_restitution),
+        ] {
+            if let Some(r) = r
+                && r.get_ref().is_superelastic()
+            {
+                let e = RestitutionError::Superelastic(r.get_ref().to_string());
+                return Err(err(Some(r.span()), format!("[track] {key}: {e}")));
             }
         }
-        let e = t.restitution.unwrap_or_else(Restitution::elastic).value();
+        let e = t
+            .restitution
+            .as_ref()
+            .map_or_else(Restitution::elastic, |r| r.get_ref().clone())
+            .value();
         let track = Track {
             bodies,
             left_wall: t.left_wall.map(|n| n.value()),
             right_wall: t.right_wall.map(|n| n.value()),
             e,
-            e_wall: t.wall_restitution.map_or(e, |r| r.value()),
-            gravity: t.gravity.map_or(0.0, |g| g.value()),
+            e_wall: t
+                .wall_restitution
+                .as_ref()
+                .map_or(e, |r| r.get_ref().value()),
+            gravity: t.gravity.as_ref().map_or(0.0, |g| g.get_ref().value()),
         };
-        track
-            .check()
-            .map_err(|e| err(Some(t.masses.span()), format!("[track] {e}")))?;
+        track.check().map_err(|e| {
+            let span = match (&e, &t.gravity) {
+                (TrackError::Gravity(_) | TrackError::NoFloor, Some(g)) => g.span(),
+                _ => where_in_layout(&e, [&t.masses, &t.positions], t.sizes.as_ref()),
+            };
+            err(Some(span), format!("[track] {e}"))
+        })?;
         let limits = Limits {
-            until: t.until.map(|u| u.value()),
+            until: t.until.as_ref().map(|u| u.get_ref().value()),
             max_collisions: t
                 .max_collisions
                 .unwrap_or(crate::track::DEFAULT_MAX_COLLISIONS),
         };
         limits
             .check()
-            .map_err(|e| err(None, format!("[track] {e}")))?;
+            .map_err(|e| err(t.until.as_ref().map(|u| u.span()), format!("[track] {e}")))?;
         let about = About::new(
             (path, text),
             file.title,

@@ -92,11 +92,11 @@ fn superball_stacks_approach_3v_and_7v() {
         "0",
     ]);
     let top = two["v"][1].as_f64().unwrap();
-    let r = 1e-8;
-    assert!(
-        (top - (3.0 - r) / (1.0 + r)).abs() <= 4.0 * f64::EPSILON * 3.0,
-        "{top}"
-    );
+    // (3 - r)/(1 + r) with r = 1e-8 exactly, rounded once; two impulses, each rounded once.
+    let r = collide::rational::ratio(1, 100_000_000);
+    let three_r =
+        common::rounded(&((collide::rational::int(3) - &r) / (collide::rational::int(1) + &r)));
+    common::assert_ulps(top, three_r, 2.0, "top speed of the two-ball stack");
     let three = json(&[
         "-m",
         "1,1e-8,1e-16",
@@ -109,8 +109,20 @@ fn superball_stacks_approach_3v_and_7v() {
         "--left-wall",
         "0",
     ]);
+    // Three balls: the floor reverses ball 1, ball 1 (at +1) and ball 2 (at -1) give ball 2
+    // (3 - r)/(1 + r), and ball 2 and ball 3 (mass ratio r again) give ball 3
+    // ((1 - r) + 2 (3 - r)/(1 + r))/(1 + r) = (7 - 2r - r^2)/(1 + r)^2; no pair approaches
+    // after that. With r = 1e-8 exactly (the masses as typed), in exact arithmetic, rounded
+    // once: each of the three impulses is rounded once, so the top speed is within a few ulps.
     let top = three["v"][2].as_f64().unwrap();
-    assert!((top - 7.0).abs() < 1e-6, "{top}");
+    let r = collide::rational::ratio(1, 100_000_000);
+    let one = collide::rational::int(1);
+    let seven = common::rounded(
+        &((collide::rational::int(7) - collide::rational::int(2) * &r - &r * &r)
+            / ((&one + &r) * (&one + &r))),
+    );
+    common::assert_ulps(top, seven, 4.0, "top speed of the three-ball stack");
+    assert!(top < 7.0);
     assert_eq!(
         three["simultaneous"], 2,
         "floor and two pairs at one instant"
@@ -221,6 +233,96 @@ fn an_inelastic_collapse_between_walls_ends() {
     ]);
     assert!(j["collisions"].as_u64().unwrap() > 3);
     assert!(j["energy"]["end"].as_f64().unwrap() < j["energy"]["start"].as_f64().unwrap());
+    // The same collapse in exact rational arithmetic (points on [0, 4], e the binary64 0.3):
+    // event times are rational (gap / closing speed), so the sequence is exact. It collapses
+    // onto the right wall: every body tends to x = 4 and the times to 119.18032978518282
+    // (the exact time of collision 300 rounded, the same as collision 600's).
+    let exact = collapse(300);
+    let limit = common::rounded(exact.times.last().unwrap());
+    assert_eq!(limit, 119.18032978518282);
+    assert!(exact.x.iter().all(|x| common::rounded(x) == 4.0));
+    // The run's own collisions, logged.
+    let track = Track {
+        bodies: (1..=3)
+            .map(|i| Body {
+                m: Mass::from_f64(1.0).unwrap(),
+                x: f64::from(i),
+                v: f64::from(2 - i),
+                size: 0.0,
+            })
+            .collect(),
+        left_wall: Some(0.0),
+        right_wall: Some(4.0),
+        e: 0.3,
+        e_wall: 0.3,
+        gravity: 0.0,
+    };
+    let mut log: Vec<(f64, String)> = Vec::new();
+    let run = track
+        .run(
+            Limits {
+                until: None,
+                max_collisions: 1_000_000,
+            },
+            Some(&mut |e: &collide::track::Event| log.push((e.t, e.who.clone()))),
+        )
+        .unwrap();
+    assert_eq!(run.collisions, j["collisions"].as_u64().unwrap());
+    // Collision by collision, the same contacts in the same order as exact arithmetic for the
+    // first 76 (measured: the first difference is at 77, where gaps of 1e-12 are below the
+    // rounding slack of positions near 4 and binary64's times stop advancing), at the same
+    // times to 1e-12 relative for the first 40 (measured: 8.5e-14).
+    for (k, ((t, who), (x, name))) in log
+        .iter()
+        .zip(exact.times.iter().zip(&exact.who))
+        .enumerate()
+        .take(76)
+    {
+        assert_eq!(who, name, "collision {}", k + 1);
+        if k < 40 {
+            let x = common::rounded(x);
+            assert!(
+                (t - x).abs() <= 1e-12 * x,
+                "collision {}: t = {t} against {x}",
+                k + 1
+            );
+        }
+    }
+    // The stop: a Zeno sequence, at the first collision where the documented rule holds on the
+    // run's own times (200 collisions of at most 8 contacts within 1e-12 of t: here the times
+    // that binary64 can no longer tell apart), with every body at the limit x = 4. The
+    // accumulation time is that of exact arithmetic to 1e-9 relative (measured: 8.3e-11, about
+    // 1e-8 early: the last collisions' times are lost to rounding).
+    let n = (199..log.len())
+        .find(|&k| log[k].0 - log[k - 199].0 <= 1e-12 * log[k].0)
+        .map(|k| k + 1);
+    assert_eq!(
+        n,
+        Some(log.len()),
+        "the window rule first holds at the last collision"
+    );
+    assert_eq!(
+        run.stop,
+        collide::track::Stop::Zeno {
+            at: log[log.len() - 1].0,
+            accumulation: log[log.len() - 1].0,
+            who: log[log.len() - 1].1.clone(),
+            x: 4.0,
+        }
+    );
+    let accumulation = j["stop"]["accumulation"].as_f64().unwrap();
+    assert!(
+        (accumulation - limit).abs() <= 1e-9 * limit,
+        "{accumulation} against {limit}"
+    );
+    assert_eq!(j["x"], serde_json::json!([4.0, 4.0, 4.0]));
+    // The counts: pairs and walls add up; "simultaneous" counts the collisions at the same
+    // time as the one before.
+    let walls = log.iter().filter(|(_, w)| w.contains("wall")).count() as u64;
+    assert_eq!(j["wall_collisions"], walls);
+    assert_eq!(j["pair_collisions"], run.collisions - walls);
+    let same = log.windows(2).filter(|w| w[0].0 == w[1].0).count() as u64;
+    assert_eq!(j["simultaneous"], same);
 }
 
 #[test]
@@ -685,16 +787,7 @@ mod random_layouts {
             e in 0.0f64..=1.0,
             until in proptest::option::of(0.0f64..50.0),
         ) {
-            let mut x = 0.5;
-            let bodies: Vec<Body> = bodies
-                .iter()
-                .map(|&(m, gap, v, size)| {
-                    x += gap + size / 2.0;
-                    let b = Body { m: Mass::from_f64(m).unwrap(), x, v, size };
-                    x += size / 2.0;
-                    b
-                })
-                .collect();
+            let (bodies, x) = super::in_a_row(&bodies, 0.5);
             let e = if elastic { 1.0 } else { e };
             let track = Track {
                 bodies,
@@ -943,4 +1036,361 @@ fn a_track_without_walls_has_no_wall_restitution() {
         "0",
     ]);
     assert!(out.contains("e = 1 between bodies, 1 at walls"), "{out}");
+}
+
+fn collapse(collisions: usize) -> Collapse {
+    use collide::rational::{Q, from_f64, int};
+    let e = from_f64(0.3);
+    let (zero, four) = (int(0), int(4));
+    let mut x = vec![int(1), int(2), int(3)];
+    let mut v = [int(1), int(0), int(-1)];
+    let mut t = int(0);
+    let mut out = Collapse {
+        times: Vec::new(),
+        who: Vec::new(),
+        x: Vec::new(),
+    };
+    while out.times.len() < collisions {
+        // Resolve what touches and approaches now, leftmost first: left wall (slot 0), pair i
+        // (slot i + 1), right wall (slot 3).
+        loop {
+            let hit = if x[0] == zero && v[0] < zero {
+                Some(0)
+            } else if let Some(i) = (0..2).find(|&i| x[i] == x[i + 1] && v[i] > v[i + 1]) {
+                Some(i + 1)
+            } else if x[2] == four && v[2] > zero {
+                Some(3)
+            } else {
+                None
+            };
+            let Some(slot) = hit else { break };
+            match slot {
+                0 => v[0] = -&e * &v[0],
+                3 => v[2] = -&e * &v[2],
+                s => {
+                    let i = s - 1;
+                    // Equal masses: v1' = v1 + (1 + e)/2 (v2 - v1), v2' = v2 - (1 + e)/2 (v2 - v1).
+                    let k = (int(1) + &e) / int(2);
+                    let d = &v[i + 1] - &v[i];
+                    let (a, b) = (&v[i] + &k * &d, &v[i + 1] - &k * &d);
+                    (v[i], v[i + 1]) = (a, b);
+                }
+            }
+            out.times.push(t.clone());
+            out.who
+                .push(["left wall & 1", "1 & 2", "2 & 3", "3 & right wall"][slot]);
+            if out.times.len() == collisions {
+                break;
+            }
+        }
+        if out.times.len() == collisions {
+            break;
+        }
+        // The next contact: the first gap to close, at gap / closing speed.
+        let mut waits: Vec<Q> = Vec::new();
+        if v[0] < zero {
+            waits.push(&x[0] / -&v[0]);
+        }
+        for i in 0..2 {
+            if v[i] > v[i + 1] {
+                waits.push((&x[i + 1] - &x[i]) / (&v[i] - &v[i + 1]));
+            }
+        }
+        if v[2] > zero {
+            waits.push((&four - &x[2]) / &v[2]);
+        }
+        let wait = waits.into_iter().min().expect("a collapse never stops");
+        for i in 0..3 {
+            x[i] = &x[i] + &v[i] * &wait;
+        }
+        t = &t + &wait;
+    }
+    out.x = x;
+    out
+}
+
+/// Bodies `(mass, gap before, velocity, size)` laid left to right from `x`, and where the last
+/// one ends.
+fn in_a_row(bodies: &[(f64, f64, f64, f64)], mut x: f64) -> (Vec<Body>, f64) {
+    let row = bodies
+        .iter()
+        .map(|&(m, gap, v, size)| {
+            x += gap + size / 2.0;
+            let b = Body {
+                m: Mass::from_f64(m).unwrap(),
+                x,
+                v,
+                size,
+            };
+            x += size / 2.0;
+            b
+        })
+        .collect();
+    (row, x)
+}
+
+#[test]
+fn bad_track_scenes_are_located_at_the_line_of_the_bad_value() {
+    // Each bad value of a [track] scene is reported as file:line:column at that value (or its
+    // list), with exit 2 and nothing on stdout.
+    let dir = std::env::temp_dir().join(format!("collide-track-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad.toml");
+    let good =
+        "[track]\nmasses = [1, 2]\npositions = [1, 2]\nvelocities = [0, -1]\nleft_wall = 0\n";
+    for (extra, place, needle) in [
+        ("friction = 1", "6:1", "unknown field `friction`"),
+        (
+            "restitution = 1.5",
+            "6:15",
+            "restitution: restitution '1.5' is above 1",
+        ),
+        (
+            "wall_restitution = 2",
+            "6:20",
+            "wall_restitution: restitution '2' is above 1",
+        ),
+        ("until = -1", "6:9", "(until) is -1"),
+        ("gravity = \"x\"", "6:11", "'x' is not a number"),
+        ("gravity = -1", "6:11", "gravity -1 must be finite and >= 0"),
+        ("max_collisions = -3", "6:18", "expected u64"),
+        ("sizes = [1]", "6:9", "sizes: 1 values for 2 bodies"),
+        ("sizes = [1, -1]", "6:9", "body 2: size -1 must be finite"),
+        (
+            "sizes = [1, 5]",
+            "3:13",
+            "bodies 1 and 2 overlap or are out of order",
+        ),
+        (
+            "right_wall = 1.5",
+            "3:13",
+            "body 2 is right of the right wall at 1.5",
+        ),
+    ] {
+        std::fs::write(&path, format!("{good}{extra}\n")).unwrap();
+        let (code, out, err) = common::run(&["scene", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{extra}: {err}");
+        assert!(out.is_empty(), "{extra}");
+        let at = format!("bad.toml:{place}: ");
+        assert!(
+            err.contains(&at) && err.contains(needle),
+            "{extra}: {err} lacks {at}{needle}"
+        );
+    }
+    for (text, place, needle) in [
+        (
+            "[track]\nmasses = [1, 2]\npositions = [2, 1]\nvelocities = [0, -1]\n",
+            "3:13",
+            "out of order",
+        ),
+        (
+            "[track]\nmasses = [1, 0]\npositions = [1, 2]\nvelocities = [0, -1]\n",
+            "2:10",
+            "body 2: mass '0'",
+        ),
+        (
+            "[track]\nmasses = [1, 2]\npositions = [1, 2]\nvelocities = [0]\n",
+            "4:14",
+            "velocities: 1 values",
+        ),
+        (
+            "[track]\nmasses = [1]\npositions = [1]\nvelocities = [0]\ngravity = 1\n",
+            "5:11",
+            "give a --left-wall",
+        ),
+        (
+            "[track]\nmasses = [1]\npositions = [-1]\nvelocities = [0]\nleft_wall = 0\n",
+            "3:13",
+            "left of the left wall",
+        ),
+    ] {
+        std::fs::write(&path, text).unwrap();
+        let (code, out, err) = common::run(&["scene", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{text}: {err}");
+        assert!(out.is_empty());
+        let at = format!("bad.toml:{place}: ");
+        assert!(
+            err.contains(&at) && err.contains(needle),
+            "{text}: {err} lacks {at}{needle}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+mod motion {
+    //! The shared primitives of the track engines (`collide::track::motion`), each against its
+    //! definition: the approach rule, the first contact of a gap under gravity (closed-form
+    //! roots), the impulse rounded once (exact rational arithmetic), the rounding slack.
+
+    use collide::compensated::pow2;
+    use collide::rational::{Q, from_f64, int, ratio, to_f64};
+    use collide::track::motion::{APPROACH, Kick, closing, dd_of, event_at, first_contact, slack};
+
+    #[test]
+    fn bodies_approach_only_faster_than_rounding() {
+        assert_eq!(APPROACH, pow2(-50));
+        // At rest or moving together: not approaching (a closing speed of 0 is not > 0).
+        assert!(!closing(0.0, 0.0));
+        assert!(!closing(5.0, 5.0));
+        assert!(!closing(-0.0, 0.0));
+        // One ulp apart at 1 (2.2e-16, below 2^-50 (|v1| + |v2|) = 1.8e-15): rounding.
+        assert!(!closing(1.0 + f64::EPSILON, 1.0));
+        // 1e-11 apart at 1000 (relative 1e-14, above 2^-50 but below 2^-50 |v1 v2|): approaching.
+        assert!(closing(1000.0 + 1e-11, 1000.0));
+        // Just above and at the threshold for v2 = 0: v1 > 2^-50 |v1| always holds for v1 > 0.
+        assert!(closing(1e-300, 0.0));
+        assert!(!closing(0.0, 1e-300));
+        // Opposite signs: the threshold uses the sum of the speeds, not their difference.
+        assert!(closing(1.0, -1.0));
+        let (v1, v2) = (1e-3, -(1e-3 - 1e-17));
+        assert!(closing(v1, v2));
+        // 3 and 3 - 4e-15: closing speed 4e-15 against 2^-50 (6 - 4e-15) = 5.3e-15: rounding.
+        assert!(!closing(3.0, 3.0 - 4e-15));
+        assert!(closing(3.0, 3.0 - 6e-15));
+    }
+
+    /// `s` is, within 4 ulps, where the gap `d0 + r t + a/2 t^2` first closes: evaluated
+    /// exactly (rationals), the gap is still >= 0 just before `s` and <= 0 just after, and it
+    /// is positive at every earlier bracket point (not a later root).
+    #[track_caller]
+    fn first_root(d0: f64, r: f64, a: f64, s: Option<f64>) {
+        let s = s.unwrap_or_else(|| panic!("{d0} {r} {a}: no contact"));
+        let gap = |t: f64| {
+            let t = from_f64(t);
+            from_f64(d0) + from_f64(r) * &t + from_f64(a) * &t * &t / int(2)
+        };
+        let (before, after) = (
+            s * (1.0 - 4.0 * f64::EPSILON),
+            s * (1.0 + 4.0 * f64::EPSILON),
+        );
+        assert!(
+            gap(before) >= int(0) && gap(after) <= int(0),
+            "{d0} {r} {a}: {s} is not a crossing"
+        );
+        for k in 1..64 {
+            assert!(
+                gap(before * f64::from(k) / 64.0) > int(0),
+                "{d0} {r} {a}: an earlier root than {s}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_first_contact_is_the_first_root_of_the_gap() {
+        let close = |a: Option<f64>, b: Option<f64>, what: &str| match (a, b) {
+            (Some(a), Some(b)) => assert!(
+                (a - b).abs() <= 4.0 * f64::EPSILON * b.abs(),
+                "{what}: {a} against {b}"
+            ),
+            (a, b) => assert_eq!(a, b, "{what}"),
+        };
+        // No acceleration: gap / closing speed, only when approaching.
+        assert_eq!(first_contact(3.0, -2.0, 0.0, true), Some(1.5));
+        assert_eq!(first_contact(3.0, -2.0, 0.0, false), None);
+        assert_eq!(first_contact(0.0, -2.0, 0.0, true), Some(0.0));
+        // A negative gap (rounding) counts as touching.
+        assert_eq!(first_contact(-1e-20, -2.0, 0.0, true), Some(0.0));
+        // Falling onto a floor (gap d0, rate r, acceleration -g): always closes.
+        for (d0, r, a) in [
+            (1.0, 0.0, -2.0),
+            (1.0, 3.0, -9.81),
+            (2.0, -1.0, -1.0),
+            (0.5, 7.0, -0.1),
+        ] {
+            first_root(d0, r, a, first_contact(d0, r, a, false));
+        }
+        // Dropped from 1 under g = 2: 1 - t^2 = 0 at t = 1 (sqrt 2 sqrt 2 rounds: an ulp).
+        close(first_contact(1.0, 0.0, -2.0, false), Some(1.0), "dropped");
+        // Thrown up from the floor at 2 under g = 1: back at t = 4.
+        assert_eq!(first_contact(0.0, 2.0, -1.0, false), Some(4.0));
+        // An opening acceleration: closes only when the gap shrinks fast enough.
+        for (d0, r, a) in [(1.0, -3.0, 2.0), (0.5, -10.0, 1.0)] {
+            first_root(d0, r, a, first_contact(d0, r, a, true));
+        }
+        assert_eq!(first_contact(1.0, -1.0, 2.0, true), None);
+        assert_eq!(first_contact(1.0, 1.0, 2.0, true), None);
+        assert_eq!(first_contact(1.0, 0.0, 2.0, true), None);
+        // Ill-conditioned for the plain formula (r^2 >> a d0): the stable form keeps every
+        // digit of the small root d0 / -r (1 + a d0 / (2 r^2) + ...).
+        let s = first_contact(1e-10, -1e5, -1.0, false).unwrap();
+        assert!(
+            (s - 1e-15 * (1.0 - 5e-21)).abs() <= 2.0 * f64::EPSILON * 1e-15,
+            "{s}"
+        );
+        // Huge values: no overflow in r^2 - 2 a d0.
+        let s = first_contact(1e300, -1e200, -1e300, false).unwrap();
+        assert!((s - 2f64.sqrt()).abs() <= 4.0 * f64::EPSILON, "{s}");
+        assert!(first_contact(1e300, -1e300, 0.0, true) == Some(1.0));
+        // Too far to happen in binary64: no event.
+        assert_eq!(first_contact(1e300, -1e-300, 0.0, true), None);
+    }
+
+    #[test]
+    fn events_and_slack() {
+        assert_eq!(event_at(2.0, Some(0.5)), Some(2.5));
+        assert_eq!(event_at(2.0, None), None);
+        assert_eq!(event_at(1e308, Some(1e308)), None);
+        assert_eq!(slack(3.0), 3.0 * pow2(-40));
+        assert_eq!(slack(0.0), 0.0);
+    }
+
+    #[test]
+    fn dd_of_is_the_nearest_double_double() {
+        // 1/3: hi the nearest binary64, lo the nearest to the rest, |rest - lo| <= ulp(lo)/2.
+        let third = ratio(1, 3);
+        let d = dd_of(&third);
+        assert_eq!(d.hi, 1.0 / 3.0);
+        let rest = &third - from_f64(d.hi);
+        assert_eq!(d.lo, to_f64(&rest).unwrap());
+        assert!(d.lo != 0.0 && d.lo.abs() <= pow2(-54));
+        // Exact in binary64: lo = 0.
+        let d = dd_of(&ratio(3, 4));
+        assert_eq!((d.hi, d.lo), (0.75, 0.0));
+        // Beyond binary64: the infinite head alone.
+        let huge = Q::from(collide::rational::IBig::from(10u8).pow(400));
+        let d = dd_of(&huge);
+        assert_eq!((d.hi, d.lo), (f64::INFINITY, 0.0));
+    }
+
+    #[test]
+    fn a_kick_is_the_impulse_form_rounded_once() {
+        // v1' = v1 + (1 + e) m2/(m1 + m2) (v2 - v1), v2' = v2 - (1 + e) m1/(m1 + m2) (v2 - v1),
+        // evaluated exactly and rounded: the kick must give exactly that (correctly rounded;
+        // a near-tie, which these cases do not meet, could differ by an ulp).
+        let mut r = collide::accuracy::Rng::new(7);
+        for _ in 0..500 {
+            let (m1, m2) = (r.log_uniform(-8.0, 8.0), r.log_uniform(-8.0, 8.0));
+            let e = [0.0, 1.0, r.unit(), 0.3][(r.next_u64() % 4) as usize];
+            let v1 = r.sign() * r.log_uniform(-3.0, 3.0);
+            let v2 = r.sign() * r.log_uniform(-3.0, 3.0);
+            let (q1, q2, qe) = (from_f64(m1), from_f64(m2), from_f64(e));
+            let k = (int(1) + &qe) / (&q1 + &q2);
+            let d = from_f64(v2) - from_f64(v1);
+            let f1 = to_f64(&(from_f64(v1) + &k * &q2 * &d)).unwrap();
+            let f2 = to_f64(&(from_f64(v2) - &k * &q1 * &d)).unwrap();
+            let got = Kick::new(&q1, &q2, e).apply(v1, v2);
+            if e == 0.0 {
+                // Stuck together: one common velocity, the first body's.
+                assert_eq!(got, (f1, f1), "m {m1} {m2} v {v1} {v2}");
+            } else {
+                assert_eq!(got, (f1, f2), "m {m1} {m2} e {e} v {v1} {v2}");
+            }
+        }
+        // Whole mass ratios give exact weights: masses 1 and 3, elastic, (1, 0) -> (-1/2, 1/2).
+        assert_eq!(
+            Kick::new(&int(1), &int(3), 1.0).apply(1.0, 0.0),
+            (-0.5, 0.5)
+        );
+    }
+}
+
+/// An exact event-driven run of the collapse: three unit point masses at 1, 2, 3 moving at 1,
+/// 0, -1 between walls at 0 and 4, restitution the binary64 0.3 for pairs and walls. At each
+/// instant the leftmost contact that is touching and approaching is resolved first, with the
+/// velocities the previous one left (the documented rule). Records every collision's time and
+/// contact, and the positions at the last collision.
+struct Collapse {
+    times: Vec<collide::rational::Q>,
+    who: Vec<&'static str>,
+    x: Vec<collide::rational::Q>,
 }
