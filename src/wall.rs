@@ -246,13 +246,20 @@ mod tests {
         })
         .unwrap();
         assert_eq!(s.f, q("2"));
-        // Passing through the wall: refused.
+        // Passing through the wall: refused, as unphysical, with the restitution it would take
+        // (e = -(f - w)/(v - w) = -(-3)/(-4) = -3/4).
         let e = solve(WallProblem {
             ball: (Some(q("-4")), Some(q("-3"))),
             wall: (Some(q("0")), None),
             e: None,
             side: 0,
         });
-        assert!(e.is_err());
+        match e {
+            Err(UnknownError::Unphysical(m)) => {
+                assert_eq!(m, "e = -3/4 < 0: the ball would pass through the wall");
+            }
+            Err(other) => panic!("expected the unphysical refusal, got {other}"),
+            Ok(_) => panic!("a ball through a wall was solved"),
+        }
     }
 }

@@ -364,7 +364,12 @@ fn help_and_version() {
         .assert()
         .success()
         .stdout(predicate::str::contains("--restitution"));
-    collide().arg("--version").assert().success();
+    // The version Cargo builds with, as clap prints it: "collide 0.1.0".
+    collide()
+        .arg("--version")
+        .assert()
+        .success()
+        .stdout(format!("collide {}\n", env!("CARGO_PKG_VERSION")));
 }
 
 // Issue 24: each message names the real limit and the real way out.
