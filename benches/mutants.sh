@@ -7,6 +7,8 @@
 #   cargo install cargo-mutants --locked     # once (27.x)
 #   benches/mutants.sh                       # every area below, one after the other
 #   benches/mutants.sh motion columns        # some of them
+#   MUTANTS_SHARD=3/8 benches/mutants.sh contact   # one eighth of an area (to pause between)
+#   MUTANTS_ITERATE=1 benches/mutants.sh motion    # only what the last run did not catch
 #
 # Each area mutates its files and runs only the tests that guard them (the lib's unit tests and
 # the suite's modules, selected by name), so a mutant costs seconds. The release profile is the
@@ -50,10 +52,13 @@ cd "$tree"
 find src tests -name '*.rs' -exec touch {} +
 for area in "${areas[@]}"; do
     [ -n "${FILES[$area]:-}" ] || { echo "unknown area '$area': expected ${!FILES[*]}" >&2; exit 2; }
-    out="$here/target/mutants/$area"
+    out="$here/target/mutants/$area${MUTANTS_SHARD:+-${MUTANTS_SHARD%/*}}"
     mkdir -p "$out"
+    extra=()
+    [ -n "${MUTANTS_SHARD:-}" ] && extra+=(--shard "$MUTANTS_SHARD")
+    [ -n "${MUTANTS_ITERATE:-}" ] && extra+=(--iterate)
     # shellcheck disable=SC2086
-    cargo mutants --in-place --no-shuffle --profile release \
+    cargo mutants --in-place --no-shuffle --profile release "${extra[@]}" \
         --file "${FILES[$area]}" --output "$out" --timeout 20 \
         --cargo-test-arg=--lib --cargo-test-arg=--test --cargo-test-arg=suite \
         -- -- ${TESTS[$area]} || true

@@ -25,5 +25,6 @@ mod shell;
 mod sweeps;
 mod tables;
 mod track;
+mod units;
 mod view;
 mod width;

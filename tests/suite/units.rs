@@ -1,0 +1,128 @@
+//! Units (issue 31 §5, mutants of `src/units.rs` that no test caught): the nearest-name
+//! suggestion for a mistyped unit, and speeds as heights in another velocity unit and gravity.
+
+use crate::common;
+
+use collide::units::{Dimension, UnitError, lookup};
+
+/// The suggestion for a mistyped unit: `Some(name)` or `None` (no known name within 2 edits).
+fn suggestion(typed: &str, d: Dimension) -> Option<&'static str> {
+    match lookup(typed, d) {
+        Err(UnitError::DidYouMean { near, .. }) => Some(near),
+        Err(UnitError::Unknown { .. }) => None,
+        other => panic!("{typed}: {other:?}"),
+    }
+}
+
+#[test]
+fn a_mistyped_unit_gets_the_nearest_name() {
+    // Edit distance (an insertion, deletion, substitution or swap of neighbours counts 1),
+    // at most 2, ties to the first name in byte order; the nearest three, by hand:
+    //   mhp: mph 1 (a swap), kph 2, m/s 2     kks: km/s 2, kn 2, kph 2
+    //   h: kn 2, kph 2, mph 2                 kk: kn 1, kph 2, km/h 3
+    //   mk/: km/h 2 (a swap, an insertion), km/s 2, kn 2
+    //   mk: kn 2, m/s 2, mph 2                knott: knot 1, knots 1
+    //   xyzzy: nothing within 5               kgxyz: kg 3 (too far)
+    //   kgx: kg 1                             slgu: slug 1 (a swap)
+    for (typed, near) in [
+        ("mhp", Some("mph")),
+        ("kks", Some("km/s")),
+        ("h", Some("kn")),
+        ("kk", Some("kn")),
+        ("mk/", Some("km/h")),
+        ("mk", Some("kn")),
+        ("knott", Some("knot")),
+        ("xyzzy", None),
+    ] {
+        assert_eq!(suggestion(typed, Dimension::Velocity), near, "{typed}");
+    }
+    // Three deletions away is too far: no suggestion.
+    assert_eq!(suggestion("kgxyz", Dimension::Mass), None);
+    assert_eq!(suggestion("kgx", Dimension::Mass), Some("kg"));
+    assert_eq!(suggestion("slgu", Dimension::Mass), Some("slug"));
+}
+
+#[test]
+fn heights_use_the_velocity_unit_and_the_given_gravity() {
+    // 36 km/h = 10 m/s exactly; with g = 10: v^2 / 2g = 5 m, and after e = 1/2, 5/4 m.
+    let out = common::stdout(&[
+        "solve",
+        "-m",
+        "1,wall",
+        "-v",
+        "36 km/h,0",
+        "-e",
+        "0.5",
+        "--show",
+        "heights",
+        "--gravity",
+        "10",
+        "--exact",
+        "--format",
+        "json",
+    ]);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["heights"], serde_json::json!({"in": "5", "fin": "5/4"}));
+    let text = common::stdout(&[
+        "solve",
+        "-m",
+        "1,wall",
+        "-v",
+        "36 km/h,0",
+        "-e",
+        "0.5",
+        "--show",
+        "heights",
+        "--gravity",
+        "10",
+    ]);
+    assert!(text.contains("v^2 / 2g, g = 10 m/s^2, in m"), "{text}");
+    // Standard gravity, named as typed in the heading: 9.80665.
+    let text = common::stdout(&[
+        "solve",
+        "-m",
+        "1,wall",
+        "-v",
+        "height 2 m,0",
+        "-e",
+        "0.5",
+        "--show",
+        "heights",
+    ]);
+    assert!(text.contains("g = 9.80665 m/s^2"), "{text}");
+    assert!(
+        text.contains("  IN   2 ") && text.contains("  FIN  0.5 "),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_height_of_zero_is_a_speed_of_zero_and_energy_units_need_both_units() {
+    use collide::units::{EnergyUnitError, Units, energy_unit, parse};
+    // 0 m is a height (a speed of 0), not a negative one; -1 m is refused.
+    let q = parse("height 0 m", Dimension::Velocity).unwrap();
+    assert!(q.height && q.number.exact() == collide::rational::int(0));
+    assert!(parse("height -1 m", Dimension::Velocity).is_err());
+    // --energy-unit converts from the case's energy unit, so it needs units on the masses
+    // and on the velocities: either missing is refused.
+    let j = energy_unit("J").unwrap();
+    for (mass, velocity) in [(Some("kg"), None), (None, Some("m/s")), (None, None)] {
+        let units = Units {
+            mass,
+            velocity,
+            energy_as: None,
+        };
+        assert_eq!(
+            units.with_energy_unit(j),
+            Err(EnergyUnitError::NoUnits("J"))
+        );
+    }
+    let units = Units {
+        mass: Some("kg"),
+        velocity: Some("km/h"),
+        energy_as: None,
+    };
+    // 1 kg (km/h)^2 = (1/3.6)^2 J = 25/324 J.
+    let scale = units.with_energy_unit(j).unwrap().energy_scale().unwrap();
+    assert_eq!(scale, collide::rational::ratio(25, 324));
+}
