@@ -17,7 +17,7 @@ use collide::restitution::Restitution;
 use collide::space::typed::Listed;
 use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
-use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary};
+use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary, VaryError};
 use collide::table::writer::{Header, RowFormat};
 use collide::units::Dimension;
 
@@ -465,7 +465,7 @@ pub struct TableArgs {
     /// Columns, comma-separated [default: the inputs, fin1, fin2, v_com, ke_in, ke_fin, crunch,
     /// lost]
     #[arg(long, value_delimiter = ',', value_name = "COLUMNS", value_parser = ColumnParser)]
-    pub columns: Vec<&'static Column>,
+    pub columns: Vec<String>,
 
     /// Output format [default: from -o's extension (.csv, .jsonl, .ndjson), else csv]
     #[arg(long, value_enum)]
@@ -492,14 +492,16 @@ pub struct SweepArgs {
     pub case: CaseArgs,
 
     /// A parameter to vary: NAME=FROM:TO:COUNT, NAME=FROM:TO:COUNT:log or NAME=a,b,c, with NAME
-    /// one of m1, m2, v1, v2, e; repeat for a cartesian product (the last varies fastest)
+    /// one of m1, m2, v1, v2, e (in the plane also v1x, v1y, v2x, v2y, normal_deg, b, r1, r2);
+    /// repeat for a cartesian product (the last varies fastest)
     #[arg(
         long,
         required = true,
         value_name = "NAME=RANGE",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = VaryParser
     )]
-    pub vary: Vec<Vary>,
+    pub vary: Vec<String>,
 
     /// Only the K-th of N contiguous slices of the rows (K from 1); on stdout the shards
     /// concatenated in order are the whole table, and each shard file written with -o carries
@@ -546,16 +548,22 @@ pub struct BatchArgs {
 pub struct ColumnParser;
 
 impl TypedValueParser for ColumnParser {
-    type Value = &'static Column;
+    /// The name: a column of a table on a line, or of one in the plane (which one the case
+    /// needs is decided with the case: `commands::table`).
+    type Value = String;
 
     fn parse_ref(
         &self,
         cmd: &clap::Command,
         arg: Option<&clap::Arg>,
         value: &OsStr,
-    ) -> Result<&'static Column, clap::Error> {
+    ) -> Result<String, clap::Error> {
         StringValueParser::new()
-            .try_map(|s| s.parse::<&'static Column>())
+            .try_map(|s| match s.parse::<&'static Column>() {
+                Ok(c) => Ok(c.name.to_string()),
+                Err(_) if collide::table::runs::plane::is_plane_name(&s) => Ok(s),
+                Err(e) => Err(e),
+            })
             .parse_ref(cmd, arg, value)
     }
 
@@ -565,6 +573,35 @@ impl TypedValueParser for ColumnParser {
                 .iter()
                 .map(|c| PossibleValue::new(c.name).help(c.help)),
         ))
+    }
+}
+
+/// A `--vary` of `collide sweep`: one on a line (checked here, as [`Vary`] parses it), or one
+/// naming a parameter of the plane (checked with the case, `commands::table`).
+#[derive(Clone, Copy, Debug)]
+pub struct VaryParser;
+
+impl TypedValueParser for VaryParser {
+    type Value = String;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<String, clap::Error> {
+        StringValueParser::new()
+            .try_map(|s| match s.parse::<Vary>() {
+                Ok(_) => Ok(s),
+                // A name only the plane has (m1, m2, v1, v2 and e are checked as on a line).
+                Err(VaryError::Param(name, _))
+                    if collide::table::runs::plane::is_plane_name(&name) =>
+                {
+                    Ok(s)
+                }
+                Err(e) => Err(e),
+            })
+            .parse_ref(cmd, arg, value)
     }
 }
 

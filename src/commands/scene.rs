@@ -43,7 +43,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
             );
         }
         let table = TableArgs {
-            columns: sw.columns.clone(),
+            columns: sw.columns.iter().map(|c| c.name.to_string()).collect(),
             format: Some(sw.format),
             output: None,
             skip_bad: sw.skip_bad,

@@ -16,9 +16,92 @@ use super::Outcome;
 use crate::cli::{BatchArgs, RunFormat, RunTableArgs, SweepArgs, TableArgs};
 
 pub fn sweep(args: SweepArgs) -> Result<Outcome> {
+    if args.case.spatial() {
+        return plane_sweep(args);
+    }
+    let vary = args
+        .vary
+        .iter()
+        .map(|v| {
+            v.parse::<collide::table::sweep::Vary>().map_err(|e| {
+                let plane = e.to_string();
+                anyhow::anyhow!("--vary '{v}': {plane} (b, normal_deg, v1x, ... are for the plane)")
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
     let case = args.case.into_case(false)?;
-    let grid = Grid::new(args.vary, args.max_rows)?;
+    let grid = Grid::new(vary, args.max_rows)?;
     run_sweep(&case, &grid, args.shard, &args.table)
+}
+
+/// `collide sweep` in the plane: two bodies with 2-vectors and a line of impact
+/// (`table::runs::plane`), one row per point of the grid.
+fn plane_sweep(args: SweepArgs) -> Result<Outcome> {
+    use collide::table::runs::plane::{Line, PlaneSweep};
+    let posed = args.case.space_input(None, false)?.pose()?;
+    let st = &posed.statement;
+    if st.dim != 2 || st.masses.len() != 2 {
+        anyhow::bail!(
+            "a sweep of a collision away from a line is of two bodies in the plane (this case \
+             has {} bodies in {} dimensions)",
+            st.masses.len(),
+            st.dim
+        );
+    }
+    let f = |q: &collide::rational::Q| collide::rational::to_f64(q).unwrap_or(f64::NAN);
+    let m: Vec<f64> = st
+        .masses
+        .iter()
+        .map(|g| g.known().map(f))
+        .collect::<Option<_>>()
+        .ok_or_else(|| anyhow::anyhow!("a sweep takes known masses, not '?'"))?;
+    let v: Vec<[f64; 2]> = st
+        .v_in
+        .iter()
+        .map(|w| w.value().map(|w| [f(&w[0]), f(&w[1])]))
+        .collect::<Option<_>>()
+        .ok_or_else(|| anyhow::anyhow!("a sweep takes known velocities, not '?'"))?;
+    let e = match &st.e {
+        None => 1.0,
+        Some(g) => g
+            .known()
+            .map(f)
+            .ok_or_else(|| anyhow::anyhow!("a sweep takes a known e, not '?'"))?,
+    };
+    let line = match (&args.case.radii, &args.case.impact_parameter, &st.normal) {
+        (Some(r), Some(b), _) => Line::Geometry {
+            r: [r[0].value(), r[1].value()],
+            b: b.value(),
+        },
+        (_, _, Some(n)) => Line::Normal([f(&n[0]), f(&n[1])]),
+        _ => anyhow::bail!(
+            "a sweep in the plane needs the line of impact: --normal, or --radii with \
+             --impact-parameter"
+        ),
+    };
+    let kind = PlaneSweep {
+        m: [m[0], m[1]],
+        v: [v[0], v[1]],
+        line,
+        e,
+    };
+    let format = match args.table.format {
+        None => None,
+        Some(RowFormat::Text) => Some(RunFormat::Text),
+        Some(RowFormat::Csv) => Some(RunFormat::Csv),
+        Some(RowFormat::Jsonl) => Some(RunFormat::Jsonl),
+        Some(RowFormat::Parquet) => Some(RunFormat::Parquet),
+    };
+    let runs = RunTableArgs {
+        vary: args.vary,
+        shard: Some(args.shard),
+        max_rows: args.max_rows,
+        columns: args.table.columns,
+        output: args.table.output,
+        skip_bad: args.table.skip_bad,
+        header: args.table.header,
+    };
+    run_table(&kind, &runs, format)
 }
 
 /// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
@@ -41,7 +124,7 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
         anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
     }
     let mut out = open(table)?;
-    let writer = writer(columns(&table.columns, general), table, &out)?;
+    let writer = writer(columns(&table.columns, general)?, table, &out)?;
     let rows = shard.rows(grid.total);
     let mut progress = Progress::new(Some(rows.end - rows.start));
     let result = write_sweep(
@@ -64,7 +147,7 @@ pub fn batch(args: BatchArgs) -> Result<Outcome> {
     )?;
     let mut out = open(&args.table)?;
     let writer = writer(
-        columns(&args.table.columns, input.general),
+        columns(&args.table.columns, input.general)?,
         &args.table,
         &out,
     )?;
@@ -73,11 +156,18 @@ pub fn batch(args: BatchArgs) -> Result<Outcome> {
     finish(result, out, &progress, &args.table)
 }
 
-fn columns(chosen: &[&'static Column], general: bool) -> Vec<&'static Column> {
+fn columns(chosen: &[String], general: bool) -> Result<Vec<&'static Column>> {
     if chosen.is_empty() {
-        Column::defaults(general)
+        Ok(Column::defaults(general))
     } else {
-        chosen.to_vec()
+        chosen
+            .iter()
+            .map(|c| {
+                c.parse::<&'static Column>().map_err(|e| {
+                    anyhow::anyhow!("--columns: {e} ({c} is a column of a sweep in the plane)")
+                })
+            })
+            .collect()
     }
 }
 

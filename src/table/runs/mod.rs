@@ -19,6 +19,7 @@
 //! - `track`: those of `collide track`.
 
 pub mod contact;
+pub mod plane;
 pub mod track;
 
 use std::io::Write;

@@ -1,0 +1,395 @@
+//! Sweeps in the plane (`collide sweep` with vectors): two smooth bodies meeting along a line of
+//! impact, one row per point of the grid, solved by the fast binary64 impact
+//! ([`crate::space::impact::general`]: the exact impulse form correctly rounded) with the
+//! classic scattering table in mind, the deflection against the impact parameter.
+//!
+//! Parameters: the masses `m1`, `m2`; the velocities' components `v1x`, `v1y`, `v2x`, `v2y`, or
+//! `v1`, `v2` (a speed along the typed direction, `+x` for a body at rest); `e`; the line of
+//! impact's angle `normal_deg` (from `+x`, counterclockwise), or with disks of radii `r1`, `r2`
+//! the impact parameter `b` (physics.md section 7: `n` along `sqrt((R1+R2)^2 - b^2) d + b
+//! d_perp`, `d = v1 - v2`, `d_perp` = `d` turned by +90 degrees, as `collide solve --radii
+//! --impact-parameter` draws it).
+//!
+//! Columns: the final velocities, speeds and directions, how far each body turned, the angle
+//! between the final velocities, the energies (`KE = 1/2 (m v).v`, the crunch from the reduced
+//! mass, `1/2 mu (n.d)^2 / n.n`, `lost = (1 - e)(1 + e) crunch`, `KE_FIN = KE_COM + 1/2 mu ((d x
+//! n)^2 + e^2 (d.n)^2) / n.n`: no difference of large energies), the impulse on body 2 and the line of impact `n` used
+//! (as computed, not normalised: `collide solve --normal '(nx,ny)'` gives the same FIN bit for
+//! bit).
+
+use super::{Kind, Knob};
+use crate::compensated::Dd;
+use crate::inertia::Mass;
+use crate::number::Number;
+use crate::restitution::Restitution;
+use crate::space::impact;
+use crate::table::row::ValueProblem;
+
+/// How the line of impact is given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Line {
+    /// Its direction (any length).
+    Normal([f64; 2]),
+    /// Disks of radii `r`, body 2's centre at distance `b` from body 1's line of motion
+    /// relative to body 2.
+    Geometry { r: [f64; 2], b: f64 },
+}
+
+/// A collision in the plane to sweep: the base the grid's values go into.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlaneSweep {
+    pub m: [f64; 2],
+    pub v: [[f64; 2]; 2],
+    pub line: Line,
+    pub e: f64,
+}
+
+/// One row's results.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact {
+    pub v: [[f64; 2]; 2],
+    pub fin: [[f64; 2]; 2],
+    pub n: [f64; 2],
+    pub m: [f64; 2],
+    pub e: f64,
+}
+
+/// A column; bodies counted from 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Col {
+    Fin(usize, usize),
+    Speed(usize),
+    Angle(usize),
+    Turned(usize),
+    Between,
+    KeIn,
+    KeFin,
+    Crunch,
+    Lost,
+    Impulse(usize),
+    Normal(usize),
+}
+
+const SCALARS: &[&str] = &[
+    "e",
+    "v1x",
+    "v1y",
+    "v2x",
+    "v2y",
+    "normal_deg",
+    "b",
+    "r1",
+    "r2",
+];
+
+/// The columns by name.
+pub const COLUMNS: [(&str, Col); 21] = [
+    ("fin1x", Col::Fin(0, 0)),
+    ("fin1y", Col::Fin(0, 1)),
+    ("fin2x", Col::Fin(1, 0)),
+    ("fin2y", Col::Fin(1, 1)),
+    ("speed1", Col::Speed(0)),
+    ("speed2", Col::Speed(1)),
+    ("angle1_deg", Col::Angle(0)),
+    ("angle2_deg", Col::Angle(1)),
+    ("turned1_deg", Col::Turned(0)),
+    ("turned2_deg", Col::Turned(1)),
+    ("between_deg", Col::Between),
+    ("ke_in", Col::KeIn),
+    ("ke_fin", Col::KeFin),
+    ("crunch", Col::Crunch),
+    ("lost", Col::Lost),
+    ("jx", Col::Impulse(0)),
+    ("jy", Col::Impulse(1)),
+    ("nx", Col::Normal(0)),
+    ("ny", Col::Normal(1)),
+    ("v1", Col::Speed(0)),
+    ("v2", Col::Speed(1)),
+];
+
+/// Names a planar `--vary` or `--columns` may use (what the 1D table does not know).
+pub fn is_plane_name(name: &str) -> bool {
+    let name = name.trim().replace('-', "_");
+    SCALARS.contains(&name.as_str()) || name == "error" || COLUMNS.iter().any(|(n, _)| *n == name)
+}
+
+fn range(ok: bool, what: &str) -> Result<(), ValueProblem> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ValueProblem::Range(what.into()))
+    }
+}
+
+/// `a x b` and `a.b`, each rounded once (double-double sums of exact products).
+fn cross_dot(a: [f64; 2], b: [f64; 2]) -> (f64, f64) {
+    let cross = Dd::prod(a[0], b[1]) - Dd::prod(a[1], b[0]);
+    let dot = Dd::prod(a[0], b[0]) + Dd::prod(a[1], b[1]);
+    (cross.value(), dot.value())
+}
+
+/// The angle from `a` to `b` in degrees, in [0, 180]; `None` if either is zero.
+fn between(a: [f64; 2], b: [f64; 2]) -> Option<f64> {
+    if a == [0.0, 0.0] || b == [0.0, 0.0] {
+        return None;
+    }
+    let (c, d) = cross_dot(a, b);
+    Some(c.abs().atan2(d).to_degrees())
+}
+
+/// The line of impact at `deg` degrees from `+x`, as `collide solve --normal DEGdeg` takes it:
+/// a rational direction at multiples of 45 degrees, else the binary64 cosine and sine.
+pub fn normal_at(deg: f64) -> [f64; 2] {
+    use crate::rational::{from_f64, to_f64};
+    let a = crate::space::angle::Angle::degrees(from_f64(deg));
+    match a.rational_direction() {
+        Some(d) => [to_f64(&d[0]).unwrap_or(0.0), to_f64(&d[1]).unwrap_or(0.0)],
+        None => {
+            let (c, s, _) = a.unit();
+            [c, s]
+        }
+    }
+}
+
+impl PlaneSweep {
+    /// The line of impact as a vector, for velocities `v`.
+    fn normal(&self, v: &[[f64; 2]; 2]) -> Result<[f64; 2], String> {
+        match self.line {
+            Line::Normal(n) => Ok(n),
+            Line::Geometry { r, b } => {
+                let sum = r[0] + r[1];
+                if b.abs() > sum {
+                    return Err(format!(
+                        "the disks miss: |b| = {} > R1 + R2 = {}",
+                        crate::number::num(b.abs()),
+                        crate::number::num(sum)
+                    ));
+                }
+                let d = [v[0][0] - v[1][0], v[0][1] - v[1][1]];
+                if d == [0.0, 0.0] {
+                    return Err("the bodies do not move relative to each other".into());
+                }
+                // sqrt((R - b)(R + b)): no cancellation in R^2 - b^2.
+                let c = ((sum - b.abs()) * (sum + b.abs())).sqrt();
+                Ok([c * d[0] - b * d[1], c * d[1] + b * d[0]])
+            }
+        }
+    }
+}
+
+impl Impact {
+    fn mv(&self, i: usize) -> [f64; 2] {
+        [self.m[i] * self.v[i][0], self.m[i] * self.v[i][1]]
+    }
+
+    /// `1/2 mu (n.d)^2 / n.n`, `mu = m1 (m2 / (m1 + m2))`.
+    fn crunch(&self) -> f64 {
+        let d = [self.v[0][0] - self.v[1][0], self.v[0][1] - self.v[1][1]];
+        let (_, nd) = cross_dot(self.n, d);
+        let (_, nn) = cross_dot(self.n, self.n);
+        let mu = self.m[0] * (self.m[1] / (self.m[0] + self.m[1]));
+        // (n.d)^2 / n.n rounded once from the rounded dot products: no square root.
+        0.5 * mu * (Dd::prod(nd, nd) / Dd::new(nn)).value()
+    }
+
+    /// The energy of the relative motion after: the tangential part passes, the normal part
+    /// keeps `e^2` of its share, `1/2 mu ((d x n)^2 + e^2 (d.n)^2) / n.n` (non-negative terms).
+    fn ke_relative_fin(&self) -> f64 {
+        let d = [self.v[0][0] - self.v[1][0], self.v[0][1] - self.v[1][1]];
+        let (dn_cross, dn) = cross_dot(d, self.n);
+        let (_, nn) = cross_dot(self.n, self.n);
+        let mu = self.m[0] * (self.m[1] / (self.m[0] + self.m[1]));
+        let e2 = self.e * self.e;
+        let q = (Dd::prod(dn_cross, dn_cross) + Dd::new(e2) * Dd::prod(dn, dn)) / Dd::new(nn);
+        0.5 * mu * q.value()
+    }
+
+    /// `KE_COM = 1/2 |P|^2 / M`.
+    fn ke_com(&self) -> f64 {
+        let (p1, p2) = (self.mv(0), self.mv(1));
+        let p = [p1[0] + p2[0], p1[1] + p2[1]];
+        let total = self.m[0] + self.m[1];
+        0.5 * (p[0] / total * p[0] + p[1] / total * p[1])
+    }
+
+    fn value(&self, col: Col) -> Option<f64> {
+        let speed = |w: [f64; 2]| w[0].hypot(w[1]);
+        Some(match col {
+            Col::Fin(i, k) => self.fin[i][k],
+            Col::Speed(i) => speed(self.fin[i]),
+            Col::Angle(i) => {
+                let w = self.fin[i];
+                if w == [0.0, 0.0] {
+                    return None;
+                }
+                w[1].atan2(w[0]).to_degrees()
+            }
+            Col::Turned(i) => between(self.v[i], self.fin[i]).unwrap_or(0.0),
+            Col::Between => between(self.fin[0], self.fin[1])?,
+            Col::KeIn => {
+                let (_, a) = cross_dot(self.mv(0), self.v[0]);
+                let (_, b) = cross_dot(self.mv(1), self.v[1]);
+                0.5 * (a + b)
+            }
+            Col::KeFin => self.ke_com() + self.ke_relative_fin(),
+            Col::Crunch => self.crunch(),
+            Col::Lost => (1.0 - self.e) * (1.0 + self.e) * self.crunch(),
+            Col::Impulse(k) => self.m[1] * (self.fin[1][k] - self.v[1][k]),
+            Col::Normal(k) => self.n[k],
+        })
+    }
+}
+
+impl Kind for PlaneSweep {
+    type Out = Impact;
+    type Col = Col;
+
+    fn scalars(&self) -> &'static [&'static str] {
+        SCALARS
+    }
+
+    fn bodies(&self) -> usize {
+        2
+    }
+
+    fn check(&self, knob: Knob, n: &Number) -> Result<(), ValueProblem> {
+        let v = n.value();
+        match knob {
+            Knob::Mass(_) => drop(Mass::new(n.clone())?),
+            Knob::Position(_) | Knob::Size(_) => range(
+                false,
+                "bodies in the plane have no position or size here: vary b (with --radii), \
+                 normal_deg, v1x, v1y, v2x, v2y, v1, v2, m1, m2 or e",
+            )?,
+            Knob::Named("e") => drop(Restitution::new(n.clone())?),
+            Knob::Named("b" | "r1" | "r2") if !matches!(self.line, Line::Geometry { .. }) => {
+                range(false, "b, r1 and r2 need --radii and --impact-parameter")?
+            }
+            Knob::Named("r1" | "r2") => range(v > 0.0, "a radius must be > 0")?,
+            Knob::Named("normal_deg") if matches!(self.line, Line::Geometry { .. }) => range(
+                false,
+                "normal_deg sets the line of impact, which --radii and --impact-parameter give \
+                 here: vary b",
+            )?,
+            _ => {}
+        }
+        Ok(())
+    }
+
+    fn run(&self, point: &[(Knob, f64)]) -> Result<Impact, String> {
+        let mut s = *self;
+        for &(knob, x) in point {
+            match knob {
+                Knob::Mass(i) => s.m[i] = x,
+                Knob::Velocity(i) => {
+                    let w = s.v[i];
+                    let len = w[0].hypot(w[1]);
+                    s.v[i] = if len > 0.0 {
+                        [x * (w[0] / len), x * (w[1] / len)]
+                    } else {
+                        [x, 0.0]
+                    };
+                }
+                Knob::Named("e") => s.e = x,
+                Knob::Named("v1x") => s.v[0][0] = x,
+                Knob::Named("v1y") => s.v[0][1] = x,
+                Knob::Named("v2x") => s.v[1][0] = x,
+                Knob::Named("v2y") => s.v[1][1] = x,
+                Knob::Named("normal_deg") => s.line = Line::Normal(normal_at(x)),
+                Knob::Named(name @ ("b" | "r1" | "r2")) => {
+                    if let Line::Geometry { r, b } = &mut s.line {
+                        match name {
+                            "b" => *b = x,
+                            "r1" => r[0] = x,
+                            _ => r[1] = x,
+                        }
+                    }
+                }
+                other => return Err(format!("'{other:?}' is not a parameter in the plane")),
+            }
+        }
+        let n = s.normal(&s.v)?;
+        if n == [0.0, 0.0] {
+            return Err("the line of impact is the zero vector".into());
+        }
+        let d = [s.v[0][0] - s.v[1][0], s.v[0][1] - s.v[1][1]];
+        if cross_dot(n, d).1 <= 0.0 {
+            return Err("they do not approach along the line of impact".into());
+        }
+        let fin = impact::general(s.m, s.v, n, s.e);
+        if fin.iter().flatten().any(|x| !x.is_finite()) {
+            return Err("a final velocity is beyond binary64".into());
+        }
+        Ok(Impact {
+            v: s.v,
+            fin,
+            n,
+            m: s.m,
+            e: s.e,
+        })
+    }
+
+    fn column(&self, name: &str) -> Option<Col> {
+        COLUMNS.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
+    }
+
+    fn defaults(&self) -> Vec<String> {
+        [
+            "fin1x",
+            "fin1y",
+            "fin2x",
+            "fin2y",
+            "turned1_deg",
+            "turned2_deg",
+            "between_deg",
+            "lost",
+        ]
+        .map(String::from)
+        .to_vec()
+    }
+
+    fn column_forms(&self) -> String {
+        COLUMNS
+            .iter()
+            .map(|(n, _)| *n)
+            .filter(|n| !matches!(*n, "v1" | "v2"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn value(&self, col: Col, out: &Impact) -> Option<f64> {
+        out.value(col)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn equal_disks_head_on_and_at_the_edge() {
+        // Equal masses, elastic, target at rest: b = 0 is head-on (body 1 stops); the
+        // deflection of body 1 is asin(b / (R1 + R2)) measured from... its turn is 90 degrees
+        // less the angle of n: here b = 1, R1 + R2 = 2: n at 30 degrees off d, so body 1
+        // leaves at 90 degrees to n, turned 60 degrees, and v1' = cos 60 (cos -60... ) in size.
+        let s = PlaneSweep {
+            m: [1.0, 1.0],
+            v: [[1.0, 0.0], [0.0, 0.0]],
+            line: Line::Geometry {
+                r: [1.0, 1.0],
+                b: 0.0,
+            },
+            e: 1.0,
+        };
+        let head_on = s.run(&[]).unwrap();
+        assert_eq!(head_on.fin, [[0.0, 0.0], [1.0, 0.0]]);
+        let off = s.run(&[(Knob::Named("b"), 1.0)]).unwrap();
+        // n = (sqrt 3, 1): body 2 leaves along n at 30 degrees with speed cos 30; body 1 at
+        // -60 degrees with speed cos 60 = 1/2; they part at 90 degrees.
+        assert!((off.value(Col::Between).unwrap() - 90.0).abs() < 1e-12);
+        assert!((off.value(Col::Turned(0)).unwrap() - 60.0).abs() < 1e-12);
+        assert!((off.value(Col::Speed(0)).unwrap() - 0.5).abs() < 1e-15);
+        assert!((off.value(Col::Lost).unwrap()).abs() < 1e-16);
+        assert!(s.run(&[(Knob::Named("b"), 2.5)]).is_err());
+    }
+}
