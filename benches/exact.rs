@@ -43,7 +43,7 @@ fn main() {
             let start = Instant::now();
             let report =
                 AnyReport::of(&case, &Frame::Lab, true, &sections, false).expect("an exact report");
-            let text = report.text(&case, &sections);
+            let text = report.text(&case, &sections, None);
             let json = report.json().to_string();
             times.push(start.elapsed().as_secs_f64());
             bytes = text.len() + json.len();

@@ -441,6 +441,20 @@ pub struct Row {
     pub ns_median: f64,
     pub ns_min: f64,
     pub ns_max: f64,
+    /// The lower and upper quartiles of the timed passes, in ns: the spread a report shows (one
+    /// pass slowed by the machine moves the slowest, not these).
+    pub ns_q1: f64,
+    pub ns_q3: f64,
+}
+
+/// A method's time per solve over the timed passes, in ns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Timing {
+    pub median: f64,
+    pub min: f64,
+    pub max: f64,
+    pub q1: f64,
+    pub q3: f64,
 }
 
 /// Relative error from ulps of the scale: at most `ulps * 2^-52`.
@@ -453,7 +467,7 @@ fn rel(s: Spread) -> Spread {
 
 /// Times `method` over `cases`: passes over the whole family for about `budget_ms` (at least one
 /// pass, so a family slower than the budget takes one pass).
-pub fn time(method: Method, cases: &[Collision], budget_ms: u64) -> (f64, f64, f64) {
+pub fn time(method: Method, cases: &[Collision], budget_ms: u64) -> Timing {
     let mut per_pass = Vec::new();
     let start = Instant::now();
     while per_pass.is_empty() || (start.elapsed().as_millis() as u64) < budget_ms {
@@ -467,11 +481,15 @@ pub fn time(method: Method, cases: &[Collision], budget_ms: u64) -> (f64, f64, f
         }
     }
     per_pass.sort_by(f64::total_cmp);
-    (
-        per_pass[per_pass.len() / 2],
-        per_pass[0],
-        per_pass[per_pass.len() - 1],
-    )
+    // Quartiles by rank, as the median: passes that were measured, q1 <= median <= q3.
+    let n = per_pass.len();
+    Timing {
+        median: per_pass[n / 2],
+        min: per_pass[0],
+        max: per_pass[n - 1],
+        q1: per_pass[n / 4],
+        q3: per_pass[(3 * n / 4).min(n - 1)],
+    }
 }
 
 /// Cases per family timed by [`Cost::measure`].
@@ -536,7 +554,7 @@ pub fn report(families: &[Family], methods: &[Method], budget_ms: u64) -> Vec<Ro
             let fin = spread(errs.iter().map(|e| e.fin).collect());
             let crunch = spread(errs.iter().map(|e| e.crunch).collect());
             let lost = spread(errs.iter().map(|e| e.lost).collect());
-            let (ns_median, ns_min, ns_max) = time(m, &f.cases, budget_ms);
+            let t = time(m, &f.cases, budget_ms);
             rows.push(Row {
                 method: m,
                 family: f.name,
@@ -547,9 +565,11 @@ pub fn report(families: &[Family], methods: &[Method], budget_ms: u64) -> Vec<Ro
                 fin_rel: rel(fin),
                 crunch_rel: rel(crunch),
                 lost_rel: rel(lost),
-                ns_median,
-                ns_min,
-                ns_max,
+                ns_median: t.median,
+                ns_min: t.min,
+                ns_max: t.max,
+                ns_q1: t.q1,
+                ns_q3: t.q3,
             });
         }
     }

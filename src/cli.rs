@@ -33,6 +33,26 @@ and nothing is written to stdout
 file is removed first; another catchable signal N does the same and exits with 128+N (143 for \
 SIGTERM)";
 
+/// The lecture's words, for `collide --help` (the guide's introduction says the same,
+/// docs/README.md#words): `(word, meaning)`.
+pub const WORDS: [(&str, &str); 3] = [
+    (
+        "IN, COM, FIN",
+        "the velocities before the collision, of the centre of mass (both bodies at V_COM), and \
+         after it",
+    ),
+    (
+        "crunch",
+        "the kinetic energy of the motion relative to the centre of mass, KE_IN - KE_COM = 1/2 mu \
+         (V1 - V2)^2: the most a collision can take; e^2 crunch of it comes back",
+    ),
+    (
+        "ka-bong",
+        "an elastic collision (e = 1); ka-whump: partly inelastic (0 < e < 1); ka-runch: \
+         totally inelastic (e = 0, the bodies stick)",
+    ),
+];
+
 #[derive(Parser, Debug)]
 #[command(
     name = "collide",
@@ -49,6 +69,11 @@ pub struct Cli {
     /// reads back as the same binary64 [default: 15]; JSON and tables always carry full values
     #[arg(long, global = true, value_name = "N|full", value_parser = parse_sig)]
     pub sig: Option<u8>,
+
+    /// Text as wide as it comes, a row a line; without it text fits the terminal's width:
+    /// COLUMNS, else 80
+    #[arg(long, global = true)]
+    pub wide: bool,
 }
 
 /// `--sig`: 1..=17 digits, or `full` (0).
@@ -83,12 +108,14 @@ pub enum Command {
     Accuracy(AccuracyArgs),
     /// The same collision in the standard Galilean frames (lecture Figs. 2.5 and 3.4)
     #[command(
-        after_help = "Examples:\n  collide frames -m 6,1 -v 3,-4 --reverse\n  collide frames -m 4,1 -v 60,10 -e 2/3 --exact"
+        after_help = "Examples:\n  collide frames -m 6,1 -v 3,-4 --reverse\n  collide frames -m 4,1 -v 60,10 -e 2/3 --exact",
+        mut_args(on_a_rail)
     )]
     Frames(FramesArgs),
     /// A table of collisions over a grid of parameters (--vary), one row each
     #[command(
-        after_help = "Examples:\n  collide sweep -m 4,1 -v 60,10 --vary e=0:1:11 --columns e,fin1,fin2,ke_fin,lost\n  collide sweep -m 1,1 -v 1,0 --vary m2=1e-3:1e3:7:log --format jsonl -o sweep.jsonl"
+        after_help = "Examples:\n  collide sweep -m 4,1 -v 60,10 --vary e=0:1:11 --columns e,fin1,fin2,ke_fin,lost\n  collide sweep -m 1,1 -v 1,0 --vary m2=1e-3:1e3:7:log --format jsonl -o sweep.jsonl",
+        mut_args(on_a_rail)
     )]
     Sweep(SweepArgs),
     /// A table of collisions read from CSV or JSON Lines, one row each
@@ -98,12 +125,14 @@ pub enum Command {
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
     #[command(
+        override_usage = "collide track [OPTIONS] -m <M1,M2,...> -x <X1,X2,...> -v <V1,V2,...>",
         after_help = "Examples:\n  collide track -m 1,10000 -x 1,2 -v 0,-1 --left-wall 0\n  collide track -m 1 -x 1 -v 0 --left-wall 0 --gravity 2 -e 0.5 --format json"
     )]
     Track(TrackArgs),
     /// Collisions in time: contact forces (linear spring-dashpot, Hertz, Hunt-Crossley)
     /// integrated through each impact, with the error of each method against its run time
     #[command(
+        override_usage = "collide contact [OPTIONS] -m <M1,M2,...> -x <X1,X2,...> -v <V1,V2,...>",
         after_help = "Examples:\n  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2\n  collide contact -m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz\n  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --damping 0.4 --wall-stiffness 1e10 --wall-zeta 1 --work-precision --plot wpd.svg"
     )]
     Contact(ContactArgs),
@@ -113,7 +142,8 @@ pub enum Command {
     Pi(PiArgs),
     /// Draw the collision: the velocity-velocity diagram, or Newton's or Minkowski's space-time
     #[command(
-        after_help = "Examples:\n  collide plot -m 4,1 -v 60,10 -o case-a.svg\n  collide plot -m 4,1 -v 60,10 --kind minkowski -o world-lines.svg\n  collide plot -m 4,1 -v 60,10 --term"
+        after_help = "Examples:\n  collide plot -m 4,1 -v 60,10 -o case-a.svg\n  collide plot -m 4,1 -v 60,10 --kind minkowski -o world-lines.svg\n  collide plot -m 4,1 -v 60,10 --term",
+        mut_args(no_unknowns)
     )]
     Plot(PlotArgs),
     /// Print a shell completion script (bash, zsh, fish, powershell, elvish)
@@ -131,6 +161,37 @@ pub enum Command {
   collide man | man -l -
   collide man > ~/.local/share/man/man1/collide.1")]
     Man,
+}
+
+/// The case flags' help for the commands that take two bodies on a rail, given (frames, sweep,
+/// plot): no `?` unknowns, no vectors, no line of impact (those are for solve and scenes).
+fn on_a_rail(arg: clap::Arg) -> clap::Arg {
+    match arg.get_id().as_str() {
+        "masses" => arg.help("Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'"),
+        "velocities" => arg.help("Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'"),
+        "restitution" => arg.help(
+            "Coefficient of restitution e >= 0: 'elastic' (1), 'inelastic' (0), above 1 \
+             superelastic (energy released) [default: elastic]",
+        ),
+        "normal" | "radii" | "impact_parameter" => arg.hide(true),
+        _ => arg,
+    }
+}
+
+/// The case flags' help for `plot`, which draws a case given: no `?` unknowns.
+fn no_unknowns(arg: clap::Arg) -> clap::Arg {
+    match arg.get_id().as_str() {
+        "masses" => arg.help(
+            "Masses M1,M2 (each > 0), e.g. 4,1 or 1.5e3,2/3 or '4 ton,1 ton'; more than two \
+             bodies: M1,M2,M3,...",
+        ),
+        "velocities" => arg.help(
+            "Initial velocities V1,V2, e.g. 60,10 or 3,-4 or '72 km/h,0'; vectors in the plane: \
+             '(4,1),(-1,0.5)', '6 m/s @ 30deg,0'",
+        ),
+        "restitution" => on_a_rail(arg),
+        _ => arg,
+    }
 }
 
 #[derive(Args, Debug)]
@@ -275,9 +336,9 @@ pub struct TableArgs {
     #[arg(long)]
     pub skip_bad: bool,
 
-    /// Which shards carry the header line (CSV, text) [default: always when -o names a file, so
-    /// each shard file reads on its own; first on stdout, so shards concatenate to the whole
-    /// table]
+    /// Which shards carry the CSV header line [default: always when -o names a file, so each
+    /// shard file reads on its own; first on stdout, so shards concatenate to the whole table];
+    /// text names the columns atop every page of rows unless never
     #[arg(long, value_enum)]
     pub header: Option<Header>,
 }

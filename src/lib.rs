@@ -4,7 +4,7 @@
 //!
 //! The modules are layers; each imports only from the layers above it in this list:
 //!
-//! 1. values: `rational`, `number`, `units`, `quantity`, `compensated`, `output`;
+//! 1. values: `rational`, `number`, `units`, `quantity`, `compensated`, `output`, `terminal`;
 //! 2. two-body physics: `inertia`, `restitution`, `collision`, `ellipse`;
 //! 3. what the user asked: `case`, `problem`, `unknowns`, `frame`; the plane and space
 //!    (`space`) and rigid bodies at impact (`rigid`);
@@ -31,6 +31,7 @@ pub mod number;
 pub mod output;
 pub mod quantity;
 pub mod rational;
+pub mod terminal;
 pub mod units;
 
 // 2. two-body physics

@@ -2,22 +2,49 @@
 
 mod cli;
 mod commands;
+mod usage;
 
+use std::ffi::OsString;
 use std::io::Write;
 use std::process::ExitCode;
 
-use clap::Parser;
+use clap::{CommandFactory, FromArgMatches};
 use collide::output::diagnostic;
+use collide::terminal;
 
 fn main() -> ExitCode {
     // Signals remove partial output files; a file-size limit is an error, not a silent death.
     collide::output::guard_signals();
-    let cli = match cli::Cli::try_parse() {
+    let args: Vec<OsString> = std::env::args_os().collect();
+    // Text, --help and errors fit the terminal: COLUMNS, else 80; --wide lifts the limit. Read
+    // before parsing, so that --help and usage errors are laid out for it too.
+    let wide = args
+        .iter()
+        .skip(1)
+        .take_while(|a| *a != "--")
+        .any(|a| a == "--wide");
+    let width = terminal::width_for(wide, std::env::var("COLUMNS").ok().as_deref());
+    terminal::set_width(width);
+    let command = cli::Cli::command()
+        .term_width(if width == terminal::UNLIMITED {
+            0
+        } else {
+            width
+        })
+        .after_help(after_help(width));
+    let cli = match command
+        .clone()
+        .try_get_matches_from(&args)
+        .and_then(|m| cli::Cli::from_arg_matches(&m))
+    {
         Ok(cli) => cli,
         // Usage errors on stderr (cut to a sane length), --help and --version on stdout; a
         // closed stream is no reason to panic.
         Err(e) if e.use_stderr() => {
-            diagnostic(format_args!("{}", usage_error(&e).trim_end()));
+            diagnostic(format_args!(
+                "{}",
+                usage::explain(&e, &command, &args).trim_end()
+            ));
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -25,6 +52,9 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
     };
+    if cli.wide {
+        terminal::set_width(terminal::UNLIMITED);
+    }
     if let Some(digits) = cli.sig {
         collide::number::set_text_digits(digits);
     }
@@ -53,25 +83,23 @@ fn main() -> ExitCode {
     }
 }
 
-/// clap's message, but with control characters in a rejected value escaped (`'5\u{7},1'`):
-/// clap's rendering drops them, which quotes a value that was not typed.
-fn usage_error(e: &clap::Error) -> String {
-    use clap::error::{ContextKind, ContextValue, ErrorKind};
-    if e.kind() == ErrorKind::ValueValidation
-        && let (Some(ContextValue::String(arg)), Some(ContextValue::String(value))) = (
-            e.get(ContextKind::InvalidArg),
-            e.get(ContextKind::InvalidValue),
-        )
-        && value.chars().any(char::is_control)
-        && let Some(source) = std::error::Error::source(e)
-    {
-        return format!(
-            "error: invalid value '{}' for '{arg}': {source}\n\nFor more information, try \
-             '--help'.",
-            collide::number::printable(value)
-        );
+/// The end of `collide --help`: the lecture's words and the exit statuses, each wrapped to
+/// `width` under its meaning's first column.
+fn after_help(width: usize) -> String {
+    let hanging = |label: &str, column: usize, meaning: &str| {
+        let line = format!("  {label:<column$}{meaning}", column = column - 2);
+        terminal::wrap(&line, width, &" ".repeat(column))
+    };
+    let mut out = String::from("Words:\n");
+    for (word, meaning) in cli::WORDS {
+        out.push_str(&hanging(word, 16, meaning));
     }
-    e.render().to_string()
+    out.push_str("\nExit status:\n");
+    for line in cli::EXIT_STATUS.lines().skip(1) {
+        let (status, meaning) = line.trim_start().split_once(' ').unwrap_or((line, ""));
+        out.push_str(&hanging(status, 7, meaning.trim_start()));
+    }
+    out.trim_end().to_string()
 }
 
 /// Whether the error is a closed stdout, wherever it is in the chain.

@@ -419,11 +419,13 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
     out.commit().map_err(named)
 }
 
-/// Writes a diagnostic line to stderr, cut to [`MESSAGE_CHARS`] characters; a closed or full
-/// stderr is ignored, never a panic (`eprintln!` panics there).
+/// Writes a diagnostic to stderr, cut to [`MESSAGE_CHARS`] characters and wrapped to the
+/// terminal's width ([`crate::terminal::width`]; a wrapped line goes on indented by two spaces);
+/// a closed or full stderr is ignored, never a panic (`eprintln!` panics there).
 pub fn diagnostic(line: std::fmt::Arguments) {
     let line = line.to_string();
-    let _ = writeln!(io::stderr().lock(), "{}", cut(&line));
+    let text = crate::terminal::wrap(&cut(&line), crate::terminal::width(), "  ");
+    let _ = io::stderr().lock().write_all(text.as_bytes());
 }
 
 /// Longest diagnostic printed whole; a longer one keeps its start and end.

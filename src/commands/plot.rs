@@ -95,7 +95,10 @@ pub fn draw(case: &Case, frame: &Frame, kind: Kind, frames: bool, target: &Path)
         }
         return Ok(format!(
             "\n{}",
-            plot::term::render(&Picture::new(case, frame, frames), terminal_width())
+            plot::term::render(
+                &Picture::new(case, frame, frames),
+                collide::terminal::width()
+            )
         ));
     }
     write_file(target, plot::svg(case, frame, kind, frames).as_bytes())?;
@@ -123,12 +126,4 @@ fn check_drawable(case: &Case, frame: &Frame) -> Result<()> {
         );
     }
     Ok(())
-}
-
-/// The terminal's width: `COLUMNS`, else 80.
-fn terminal_width() -> usize {
-    std::env::var("COLUMNS")
-        .ok()
-        .and_then(|c| c.parse().ok())
-        .unwrap_or(80)
 }

@@ -151,10 +151,7 @@ fn solve(scene: Scene) -> Result<Checked> {
     sections.energy_scale = scene.case.units.energy_scale();
     let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.about.path.display()))?;
-    let mut text = result.text(&scene.case, &scene.show);
-    if let Some(s) = &scene.solved {
-        text = solved::text(s, scene.exact) + &text;
-    }
+    let mut text = result.text(&scene.case, &scene.show, scene.solved.as_ref());
     if let Some(p) = &scene.plot {
         plot::draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
         text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
@@ -185,7 +182,7 @@ fn solve_special(scene: SpecialScene) -> Result<Checked> {
     let head = scene
         .solved
         .as_ref()
-        .map(|s| solved::text(s, scene.exact))
+        .map(|s| solved::text(s, scene.exact, &event.units()))
         .unwrap_or_default();
     let mut json = result.json;
     solved::annotate(

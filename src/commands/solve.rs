@@ -32,6 +32,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     } else {
         args.show.clone()
     });
+    sections.asked = !args.show.is_empty();
     sections.contact_time = args.contact_time.clone();
     let units = posed.units().clone();
     sections.heights = Some(collide::units::HeightScale::new(
@@ -58,10 +59,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     }
     let report = AnyReport::of(case, &args.frame, args.exact, &sections, args.reverse)?;
     let mut stdout = match args.format {
-        Format::Text => {
-            let head = unknowns.as_ref().map(|s| solved::text(s, args.exact));
-            head.unwrap_or_default() + &report.text(case, &sections)
-        }
+        Format::Text => report.text(case, &sections, unknowns.as_ref()),
         Format::Json => {
             let mut json = report.json();
             solved::annotate(&mut json, &case.units, unknowns.as_ref(), args.exact);
@@ -111,7 +109,7 @@ fn special(
         });
     }
     let head = solved
-        .map(|s| solved::text(s, args.exact))
+        .map(|s| solved::text(s, args.exact, &units))
         .unwrap_or_default();
     let report = event.render(sections, sections, args.exact)?;
     let stdout = match args.format {
@@ -133,11 +131,7 @@ fn inconsistent_report(
     args: &SolveArgs,
 ) -> String {
     match args.format {
-        Format::Text => {
-            solved::text(s, args.exact)
-                + "The given values contradict each other, so no collision is printed: check \
-                   them, or mark one '?' to solve for it.\n"
-        }
+        Format::Text => solved::text(s, args.exact, units) + &solved::contradiction(),
         Format::Json => {
             let mut json = serde_json::json!({ "consistent": false });
             solved::annotate(&mut json, units, Some(s), args.exact);

@@ -100,7 +100,8 @@ impl Canvas {
     }
 }
 
-/// The diagram for a terminal `width` characters wide.
+/// The diagram for a terminal `width` characters wide (the canvas at most 110; the lines under
+/// it wrapped to `width`).
 pub fn render(p: &Picture, width: usize) -> String {
     let cols = width.clamp(30, 120) - 10;
     let rows = cols / 2;
@@ -133,29 +134,33 @@ pub fn render(p: &Picture, width: usize) -> String {
     if p.e > 0.0 {
         cv.mark(to(p.v_fin), 'F');
     }
-    let mut out = format!("Velocity plane (V1 across, V2 up), {}\n", p.title);
+    let fit = |text: String| crate::terminal::wrap(&text, width, "  ");
+    let mut out = fit(format!("Velocity plane (V1 across, V2 up), {}", p.title));
     out.push_str(&cv.render());
     let (k1, k2, c) = p.line;
-    out.push_str(&format!(
-        "I = IN ({}, {})   C = COM ({}, {})   F = FIN ({}, {})\n",
+    out.push_str(&fit(format!(
+        "I = IN ({}, {})   C = COM ({}, {})   F = FIN ({}, {})",
         num(p.v_in.0),
         num(p.v_in.1),
         num(p.v_com.0),
         num(p.v_com.1),
         num(p.v_fin.0),
         num(p.v_fin.1)
-    ));
-    out.push_str(&format!(
-        "momentum line {} V1 + {} V2 = {}; ellipses KE_IN = {}, KE_COM = {}; V1 from {} to {}, V2 from {} to {}\n",
+    )));
+    out.push_str(&fit(format!(
+        "momentum line {} V1 + {} V2 = {}; ellipses KE_IN = {}, KE_COM = {}",
         num(k1),
         num(k2),
         num(c),
         num(p.ellipse_in.ke),
         num(p.ellipse_com.ke),
+    )));
+    out.push_str(&fit(format!(
+        "V1 from {} to {}, V2 from {} to {}",
         num(map.x.0),
         num(map.x.1),
         num(map.y.0),
         num(map.y.1)
-    ));
+    )));
     out
 }

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::text::Block;
+use super::text::{Block, paragraph};
 use crate::accuracy::{Family, Row, Spread};
 
 /// The JSON document: the seed, the families and the rows. An infinite error (a non-zero result
@@ -43,20 +43,20 @@ pub fn json(seed: u64, families: &[Family], rows: &[Row]) -> serde_json::Value {
     })
 }
 
-/// The table for people, one group of rows per family.
+/// The table for people, one group of rows per family, each under a line saying what the
+/// family is.
 pub fn text(seed: u64, families: &[Family], rows: &[Row]) -> String {
-    let mut out = format!(
+    let mut out = paragraph(&format!(
         "Error against run time, seed {seed}: errors in ulps of each quantity's natural scale \
-         (FIN: max(|V1|, |V2|, |FIN1|, |FIN2|); crunch and lost: themselves), median / worst; \
-         time per solve, median (fastest-slowest pass).\n\
-         inf: no finite result (overflow), or a non-zero result where the exact value is 0.\n"
-    );
+         (FIN: max(|V1|, |V2|, |FIN1|, |FIN2|); crunch and lost: themselves), median / worst, \
+         inf when there is no finite result (overflow) or a non-zero one where the exact value \
+         is 0; time per solve in ns, median (lower-upper quartile of the timed passes)."
+    ));
+    out.push('\n');
     let u = |s: &Spread| format!("{} / {}", ulp_text(s.median), ulp_text(s.worst));
-    let mut table = Block::table(&[2, 3, 4, 5]);
+    let mut table = Block::table(&[1, 2, 3, 4]);
     table.cells([
-        "family".to_string(),
-        "method".into(),
-        "cases".into(),
+        "method".to_string(),
         "FIN ulps".into(),
         "crunch ulps".into(),
         "lost ulps".into(),
@@ -64,27 +64,45 @@ pub fn text(seed: u64, families: &[Family], rows: &[Row]) -> String {
     ]);
     let mut family = None;
     for r in rows {
-        // A blank line after the header and between families.
+        // A blank line and the family's line before its rows.
         if family != Some(r.family) {
             table.gap();
+            let about = families
+                .iter()
+                .find(|f| f.name == r.family)
+                .map(|f| f.about);
+            table.line(format!(
+                "{}, {} cases: {}",
+                r.family,
+                r.cases,
+                about.unwrap_or("")
+            ));
         }
         family = Some(r.family);
         table.cells([
-            r.family.to_string(),
             r.method.name().to_string(),
-            r.cases.to_string(),
             u(&r.fin_ulps),
             u(&r.crunch_ulps),
             u(&r.lost_ulps),
-            format!("{:.1} ({:.1}-{:.1})", r.ns_median, r.ns_min, r.ns_max),
+            format!(
+                "{} ({}-{})",
+                ns_text(r.ns_median),
+                ns_text(r.ns_q1),
+                ns_text(r.ns_q3)
+            ),
         ]);
     }
     table.render(&mut out);
-    out.push_str("\nFamilies:\n");
-    for f in families {
-        out.push_str(&format!("  {:<15} {}\n", f.name, f.about));
-    }
     out
+}
+
+/// A time in ns to 3 or 4 significant digits: `9.5`, `110`, `2558`.
+fn ns_text(ns: f64) -> String {
+    if ns < 100.0 {
+        format!("{ns:.1}")
+    } else {
+        format!("{ns:.0}")
+    }
 }
 
 /// An error in ulps for the table: `0`, `0.5`, `3`, `2.1e12`, or `inf`.

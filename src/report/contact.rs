@@ -3,9 +3,9 @@
 
 use std::fmt::Write;
 
-use super::text::Block;
+use super::text::{Block, duration, paragraph, wrap};
 use super::track::Unrepresentable;
-use crate::contact::work::Work;
+use crate::contact::work::{Row, Work};
 use crate::contact::{ContactRun, Damping, LawKind, Setup, Spec};
 use crate::number::num;
 
@@ -60,7 +60,7 @@ fn layout(setup: &Setup) -> String {
 /// A run for people.
 pub fn text(setup: &Setup, run: &ContactRun) -> String {
     let mut out = String::new();
-    let _ = writeln!(out, "{}", layout(setup));
+    out.push_str(&paragraph(&layout(setup)));
     let step = match (run.dt, run.tol) {
         (Some(dt), _) => format!("dt = {}", num(dt)),
         (_, Some(tol)) => format!("tol = {}", num(tol)),
@@ -71,12 +71,11 @@ pub fn text(setup: &Setup, run: &ContactRun) -> String {
     } else {
         "reached --until"
     };
-    let _ = writeln!(
-        out,
-        "method {} ({step}); {why} at t = {}",
+    out.push_str(&paragraph(&format!(
+        "method {} ({step}); at t = {}, {why}",
         run.method,
         num(run.time)
-    );
+    )));
     let mut bodies = Block::new("Bodies at the end");
     let impulse = run.impulse_model.as_ref();
     let mut head = vec!["body".to_string(), "x".into(), "v".into()];
@@ -98,21 +97,24 @@ pub fn text(setup: &Setup, run: &ContactRun) -> String {
         let walls = (setup.left_wall.is_some() || setup.right_wall.is_some())
             .then(|| format!("e = {} at walls", num(m.e_wall)));
         let es: Vec<String> = pairs.into_iter().chain(walls).collect();
-        let _ = writeln!(
-            out,
-            "  impulse model: collide track with {} ({} {})",
-            es.join(", "),
-            m.collisions,
-            if m.collisions == 1 {
-                "collision"
-            } else {
-                "collisions"
-            }
-        );
+        out.push_str(&wrap(
+            &format!(
+                "  impulse model: collide track with {} ({} {})",
+                es.join(", "),
+                m.collisions,
+                if m.collisions == 1 {
+                    "collision"
+                } else {
+                    "collisions"
+                }
+            ),
+            crate::terminal::width(),
+            "    ",
+        ));
     }
     let mut contacts = Block::new(format!("Contacts ({})", run.contacts.len()));
     contacts.cells([
-        "between".to_string(),
+        "pair".to_string(),
         "start".into(),
         "duration".into(),
         "max overlap".into(),
@@ -157,7 +159,7 @@ fn sci(x: f64) -> String {
 /// The work-precision table for people.
 pub fn work_text(setup: &Setup, work: &Work) -> String {
     let mut out = String::new();
-    let _ = writeln!(out, "{}", layout(setup));
+    out.push_str(&paragraph(&layout(setup)));
     let r = &work.reference;
     let reference = match r.kind {
         "exact" => {
@@ -171,12 +173,11 @@ pub fn work_text(setup: &Setup, work: &Work) -> String {
             r.uncertainty.map_or("?".into(), sci)
         ),
     };
-    let _ = writeln!(
-        out,
-        "error = largest final-velocity difference / largest initial relative speed, against {reference}; \
-         stiffness ratio {}",
+    out.push_str(&paragraph(&format!(
+        "error = largest final-velocity difference / largest initial relative speed, against \
+         {reference}; stiffness ratio {}",
         sci(work.stiffness_ratio)
-    );
+    )));
     let _ = writeln!(out);
     let mut table = Block::table(&[2, 3, 4, 5, 6]);
     table.cells([
@@ -188,32 +189,46 @@ pub fn work_text(setup: &Setup, work: &Work) -> String {
         "steps".into(),
         "rhs evals".into(),
     ]);
+    let step = |row: &Row| match (row.tol, row.dt) {
+        (Some(t), _) => format!("tol {}", sci(t)),
+        (_, Some(h)) => format!("dt {}", sci(h)),
+        _ => String::new(),
+    };
+    let mut rows = work.rows.iter().peekable();
     let mut last = "";
-    for row in &work.rows {
+    while let Some(row) = rows.next() {
         if !last.is_empty() && last != row.method {
             table.gap();
         }
         last = row.method;
-        let step = match (row.tol, row.dt) {
-            (Some(t), _) => format!("tol {}", sci(t)),
-            (_, Some(h)) => format!("dt {}", sci(h)),
-            _ => String::new(),
-        };
-        let (error, time) = if row.unstable {
-            ("unstable".to_string(), String::new())
-        } else {
-            (
-                row.error.map_or("-".into(), sci),
-                row.ns
-                    .map_or("-".into(), |ns| format!("{:.1} us", ns / 1e3)),
-            )
-        };
+        if row.unstable {
+            // The run of unstable rungs, one line: how many, from which step to which, and why
+            // the last (the nearest to stable) failed.
+            let mut end = row;
+            let mut count = 1;
+            while let Some(next) = rows.next_if(|r| r.unstable && r.method == row.method) {
+                end = next;
+                count += 1;
+            }
+            let range = match (count, end.tol, end.dt) {
+                (1, _, _) => format!("at {}", step(row)),
+                (_, Some(t), _) => format!("at {count} tolerances, {} to {}", step(row), sci(t)),
+                (_, _, Some(h)) => format!("at {count} steps, {} to {}", step(row), sci(h)),
+                _ => format!("at {count} rungs"),
+            };
+            let why = end.why.as_deref().unwrap_or("no reason given");
+            table.line(format!(
+                "{} ({}): unstable {range}: {why}",
+                row.method, row.kind
+            ));
+            continue;
+        }
         table.cells([
             row.method.to_string(),
             row.kind.to_string(),
-            step,
-            error,
-            time,
+            step(row),
+            row.error.map_or("-".into(), sci),
+            row.ns.map_or("-".into(), |ns| duration(ns * 1e-9)),
             row.steps.to_string(),
             row.rhs_evals.to_string(),
         ]);

@@ -7,7 +7,7 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::text::{Block, header, pair};
+use super::text::{Block, header, pair, paragraph, wrap};
 use crate::case::Case;
 use crate::frame::Frame;
 use crate::quantity::{Exact, Scalar};
@@ -194,12 +194,15 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
     let e = case.restitution();
     let mut out = String::new();
     out.push_str(&header(case));
-    let heading = "Frames (an observer moving at w sees every velocity shifted by -w)";
-    let mut b = Block::new(heading);
+    let mut velocities =
+        Block::new("Velocities (an observer moving at w sees every velocity shifted by -w)");
     let mut columns = vec!["frame", "w", "IN", "COM"];
     if !e.is_totally_inelastic() {
         columns.push("FIN");
     }
+    velocities.cell_vec(columns.into_iter().map(String::from).collect());
+    let mut energies = Block::new("Energies in each frame");
+    let mut columns = vec!["frame"];
     if e.is_elastic() {
         columns.extend(["KE_IN = KE_FIN", "KE_COM", "crunch"]);
     } else if e.is_totally_inelastic() {
@@ -211,13 +214,15 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
     if reversing {
         columns.push("reversed = original");
     }
-    b.cell_vec(columns.into_iter().map(String::from).collect());
+    energies.cell_vec(columns.into_iter().map(String::from).collect());
     for r in &t.frames {
         let en = &r.energy;
         let mut row = vec![r.label.clone(), r.w.show(), pair(&r.v_in), pair(&r.com)];
         if !e.is_totally_inelastic() {
             row.push(pair(&r.fin));
         }
+        velocities.cell_vec(row);
+        let mut row = vec![r.label.clone()];
         if e.is_elastic() || e.is_totally_inelastic() {
             // Elastic: KE_IN = KE_FIN; stuck: KE_FIN = KE_COM and lost = crunch.
             row.extend([en.ke_in.show(), en.com.show(), en.crunch.show()]);
@@ -233,9 +238,10 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
         if let Some(same) = r.reverse_equals_original {
             row.push(if same { "yes" } else { "no" }.into());
         }
-        b.cell_vec(row);
+        energies.cell_vec(row);
     }
-    b.render(&mut out);
+    velocities.render(&mut out);
+    energies.render(&mut out);
     let inv = &t.invariants;
     let mut lines = vec![
         format!("crunch = 1/2 mu (V1 - V2)^2 = {}", inv.crunch.show()),
@@ -251,12 +257,12 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
     if !e.is_elastic() {
         lines.insert(1, format!("energy lost = {}", inv.lost.show()));
     }
-    let _ = writeln!(
-        out,
-        "\nInvariants, computed in each frame from its own velocities and equal in all:"
-    );
+    out.push('\n');
+    out.push_str(&paragraph(
+        "Invariants, computed in each frame from its own velocities and equal in all:",
+    ));
     for l in lines {
-        let _ = writeln!(out, "  {l}");
+        out.push_str(&wrap(&format!("  {l}"), crate::terminal::width(), "    "));
     }
     if e.is_totally_inelastic() {
         let _ = writeln!(

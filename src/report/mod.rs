@@ -29,6 +29,7 @@ use crate::frame::Frame;
 use crate::quantity::{Exact, Scalar};
 use crate::solver::exact::ExactCollision;
 use crate::solver::{Lab, Solver};
+use crate::unknowns::Solved;
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
 #[derive(
@@ -110,6 +111,9 @@ pub struct Sections {
     pub heights: Option<crate::units::HeightScale>,
     /// The factor from the case's energy unit to the printed one (`--energy-unit`).
     pub energy_scale: Option<Q>,
+    /// The sections were asked for (`--show`), not the default: a pair that moves apart then
+    /// gets the FIN it would have if body 1 were on the right, not the note alone.
+    pub asked: bool,
 }
 
 impl Sections {
@@ -127,6 +131,7 @@ impl Sections {
             contact_time: None,
             heights: None,
             energy_scale: None,
+            asked: false,
         }
     }
     pub fn contains(&self, s: Section) -> bool {
@@ -730,11 +735,28 @@ impl AnyReport {
         .expect("reports serialize")
     }
 
-    /// Text of the sections in `show` (others were computed only for a scene's checks).
-    pub fn text(&self, case: &Case, show: &Sections) -> String {
-        match self {
-            AnyReport::Binary64(r) => text::render(case, &r.only(show)),
-            AnyReport::Exact(r) => text::render(case, &r.only(show)),
+    /// Text of the sections in `show` (others were computed only for a scene's checks), under
+    /// what the unknowns `solved` came out as and, for a case with units, the answer.
+    pub fn text(&self, case: &Case, show: &Sections, solved: Option<&Solved>) -> String {
+        let (head, body) = match self {
+            AnyReport::Binary64(r) => (
+                text::answer(case, r),
+                text::render(case, &r.only(show), show),
+            ),
+            AnyReport::Exact(r) => (
+                text::answer(case, r),
+                text::render(case, &r.only(show), show),
+            ),
+        };
+        let exact = matches!(self, AnyReport::Exact(_));
+        let mut out = solved.map_or_else(String::new, |s| solved::lines(s, exact, &case.units));
+        if show.contains(Section::Vectors) {
+            out.push_str(&head.unwrap_or_default());
+        }
+        if out.is_empty() {
+            body
+        } else {
+            out + "\n" + &body
         }
     }
 }

@@ -3,8 +3,7 @@
 use crate::rational::UBig;
 use serde_json::json;
 
-use super::text::Block;
-use crate::number::num;
+use super::text::{Block, duration};
 use crate::track::{Stop, TrackReport};
 
 /// The count for mass ratio 100^N, and the simulation when one ran.
@@ -63,7 +62,7 @@ impl Pi {
         b.row(
             "collisions",
             self.count.to_string(),
-            "ceil(pi/theta) - 1, theta = atan(10^-N), in correctly rounded arbitrary precision",
+            "the exact count ceil(pi/theta) - 1, theta = atan(10^-N)",
         );
         b.row("pi", self.as_pi(), "the count's digits");
         if let Some((r, seconds)) = &self.simulation {
@@ -72,10 +71,10 @@ impl Pi {
                 "simulated",
                 r.run.collisions.to_string(),
                 format!(
-                    "{}: {} s, {} ns a collision, energy drift {:.1e}",
+                    "{}, in {} ({} each); energy drift {:.1e}",
                     if agrees { "agrees" } else { "DISAGREES" },
-                    num((seconds * 1000.0).round() / 1000.0),
-                    num((seconds * 1e10 / r.run.collisions.max(1) as f64).round() / 10.0),
+                    duration(*seconds),
+                    duration(seconds / r.run.collisions.max(1) as f64),
                     (r.run.energy.end - r.run.energy.start) / r.run.energy.start
                 ),
             );

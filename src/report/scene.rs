@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use serde::Serialize;
 
+use super::text::wrap;
 use crate::expect::Check;
 
 /// A scene solved and checked.
@@ -64,8 +65,8 @@ pub fn json(scenes: &[Checked]) -> serde_json::Value {
             source: s.source.as_deref(),
             report: &s.json,
             checks: s.checks.len(),
-            failed: s
-                .failures()
+            failed: failures(s)
+                .into_iter()
                 .map(|c| FailedJson {
                     key: &c.key,
                     line: c.line,
@@ -82,29 +83,56 @@ pub fn json(scenes: &[Checked]) -> serde_json::Value {
     }
 }
 
+/// The failed checks of a scene, in the order of their lines in the file, each wrapped.
 fn failure_lines(s: &Checked, out: &mut String) {
-    for c in s.failures() {
-        out.push_str(&format!(
-            "  FAIL {}:{}: {}: expected {} ({}), got {}\n",
-            s.path.display(),
-            c.line,
-            c.key,
-            c.expected,
-            c.tolerance,
-            c.actual
+    for c in failures(s) {
+        out.push_str(&wrap(
+            &format!(
+                "  FAIL {}:{}: {}: expected {} ({}), got {}",
+                s.path.display(),
+                c.line,
+                c.key,
+                c.expected,
+                c.tolerance,
+                c.actual
+            ),
+            crate::terminal::width(),
+            "       ",
         ));
     }
+}
+
+/// The failed checks in the order of their lines.
+fn failures(s: &Checked) -> Vec<&Check> {
+    let mut failed: Vec<&Check> = s.failures().collect();
+    failed.sort_by_key(|c| c.line);
+    failed
+}
+
+/// `line`, then `title` beside it when both fit the terminal, else on the next line under
+/// column `under` (wrapped).
+fn with_title(line: String, title: &str, under: usize) -> String {
+    let width = crate::terminal::width();
+    let whole = format!("{line}  {title}");
+    if title.is_empty() || whole.chars().count() <= width {
+        return format!("{}\n", whole.trim_end());
+    }
+    let indent = " ".repeat(under);
+    format!(
+        "{line}\n{}",
+        wrap(&format!("{indent}{title}"), width, &indent)
+    )
 }
 
 /// One scene in full: title, report, checks.
 pub fn text(s: &Checked) -> String {
     let mut out = String::new();
     if let Some(t) = &s.title {
-        out.push_str(t);
-        if let Some(src) = &s.source {
-            out.push_str(&format!(" ({src})"));
-        }
-        out.push('\n');
+        let title = match &s.source {
+            Some(src) => format!("{t} ({src})"),
+            None => t.clone(),
+        };
+        out.push_str(&wrap(&title, crate::terminal::width(), "  "));
     }
     out.push_str(&s.text);
     if !s.checks.is_empty() {
@@ -131,22 +159,23 @@ pub fn summary(checked: &[Checked], listed: &[Listed]) -> String {
     for s in checked {
         let failed = s.failures().count();
         let verdict = if failed > 0 { "FAIL" } else { "ok  " };
-        out.push_str(&format!(
-            "{verdict}  {:<width$}  {:>3}/{:<3} checks  {}\n",
+        let line = format!(
+            "{verdict}  {:<width$}  {:>3}/{:<3} checks",
             s.path.display(),
             s.checks.len() - failed,
             s.checks.len(),
-            s.title.as_deref().unwrap_or("")
-        ));
+        );
+        out.push_str(&with_title(line, s.title.as_deref().unwrap_or(""), 6));
         failure_lines(s, &mut out);
     }
     for t in listed {
         let rows = format!("{} rows", t.rows);
-        out.push_str(&format!(
-            "table {:<width$}  {rows:>13}  {} (a [sweep] scene: run it alone to write it)\n",
-            t.path.display(),
+        let line = format!("table {:<width$}  {rows:>13}", t.path.display());
+        let title = format!(
+            "{} (a [sweep] scene: run it alone to write it)",
             t.title.as_deref().unwrap_or("")
-        ));
+        );
+        out.push_str(&with_title(line, title.trim_start(), 6));
     }
     let bad = checked.iter().filter(|s| s.failed()).count();
     out.push_str(&format!(

@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use super::text::{Block, changes, header_units, pair, typed};
+use super::text::{Block, changes, header_units, pair, parts, typed};
 use super::{ChangeReport, Section, Sections};
 use crate::quantity::Scalar;
 use crate::separation::Separation;
@@ -91,14 +91,15 @@ impl<N: Scalar> SeparationReport<N> {
 
     /// Text for people.
     pub fn text(&self, s: &Separation, sections: &Sections) -> String {
-        let mut out = format!(
-            "M = diag({}, {})   V_IN = ({}, {})   e undefined (separation: the bodies start \
-             together and are pushed apart)\n",
-            typed(&s.masses[0]),
-            typed(&s.masses[1]),
-            typed(&s.velocities[0]),
-            typed(&s.velocities[1])
-        );
+        let mut out = parts(&[
+            format!("M = diag({}, {})", typed(&s.masses[0]), typed(&s.masses[1])),
+            format!(
+                "V_IN = ({}, {})",
+                typed(&s.velocities[0]),
+                typed(&s.velocities[1])
+            ),
+            "e undefined (separation: the bodies start together and are pushed apart)".into(),
+        ]);
         out.push_str(&header_units(&s.units));
         if sections.contains(Section::Vectors) {
             let mut b = Block::new("Vectors (V1, V2)");

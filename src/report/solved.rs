@@ -4,13 +4,20 @@
 use crate::rational::Q;
 use serde_json::{Map, Value};
 
+use super::text::paragraph;
 use crate::number::num;
 use crate::quantity::{Exact, Scalar, fraction, to_f64};
 use crate::units::Units;
-use crate::unknowns::Solved;
+use crate::unknowns::{Solved, Var};
 
 /// `Solved: ...` and `Check: ...` lines, then a blank line.
-pub fn text(s: &Solved, exact: bool) -> String {
+pub fn text(s: &Solved, exact: bool, units: &Units) -> String {
+    lines(s, exact, units) + "\n"
+}
+
+/// `Solved: v1 = 60 mph, e = 1` (each value in its unit, when the case has units) and `Check:
+/// ...` lines.
+pub fn lines(s: &Solved, exact: bool, units: &Units) -> String {
     let show = |q: &Q| {
         if exact {
             Exact::Rational(q.clone()).show()
@@ -18,30 +25,37 @@ pub fn text(s: &Solved, exact: bool) -> String {
             num(to_f64(q).unwrap_or(f64::NAN))
         }
     };
+    let unit = |v: Var| {
+        let unit = match v {
+            Var::M1 | Var::M2 => units.mass,
+            Var::E => None,
+            _ => units.velocity,
+        };
+        unit.map(|u| format!(" {u}")).unwrap_or_default()
+    };
     let mut out = String::new();
     if !s.unknowns.is_empty() {
         let mut parts: Vec<String> = s
             .unknowns
             .iter()
             .filter(|v| s.has(**v))
-            .map(|v| format!("{v} = {}", show(s.get(*v))))
+            .map(|v| format!("{v} = {}{}", show(s.get(*v)), unit(*v)))
             .collect();
         if s.separation {
             parts.push("e undefined (the bodies start together)".into());
         }
-        out.push_str(&format!("Solved: {}\n", parts.join(", ")));
+        out.push_str(&paragraph(&format!("Solved: {}", parts.join(", "))));
     }
     for (law, residual) in &s.checks {
         if residual.is_zero() {
-            out.push_str(&format!("Check: {law} holds exactly\n"));
+            out.push_str(&paragraph(&format!("Check: {law} holds exactly")));
         } else {
-            out.push_str(&format!(
-                "Check: {law} does NOT hold: it misses by {}\n",
+            out.push_str(&paragraph(&format!(
+                "Check: {law} does NOT hold: it misses by {}",
                 show(residual)
-            ));
+            )));
         }
     }
-    out.push('\n');
     out
 }
 
@@ -89,4 +103,12 @@ pub fn annotate(json: &mut Value, units: &Units, solved: Option<&Solved>, exact:
     if !checks.is_empty() {
         o.insert("check".into(), Value::Object(checks));
     }
+}
+
+/// What `solve` and scenes print, after the checks, for given values that contradict a law.
+pub fn contradiction() -> String {
+    paragraph(
+        "The given values contradict each other, so no collision is printed: check them, or mark \
+         one '?' to solve for it.",
+    )
 }

@@ -1,8 +1,6 @@
 //! `collide track`'s result for people: the stop, the counts, the bodies, the bookkeeping.
 
-use std::fmt::Write;
-
-use super::text::Block;
+use super::text::{Block, paragraph};
 use crate::number::num;
 use crate::track::{Limits, Stop, Track, TrackReport};
 
@@ -45,12 +43,11 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
     } else {
         String::new()
     };
-    let _ = writeln!(
-        out,
+    out.push_str(&paragraph(&format!(
         "{n} {}, {walls}{gravity}; e = {} between bodies{at_walls}",
         if n == 1 { "body" } else { "bodies" },
         num(t.e),
-    );
+    )));
     let why = match &run.stop {
         Stop::Done => match limits.until {
             Some(u) => format!(
@@ -83,7 +80,7 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
             num(*at)
         ),
     };
-    let _ = writeln!(out, "Stopped: {why}");
+    out.push_str(&paragraph(&format!("Stopped: {why}")));
     let mut b = Block::new(format!(
         "After {} collision{} at t = {}",
         run.collisions,
@@ -114,11 +111,9 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
         b.row(
             "pi billiards",
             pi.theory.clone(),
-            format!(
-                "ceil(pi/theta) - 1 with theta = atan(sqrt(m1/m2)) = {}: {verdict}",
-                num(pi.theta)
-            ),
+            format!("{verdict}: ceil(pi/theta) - 1"),
         );
+        b.row("theta", num(pi.theta), "atan(sqrt(m1/m2))");
     }
     b.render(&mut out);
     let mut bodies = Block::new("Bodies");
@@ -140,7 +135,7 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
         (false, true) => "gravity changes it",
         (false, false) => "conserved",
     };
-    book.cells([
+    book.cells_noted(vec![
         "momentum".to_string(),
         num(run.momentum.start),
         num(run.momentum.end),
@@ -152,7 +147,7 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
     } else {
         format!("relative change {rel:.1e} (lost to heat)")
     };
-    book.cells([
+    book.cells_noted(vec![
         "energy".to_string(),
         num(run.energy.start),
         num(run.energy.end),

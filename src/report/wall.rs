@@ -7,7 +7,7 @@
 use crate::rational::Q;
 use serde::Serialize;
 
-use super::text::{Block, header_units, pair, typed};
+use super::text::{Block, header_units, pair, paragraph, parts, typed};
 use super::{Section, Sections};
 use crate::quantity::Scalar;
 use crate::wall::WallCase;
@@ -127,21 +127,25 @@ impl<N: Scalar> WallReport<N> {
         let shown = |x| sections.contains(x);
         let mut m = [typed(&c.mass), typed(&c.mass)];
         m[c.wall] = "wall".into();
-        let mut out = format!(
-            "M = ({}, {})   V_IN = ({}, {})   e = {} ({})\n",
-            m[0],
-            m[1],
-            typed(&c.velocities[0]),
-            typed(&c.velocities[1]),
-            typed(c.restitution.number()),
-            c.restitution.kind()
-        );
+        let mut out = parts(&[
+            format!("M = ({}, {})", m[0], m[1]),
+            format!(
+                "V_IN = ({}, {})",
+                typed(&c.velocities[0]),
+                typed(&c.velocities[1])
+            ),
+            format!(
+                "e = {} ({})",
+                typed(c.restitution.number()),
+                c.restitution.kind()
+            ),
+        ]);
         out.push_str(&header_units(&c.units));
-        out.push_str(&format!(
+        out.push_str(&paragraph(&format!(
             "Body {} is a wall: immovable (infinite mass), so only the ball's momentum and \
-             energy are shown\n",
+             energy are shown",
             c.wall + 1
-        ));
+        )));
         if !self.approaching {
             out.push_str(&approach_note(c.wall));
         }
@@ -232,8 +236,8 @@ impl<N: Scalar> WallReport<N> {
 /// A note when the ball moves away from the wall at IN (no collision happens).
 pub fn approach_note(wall: usize) -> String {
     let side = if wall == 0 { "left" } else { "right" };
-    format!(
+    paragraph(&format!(
         "Note: the ball moves away from the wall (on the {side}), so they do not meet: \
-         check the signs of the velocities\n"
-    )
+         check the signs of the velocities"
+    ))
 }

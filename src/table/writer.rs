@@ -1,8 +1,6 @@
 //! Rows written as CSV (the csv crate), JSON Lines or aligned text, numbers shortest round-trip
 //! (ryu) with no allocation per field.
 
-use std::io::Write;
-
 use super::columns::Column;
 
 /// How rows are written (`--format`, `format` in a scene's `[sweep]`).
@@ -52,9 +50,6 @@ impl RowFormat {
     }
 }
 
-/// Width of a text column: the longest shortest-round-trip binary64 ("-1.2345678901234567e-308").
-const TEXT_WIDTH: usize = 24;
-
 /// Writes rows of numbers in one format.
 pub struct RowWriter {
     columns: Vec<&'static Column>,
@@ -94,14 +89,8 @@ impl RowWriter {
                 let _ = w.write_record(self.columns.iter().map(|c| c.name));
                 let _ = w.flush();
             }
-            RowFormat::Text => {
-                for (i, c) in self.columns.iter().enumerate() {
-                    let sep = if i == 0 { "" } else { " " };
-                    let _ = write!(out, "{sep}{:>TEXT_WIDTH$}", c.name);
-                }
-                out.push(b'\n');
-            }
-            RowFormat::Jsonl => {}
+            // Text: each page of rows carries the names, aligned with its values.
+            RowFormat::Text | RowFormat::Jsonl => {}
         }
     }
 
@@ -111,7 +100,14 @@ impl RowWriter {
         let per_row = match self.format {
             RowFormat::Csv => 20 * self.columns.len(),
             RowFormat::Jsonl => 32 * self.columns.len(),
-            RowFormat::Text => (TEXT_WIDTH + 1) * self.columns.len(),
+            RowFormat::Text => {
+                return RowBuf::Text(TextPage {
+                    names: self.columns.iter().map(|c| c.name).collect(),
+                    named: self.header != Header::Never,
+                    fields: Vec::with_capacity(rows.min(1 << 16) * 12 * self.columns.len()),
+                    ends: Vec::with_capacity(rows.min(1 << 16) * self.columns.len()),
+                });
+            }
         };
         RowBuf::Raw(Vec::with_capacity(rows.min(1 << 16) * per_row))
     }
@@ -135,7 +131,8 @@ impl RowWriter {
                 }
                 out.push(b'\n');
             }
-            RowBuf::Raw(out) if self.format == RowFormat::Jsonl => {
+            // JSON Lines (a text table has its page).
+            RowBuf::Raw(out) => {
                 out.push(b'{');
                 for (i, (c, v)) in self.columns.iter().zip(values).enumerate() {
                     if i > 0 {
@@ -148,16 +145,73 @@ impl RowWriter {
                 }
                 out.extend_from_slice(b"}\n");
             }
-            RowBuf::Raw(out) => {
+            RowBuf::Text(page) => {
                 for (i, v) in values.iter().enumerate() {
-                    let s = fields.format(i, *v);
-                    let pad = TEXT_WIDTH.saturating_sub(s.len()) + usize::from(i > 0);
-                    out.extend(std::iter::repeat_n(b' ', pad));
-                    out.extend_from_slice(s);
+                    page.fields.extend_from_slice(fields.format(i, *v));
+                    page.ends.push(page.fields.len());
+                }
+            }
+        }
+    }
+}
+
+/// A page of a text table (the rows of one chunk): the fields as they come, aligned when the
+/// page is done, each column as wide as its widest value (or name), right-aligned; a page wider
+/// than the terminal ([`crate::terminal::width`]) is folded into groups of columns, each
+/// repeating the first. Every page starts with the names (unless `--header never`): a text
+/// table is for people, who read pages, not shards.
+pub struct TextPage {
+    names: Vec<&'static str>,
+    named: bool,
+    fields: Vec<u8>,
+    /// Where each field ends in `fields`, row after row.
+    ends: Vec<usize>,
+}
+
+impl TextPage {
+    fn into_bytes(self) -> Vec<u8> {
+        let columns = self.names.len().max(1);
+        let field = |k: usize| {
+            let start = if k == 0 { 0 } else { self.ends[k - 1] };
+            &self.fields[start..self.ends[k]]
+        };
+        let rows = self.ends.len() / columns;
+        if rows == 0 {
+            return Vec::new();
+        }
+        let mut widths: Vec<usize> = self
+            .names
+            .iter()
+            .map(|n| if self.named { n.len() } else { 0 })
+            .collect();
+        for k in 0..self.ends.len() {
+            widths[k % columns] = widths[k % columns].max(field(k).len());
+        }
+        let groups = crate::terminal::fold(&widths, 1, 2, crate::terminal::width());
+        let mut out = Vec::with_capacity(self.fields.len() + self.ends.len() * 4);
+        let cell = |out: &mut Vec<u8>, c: usize, text: &[u8], first: bool| {
+            let pad = widths[c] - text.len() + if first { 0 } else { 2 };
+            out.extend(std::iter::repeat_n(b' ', pad));
+            out.extend_from_slice(text);
+        };
+        for (g, group) in groups.iter().enumerate() {
+            if g > 0 {
+                out.push(b'\n');
+            }
+            if self.named {
+                for (j, &c) in group.iter().enumerate() {
+                    cell(&mut out, c, self.names[c].as_bytes(), j == 0);
+                }
+                out.push(b'\n');
+            }
+            for r in 0..rows {
+                for (j, &c) in group.iter().enumerate() {
+                    cell(&mut out, c, field(r * columns + c), j == 0);
                 }
                 out.push(b'\n');
             }
         }
+        out
     }
 }
 
@@ -197,15 +251,17 @@ impl FieldCache {
     }
 }
 
-/// A chunk's bytes as they are written.
+/// A chunk's bytes as they are written (CSV, JSON Lines), or its text page.
 pub enum RowBuf {
     Raw(Vec<u8>),
+    Text(TextPage),
 }
 
 impl RowBuf {
     pub fn into_bytes(self) -> Vec<u8> {
         match self {
             RowBuf::Raw(v) => v,
+            RowBuf::Text(page) => page.into_bytes(),
         }
     }
 }
@@ -231,9 +287,19 @@ mod tests {
         let mut buf = w.buffer(2);
         w.row(&[0.3, 7250.0], &mut buf, &mut FieldCache::new(2));
         assert_eq!(buf.into_bytes(), b"{\"e\":0.3,\"ke_in\":7250.0}\n");
-        let w = RowWriter::new(by_names(&["e"]).unwrap(), RowFormat::Text);
+        // Text: columns as wide as their widest value or name, right-aligned, names first.
+        let w = RowWriter::new(by_names(&["e", "ke_in"]).unwrap(), RowFormat::Text);
         let mut buf = w.buffer(2);
-        w.row(&[0.5], &mut buf, &mut FieldCache::new(1));
-        assert_eq!(buf.into_bytes(), format!("{:>24}\n", "0.5").as_bytes());
+        let mut f = FieldCache::new(2);
+        w.row(&[0.5, 7250.0], &mut buf, &mut f);
+        w.row(&[0.25, 1e300], &mut buf, &mut f);
+        assert_eq!(
+            String::from_utf8(buf.into_bytes()).unwrap(),
+            "   e   ke_in\n 0.5  7250.0\n0.25   1e300\n"
+        );
+        let w = w.with_header(Header::Never);
+        let mut buf = w.buffer(1);
+        w.row(&[0.5, 1.0], &mut buf, &mut FieldCache::new(2));
+        assert_eq!(buf.into_bytes(), b"0.5  1.0\n");
     }
 }

@@ -32,8 +32,21 @@ pub fn run(args: &[&str]) -> (i32, String, String) {
     )
 }
 
+/// The binary, with text as wide as it comes (`COLUMNS` very large): these tests read what is
+/// printed, not how it is laid out, and a message wrapped to 80 columns splits the phrases they
+/// look for. Layout is tested at the default width by `width.rs` and the guide's examples
+/// (`readme.rs`), which use [`collide_at_default_width`].
 pub fn collide() -> Command {
-    Command::cargo_bin("collide").expect("the collide binary is built")
+    let mut c = collide_at_default_width();
+    c.env("COLUMNS", "100000");
+    c
+}
+
+/// The binary as a user runs it: `COLUMNS` unset, so text fits 80 columns.
+pub fn collide_at_default_width() -> Command {
+    let mut c = Command::cargo_bin("collide").expect("the collide binary is built");
+    c.env_remove("COLUMNS");
+    c
 }
 
 /// proptest configuration: `cases` cases from a fixed seed, so CI is reproducible; set

@@ -893,6 +893,7 @@ fn a_scene_is_read_once_from_a_fifo_a_pipe_or_standard_input() {
     for name in ["/dev/stdin", "-"] {
         let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"))
             .args(["scene", name])
+            .env("COLUMNS", "100000")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
@@ -910,7 +911,7 @@ fn a_scene_is_read_once_from_a_fifo_a_pipe_or_standard_input() {
         let out = std::process::Command::new("/bin/bash")
             .arg("-c")
             .arg(format!(
-                "'{}' scene <(cat scenarios/fig-1-3-elastic.toml)",
+                "COLUMNS=100000 '{}' scene <(cat scenarios/fig-1-3-elastic.toml)",
                 bin.display()
             ))
             .output()

@@ -24,3 +24,4 @@ mod rigid_symmetry;
 mod shell;
 mod tables;
 mod track;
+mod width;

@@ -13,7 +13,7 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use crate::common::collide;
+use crate::common::collide_at_default_width as collide;
 
 /// The documents whose examples are run: the README and every page of the guide, sorted.
 pub fn documents() -> Vec<PathBuf> {

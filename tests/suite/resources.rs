@@ -52,8 +52,10 @@ fn drain(mut r: impl Read + Send + 'static) -> std::thread::JoinHandle<String> {
 /// The child is reaped by `wait4` (which gives its own rusage), not by `Child::wait`.
 #[allow(clippy::zombie_processes)]
 pub fn watched(args: &[&str], stdin: Stdio, deadline: Duration) -> Finished {
+    // As wide as `common::collide`: messages are read whole, not laid out.
     let mut child = Command::new(assert_cmd::cargo::cargo_bin("collide"))
         .args(args)
+        .env("COLUMNS", "100000")
         .stdin(stdin)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

@@ -1,0 +1,161 @@
+//! Text fits a terminal (issue 28, section 3): every line a representative command of each
+//! subcommand prints, on stdout and stderr, errors and `--help` included, is at most 80 columns
+//! with `COLUMNS` unset; a wider `COLUMNS` or `--wide` lets lines grow; and fitting only moves
+//! words between lines, never cuts or changes one (the words printed at 80 columns are the words
+//! printed with `--wide`).
+
+use std::collections::BTreeSet;
+
+use crate::common::collide_at_default_width;
+
+/// One command per subcommand (and per kind of text each prints), none of them slow; quoted as
+/// in a shell (`readme::CommandLine`).
+const COMMANDS: &[&str] = &[
+    "collide solve -m 6,1 -v 3,-4 -e 2/3",
+    "collide solve -m 6,1 -v 3,-4 -e 2/3 --show all,heights --contact-time 2ms --reverse",
+    "collide solve --inertia '4,0.5;0.5,1' -v 3,-4 --show all --frame com",
+    "collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show all",
+    "collide solve -m 4,1 -v 10,60",
+    "collide solve -m 4,1 -v 10,60 --show vectors,forms",
+    "collide solve -m '80.0 kg,?' -v 0,0 --fin '-0.500 m/s,10.0 m/s' --show all",
+    "collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show all,heights",
+    "collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'",
+    "collide solve -m 4,1 -v 60,10 --plot term",
+    "collide frames -m 6,1 -v 3,-4 --reverse",
+    "collide frames -m 4,1 -v 60,10 -e 2/3 --reverse",
+    "collide scene scenarios/fig-1-3-elastic.toml",
+    "collide scene scenarios/fig-1-3-elastic.toml scenarios/fig-2-3-ka-whump-exact.toml",
+    "collide track -m 1,10000 -x 1,2 -v 0,-1 --left-wall 0",
+    "collide track -m 1,2,3 -x 1,2,3 -v 1,0,-1 --left-wall 0 --right-wall 4 --max-collisions 10",
+    "collide pi 3",
+    "collide pi 20",
+    "collide contact -m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz",
+    BACKSTOP,
+    "collide accuracy --cases 2 --budget-ms 1",
+    "collide sweep -m 4,1 -v 60,10 --vary e=0:1:3 --format text",
+    "collide batch scenarios/cases.csv --format text --skip-bad",
+    "collide plot -m 4,1 -v 60,10 --term",
+    // Errors: usage errors, bad values, long messages.
+    "collide solve -m -v 60,10",
+    "collide solve -m 4 1 -v 60,10",
+    "collide solve -m 4,abc -v 1,2",
+    "collide solve -m 1,1 -v 1e200,-1e200 --show energy",
+    "collide solve -m 6,1 -v 3,-4 -e 0 --reverse",
+    "collide batch scenarios/cases.csv --columns m1,m2,fin1,fin2",
+    "collide track -m 1,1 -x 1 2 -v 0,0",
+    // Help.
+    "collide --help",
+    "collide solve --help",
+    "collide sweep --help",
+    "collide track --help",
+    "collide contact --help",
+];
+
+/// Two bodies against a stiff wall (two contacts, a wide table).
+const BACKSTOP: &str = "collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 \
+                        --damping 0.4 --wall-stiffness 1e6 --wall-zeta 1";
+
+/// `collide ARGS...` as its arguments.
+fn args(line: &str) -> Vec<String> {
+    crate::readme::CommandLine::parse(line, std::path::Path::new("."))
+        .expect("a collide command")
+        .args
+}
+
+/// stdout and stderr of `args` with `COLUMNS` as given (`None`: unset).
+fn run(args: &[String], columns: Option<&str>) -> (String, String) {
+    let mut c = collide_at_default_width();
+    if let Some(w) = columns {
+        c.env("COLUMNS", w);
+    }
+    let out = c.args(args).output().unwrap();
+    (
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// The widest line of `text`, in characters, and the line.
+fn widest(text: &str) -> (usize, &str) {
+    text.lines()
+        .map(|l| (l.chars().count(), l))
+        .max()
+        .unwrap_or((0, ""))
+}
+
+#[track_caller]
+fn assert_fits(line: &str, columns: Option<&str>, limit: usize) {
+    let (out, err) = run(&args(line), columns);
+    for (stream, text) in [("stdout", &out), ("stderr", &err)] {
+        let (w, widest) = widest(text);
+        assert!(
+            w <= limit,
+            "{line}: a {stream} line of {w} > {limit} columns:\n{widest}\n\n{text}",
+        );
+    }
+}
+
+#[test]
+fn every_subcommand_fits_80_columns_by_default() {
+    // --work-precision here only: its times vary from run to run.
+    let work = format!("{BACKSTOP} --work-precision --methods verlet,rk4,tsit45");
+    for line in COMMANDS.iter().copied().chain([work.as_str()]) {
+        assert_fits(line, None, 80);
+    }
+}
+
+#[test]
+fn a_wider_terminal_or_wide_lets_lines_grow_and_a_narrower_one_is_honoured() {
+    let case = "collide solve -m 6,1 -v 3,-4 -e 2/3";
+    let width = |line: &str, columns| widest(&run(&args(line), columns).0).0;
+    let default = width(case, None);
+    let wide = width(&format!("{case} --wide"), None);
+    // The forms row "V_FIN.M.V_IN = V_IN.M.V_FIN  2.66...e-15  M is symmetric" is 100 wide; the
+    // crunch row with its note 121.
+    assert!(default <= 80, "{default}");
+    let at_120 = width(case, Some("120"));
+    assert!(at_120 > 80 && at_120 <= 120, "{at_120}");
+    assert!(wide > 120, "{wide}");
+    // --wide wins over COLUMNS; a COLUMNS that is not a number is ignored.
+    assert_eq!(width(&format!("{case} --wide"), Some("60")), wide);
+    assert_eq!(width(case, Some("wide")), default);
+    // 60 columns are kept where the numbers allow: these reports' longest words are 20.
+    assert_fits(case, Some("60"), 60);
+    assert_fits("collide frames -m 6,1 -v 3,-4 --reverse", Some("60"), 60);
+    // Help and errors follow COLUMNS as well.
+    assert!(width("collide solve --help", Some("120")) > 80);
+    assert_fits("collide solve --help", Some("60"), 60);
+    let error = args("collide solve -m 1,1 -v 1e200,-1e200 --show energy");
+    assert!(widest(&run(&error, Some("200")).1).0 > 80);
+}
+
+/// The words of `text` (runs of non-blanks).
+fn words(text: &str) -> BTreeSet<&str> {
+    text.split_whitespace().collect()
+}
+
+#[test]
+fn fitting_moves_words_between_lines_and_never_cuts_or_changes_one() {
+    // Not the timed reports (accuracy, pi's simulation), whose times vary, nor help, whose
+    // wrapping of `[default: ...]` is clap's, nor the braille plot, whose canvas is as wide as
+    // the terminal allows.
+    let timed = ["accuracy", "pi", "--help", "term"];
+    for line in COMMANDS
+        .iter()
+        .filter(|l| !timed.iter().any(|t| l.contains(t)))
+    {
+        let (out, err) = run(&args(line), None);
+        let (wide_out, wide_err) = run(&args(&format!("{line} --wide")), None);
+        // A folded table repeats its first column: compare the sets of words.
+        assert_eq!(
+            words(&out),
+            words(&wide_out),
+            "{line}: stdout\n{out}\n--wide:\n{wide_out}"
+        );
+        assert_eq!(
+            words(&err),
+            words(&wide_err),
+            "{line}: stderr\n{err}\n--wide:\n{wide_err}"
+        );
+    }
+}
