@@ -630,9 +630,14 @@ fn text_fits_80_columns_and_has_every_section() {
             "all",
         ],
     ] {
-        let mut a = vec!["solve"];
-        a.extend(args.iter());
-        let out = common::stdout(&a);
+        // As a user runs it: COLUMNS unset (the other tests' text is as wide as it comes).
+        let run = common::collide_at_default_width()
+            .arg("solve")
+            .args(&args)
+            .output()
+            .unwrap();
+        assert!(run.status.success(), "{args:?}");
+        let out = String::from_utf8(run.stdout).unwrap();
         for line in out.lines() {
             assert!(line.chars().count() <= 80, "{args:?}: {line}");
         }
