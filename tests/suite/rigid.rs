@@ -688,6 +688,10 @@ fn the_picture_draws_bodies_contact_and_the_impulse_plane() {
     ] {
         assert!(ids.contains(&id), "{id} missing: {ids:?}");
     }
+    // The slip 1 + 0.3 * 2 = 1.6 stops after a tangential impulse of 1.6 / (7/2) = 0.457, within
+    // mu P_n = 0.6: the subtitle names the contact as the text report does.
+    let texts: String = doc.descendants().filter_map(|n| n.text()).collect();
+    assert!(texts.contains("law poisson; contact: stick"), "{texts}");
     // The impulse path ends at the reported impulse: (P_n, P_t) = (2, 2/7 (1.6)...) read from
     // JSON, drawn inside the panel.
     let path = doc
