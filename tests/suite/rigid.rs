@@ -562,6 +562,15 @@ fn bad_input_is_named() {
         assert!(err.contains(says), "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{err}");
     }
+    // collide plot's line pictures are refused for a rigid impact, in one sentence.
+    let (code, out, err) = run(&[
+        "plot", "-m", "1,4", "-v", "3,0", "--target", "rod 2", "--hit-at", "end", "--term",
+    ]);
+    assert_eq!((code, out.as_str()), (2, ""), "{err}");
+    assert!(
+        err.contains("a rigid impact is drawn as its bodies and its impulse plane"),
+        "{err}"
+    );
     // A scene: unknown keys with file and line.
     let path = common_dir().join("bad.toml");
     std::fs::write(&path, "[[body]]\nmass = 1\nspeed = 3\n[[body]]\nmass = \"wall\"\n[contact]\npoint = [0, 0]\nnormal = [1, 0]\n").unwrap();
