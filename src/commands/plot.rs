@@ -71,7 +71,8 @@ fn plane(args: &PlotArgs) -> Result<Outcome> {
 fn rigid(args: &PlotArgs) -> Result<Outcome> {
     if args.kind.is_some() || args.frames || args.term || args.frame != Frame::Lab {
         anyhow::bail!(
-            "--kind, --frames, --frame and --term draw two bodies on a line; a rigid impact is              drawn as its bodies and its impulse plane (collide plot ... -o FILE.svg)"
+            "--kind, --frames, --frame and --term draw two bodies on a line; a rigid impact is \
+             drawn as its bodies and its impulse plane (collide plot ... -o FILE.svg)"
         );
     }
     let svg = super::rigid_solve::svg(&args.case, &args.rigid)?;

@@ -155,7 +155,10 @@ pub fn report_of(
                  relative velocity of the contact points), so they do not collide (no FIN)."
             );
             return Ok(match format {
-                Format::Text => (collide::report::text::wrap(&note, 80, "  "), 0),
+                Format::Text => (
+                    collide::report::text::wrap(&note, collide::terminal::width(), "  "),
+                    0,
+                ),
                 Format::Json => (
                     json::render(&serde_json::json!({ "approaching": false, "note": note })),
                     0,

@@ -86,14 +86,14 @@ pub fn svg(o: &Outcome) -> String {
     let p = &o.problem;
     let sub = match &p.tangential {
         Tangential::Coulomb(mu) => format!(
-            "e = {}, mu = {}, law {}: the contact {}",
+            "e = {}, mu = {}, law {}; contact: {}",
             short(x(&p.e)),
             short(x(mu)),
             p.law.name(),
             o.impact.mode.name()
         ),
         Tangential::Rough { beta, .. } => format!(
-            "e = {}, rough (beta = {}): the contact {}",
+            "e = {}, rough (beta = {}); contact: {}",
             short(x(&p.e)),
             short(x(beta)),
             o.impact.mode.name()

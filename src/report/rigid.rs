@@ -3,7 +3,7 @@
 //! FIN, crunch with the effective masses), velocities and spins before and after, momentum and
 //! angular momentum about a stated point, the explicit inertia tensor with the Jacobian rows and
 //! the collision matrix, energies split into translation and rotation, and the ODE's error
-//! estimate and run time in space; as text (80 columns) and as JSON.
+//! estimate and run time in space; as text (fitting the terminal: `crate::terminal`) and as JSON.
 //!
 //! Values are exact and rounded once here (`--exact`: fractions, `≈` for 40-digit values).
 //! Energy created is never printed as physics: the report says why it is not (Kane's paradox).
@@ -27,7 +27,10 @@ mod json;
 
 pub use json::{KEYS, json};
 
-const WIDTH: usize = 80;
+/// Text lines fit the terminal: 80 columns, or `COLUMNS`, or no limit with `--wide`.
+fn width() -> usize {
+    crate::terminal::width()
+}
 
 /// The sections a rigid report shows by default (the impulse, the contact and the collision
 /// along the normal are always shown).
@@ -140,7 +143,7 @@ pub fn header(o: &Outcome, style: &Style, u: &RigidUnits) -> String {
                 vector(style, &b.position, a),
                 u.suffix("m")
             ),
-            WIDTH,
+            width(),
             "  ",
         ));
     }
@@ -152,7 +155,7 @@ pub fn header(o: &Outcome, style: &Style, u: &RigidUnits) -> String {
             u.suffix("m"),
             vector(style, &c.normal, false)
         ),
-        WIDTH,
+        width(),
         "  ",
     ));
     let e = style.show(&p.e, a);
@@ -180,13 +183,16 @@ pub fn header(o: &Outcome, style: &Style, u: &RigidUnits) -> String {
                 .unwrap_or_default()
         ),
     };
-    out.push_str(&wrap(&laws, WIDTH, "  "));
+    out.push_str(&wrap(&laws, width(), "  "));
     if u.si {
-        let _ = writeln!(
-            out,
-            "Units: SI (kg, m, m/s, rad/s, kg m^2), impulses in N s, energies in {}",
-            u.units.energy()
-        );
+        out.push_str(&wrap(
+            &format!(
+                "Units: SI (kg, m, m/s, rad/s, kg m^2), impulses in N s, energies in {}",
+                u.units.energy()
+            ),
+            width(),
+            "  ",
+        ));
     }
     out
 }
@@ -226,12 +232,12 @@ pub fn text(
     let mut out = String::new();
     if let Some(why) = o.paradox() {
         out.push('\n');
-        out.push_str(&wrap(&format!("NOT PHYSICAL: {why}."), WIDTH, "  "));
+        out.push_str(&wrap(&format!("NOT PHYSICAL: {why}."), width(), "  "));
     }
     impulse_block(o, style, u).render(&mut out);
     along_block(o, style, u).render(&mut out);
     if show.contains(Section::Vectors) {
-        let mut b = Block::new("Velocities and spins (IN, then FIN)").fit(WIDTH);
+        let mut b = Block::new("Velocities and spins (IN, then FIN)");
         for (fin, ms) in [(false, o.v_in()), (true, &o.fin)] {
             let tick = if fin { "'" } else { "" };
             for (i, (body, m)) in o.bodies().iter().zip(ms).enumerate() {
@@ -279,7 +285,7 @@ pub fn text(
                     sci(ode.error),
                     duration(ode.seconds)
                 ),
-                WIDTH,
+                width(),
                 "  ",
             )
         );
@@ -302,7 +308,7 @@ fn duration(s: f64) -> String {
 fn impulse_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
     let a = o.approx() || !o.normal_length().1;
     let ns = u.suffix("N s");
-    let mut b = Block::new("Impulse at the contact (P on body 2, -P on body 1)").fit(WIDTH);
+    let mut b = Block::new("Impulse at the contact (P on body 2, -P on body 1)");
     b.row(
         "P",
         format!("{}{ns}", vector(style, &o.impact.impulse, o.approx())),
@@ -365,8 +371,7 @@ fn along_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
     let a = o.approx() || !n.exact;
     let vs = u.suffix("m/s");
     let mut b =
-        Block::new("Along the normal: the 1D collision of the contact points (effective masses)")
-            .fit(WIDTH);
+        Block::new("Along the normal: the 1D collision of the contact points (effective masses)");
     // A wall, or a body its pivot holds along n, is immovable there (an infinite mass).
     let mass = |m: &Option<Q>| match m {
         Some(m) => format!("{}{}", style.show(m, o.approx()), u.suffix("kg")),
@@ -417,7 +422,7 @@ fn energy_unit(u: &RigidUnits) -> String {
 
 fn momentum_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
     let a = o.approx();
-    let mut b = Block::new("Momentum").fit(WIDTH);
+    let mut b = Block::new("Momentum");
     let about = o.about();
     let rows = [
         (
@@ -456,8 +461,7 @@ fn momentum_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
 fn forms_block(o: &Outcome, style: &Style) -> Block {
     let a = o.approx();
     let pair = &o.problem.pair;
-    let mut b =
-        Block::new("The inertia tensor, the Jacobian rows and the collision matrix").fit(WIDTH);
+    let mut b = Block::new("The inertia tensor, the Jacobian rows and the collision matrix");
     let names: Vec<String> = o
         .bodies()
         .iter()
@@ -522,8 +526,7 @@ fn energy_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
         } else {
             String::new()
         }
-    ))
-    .fit(WIDTH);
+    ));
     for (label, ms) in [("IN", o.v_in()), ("FIN", &o.fin)] {
         let parts = o.energies(ms);
         for (i, (t, r)) in parts.iter().enumerate() {

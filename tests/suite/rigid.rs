@@ -562,6 +562,15 @@ fn bad_input_is_named() {
         assert!(err.contains(says), "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{err}");
     }
+    // collide plot's line pictures are refused for a rigid impact, in one sentence.
+    let (code, out, err) = run(&[
+        "plot", "-m", "1,4", "-v", "3,0", "--target", "rod 2", "--hit-at", "end", "--term",
+    ]);
+    assert_eq!((code, out.as_str()), (2, ""), "{err}");
+    assert!(
+        err.contains("a rigid impact is drawn as its bodies and its impulse plane"),
+        "{err}"
+    );
     // A scene: unknown keys with file and line.
     let path = common_dir().join("bad.toml");
     std::fs::write(&path, "[[body]]\nmass = 1\nspeed = 3\n[[body]]\nmass = \"wall\"\n[contact]\npoint = [0, 0]\nnormal = [1, 0]\n").unwrap();
@@ -630,9 +639,14 @@ fn text_fits_80_columns_and_has_every_section() {
             "all",
         ],
     ] {
-        let mut a = vec!["solve"];
-        a.extend(args.iter());
-        let out = common::stdout(&a);
+        // As a user runs it: COLUMNS unset (the other tests' text is as wide as it comes).
+        let run = common::collide_at_default_width()
+            .arg("solve")
+            .args(&args)
+            .output()
+            .unwrap();
+        assert!(run.status.success(), "{args:?}");
+        let out = String::from_utf8(run.stdout).unwrap();
         for line in out.lines() {
             assert!(line.chars().count() <= 80, "{args:?}: {line}");
         }
@@ -683,6 +697,10 @@ fn the_picture_draws_bodies_contact_and_the_impulse_plane() {
     ] {
         assert!(ids.contains(&id), "{id} missing: {ids:?}");
     }
+    // The slip 1 + 0.3 * 2 = 1.6 stops after a tangential impulse of 1.6 / (7/2) = 0.457, within
+    // mu P_n = 0.6: the subtitle names the contact as the text report does.
+    let texts: String = doc.descendants().filter_map(|n| n.text()).collect();
+    assert!(texts.contains("law poisson; contact: stick"), "{texts}");
     // The impulse path ends at the reported impulse: (P_n, P_t) = (2, 2/7 (1.6)...) read from
     // JSON, drawn inside the panel.
     let path = doc
