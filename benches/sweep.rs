@@ -149,6 +149,49 @@ fn main() {
         "collide sweep ... -o /dev/null:          {:>6.2} M rows/s (whole process)",
         rows / t.elapsed().as_secs_f64() / 1e6
     );
+
+    // Beside it, to a CSV file: the same grid on a line, and in the plane (issue 25: equal
+    // disks over the impact parameter and e, the default columns).
+    let file = std::env::temp_dir().join(format!("collide-bench-{}.csv", std::process::id()));
+    let path = file.to_str().unwrap();
+    for (what, args) in [
+        (
+            "on a line, CSV to a file:      ",
+            vec!["-m", "4,1", "-v", "60,10", "--vary", "v1=-100:100:10000"],
+        ),
+        (
+            "in the plane, CSV to a file:   ",
+            vec![
+                "-m",
+                "1,1",
+                "-v",
+                "(1,0),0",
+                "--radii",
+                "1,1",
+                "--impact-parameter",
+                "0",
+                "--vary",
+                "b=0:1.99:10000",
+            ],
+        ),
+    ] {
+        let t = Instant::now();
+        let status = std::process::Command::new(exe)
+            .arg("sweep")
+            .args(&args)
+            .args(["--vary", "e=0:1:1000", "-o", path])
+            .status()
+            .unwrap();
+        assert!(status.success());
+        let secs = t.elapsed().as_secs_f64();
+        let size = std::fs::metadata(&file).map(|m| m.len()).unwrap_or(0) as f64;
+        println!(
+            "collide sweep {what} {:>6.2} M rows/s (whole process, {:.0} bytes a row)",
+            rows / secs / 1e6,
+            size / rows
+        );
+    }
+    let _ = std::fs::remove_file(&file);
 }
 
 fn median_rate(case: &Case, grid: &Grid, writer: &RowWriter) -> f64 {

@@ -1073,3 +1073,57 @@ fn a_sweep_in_the_plane_refuses_what_it_cannot_be() {
         assert!(out.is_empty() && err.contains(says), "{a:?}: {err}");
     }
 }
+
+#[test]
+fn a_sweep_in_the_plane_is_the_same_in_shards_threads_and_formats() {
+    // 3 x 10,000 rows (chunks of 8,192 solved in parallel): one thread or two give the same
+    // bytes, the shards on stdout concatenate to the whole, JSON Lines holds the CSV's numbers,
+    // and error rows (b beyond R1 + R2) sit where their grid point is.
+    let base = [
+        "sweep",
+        "-m",
+        "1,2",
+        "-v",
+        "(1,0),(0,0.5)",
+        "--radii",
+        "1,1",
+        "--impact-parameter",
+        "0",
+        "--vary",
+        "e=0,0.5,1",
+        "--vary",
+        "b=-2.2:2.2:10000",
+        "--columns",
+        "e,b,fin1x,fin2y,lost,error",
+    ];
+    let with_threads = |n: &str, extra: &[&str]| {
+        let out = collide()
+            .args(base)
+            .args(extra)
+            .env("RAYON_NUM_THREADS", n)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let whole = with_threads("2", &[]);
+    assert_eq!(whole, with_threads("1", &[]));
+    assert_eq!(whole.lines().count(), 1 + 30_000);
+    let shards: String = (1..=3)
+        .map(|k| with_threads("2", &["--shard", &format!("{k}/3")]))
+        .collect();
+    assert_eq!(shards, whole);
+    let jsonl = with_threads("2", &["--format", "jsonl"]);
+    for (line, row) in jsonl.lines().zip(whole.lines().skip(1)) {
+        let j: Value = serde_json::from_str(line).unwrap();
+        let b: f64 = row.split(',').nth(1).unwrap().parse().unwrap();
+        assert_eq!(f(&j["b"]), b);
+        // |b| > 2: the disks miss, an error row; else a row of numbers.
+        assert_eq!(j["error"].is_string(), b.abs() > 2.0, "{line}");
+        assert_eq!(j["fin1x"].is_null(), b.abs() > 2.0, "{line}");
+    }
+}

@@ -80,6 +80,110 @@ pub trait Kind: Sync {
     fn column_forms(&self) -> String;
     /// A column's value for a run: `None` where it has none (a contact that did not happen).
     fn value(&self, col: Self::Col, out: &Self::Out) -> Option<f64>;
+    /// Runs of microseconds (an impact, not an integration): solved and formatted in chunks
+    /// in parallel, as `collide sweep` on a line, rather than in batches sized to a second.
+    fn cheap(&self) -> bool {
+        false
+    }
+}
+
+/// The row's cells into `values`: parameters from `point`, columns from `out`; `Err` for a
+/// result that is not a number.
+fn fill<K: Kind>(
+    kind: &K,
+    cells: &[Cell<K::Col>],
+    point: &[(Knob, f64)],
+    out: &K::Out,
+    values: &mut [f64],
+) -> Result<(), String> {
+    for (slot, cell) in values.iter_mut().zip(cells) {
+        *slot = match cell {
+            Cell::Param(p) => point[*p].1,
+            Cell::Of(c) => match kind.value(*c, out) {
+                Some(v) if !v.is_finite() => return Err(format!("a result became {v}")),
+                Some(v) => v,
+                None => f64::NAN,
+            },
+            Cell::Error => f64::NAN,
+        };
+    }
+    Ok(())
+}
+
+/// The cells of a failed run: its parameters, the rest empty.
+fn fill_failed<C>(cells: &[Cell<C>], point: &[(Knob, f64)], values: &mut [f64]) {
+    for (slot, cell) in values.iter_mut().zip(cells) {
+        *slot = match cell {
+            Cell::Param(p) => point[*p].1,
+            _ => f64::NAN,
+        };
+    }
+}
+
+/// `write_runs` for a cheap kind: chunks of rows run and formatted in parallel, written in
+/// order (`engine::write_chunks`, as a sweep on a line).
+#[allow(clippy::too_many_arguments)]
+fn write_cheap<K: Kind>(
+    kind: &K,
+    grid: &Grid<Knob>,
+    rows: std::ops::Range<u64>,
+    cells: &[Cell<K::Col>],
+    writer: &RowWriter,
+    skip_bad: bool,
+    sink: &mut Sink,
+    progress: &mut Progress,
+) -> Result<Summary, RowsError> {
+    use super::engine::{ChunkOut, write_chunks};
+    use super::writer::Sealed;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    let errors = AtomicU64::new(0);
+    let with_error = error_at(cells).is_some();
+    let solve = |start: u64| -> ChunkOut {
+        let end = (start + CHUNK_ROWS as u64).min(rows.end);
+        let mut buf = writer.buffer(CHUNK_ROWS);
+        let mut fields = FieldCache::new(cells.len());
+        let mut values = vec![0.0; cells.len()];
+        let mut point = vec![(Knob::Named(""), 0.0); grid.vary.len()];
+        let mut out = ChunkOut {
+            body: Ok(Sealed::Bytes(Vec::new())),
+            rows: 0,
+            skipped: Vec::new(),
+            stop: None,
+        };
+        for r in start..end {
+            grid.row(r, &mut point);
+            let result = kind
+                .run(&point)
+                .and_then(|o| fill(kind, cells, &point, &o, &mut values));
+            match result {
+                Ok(()) => writer.row_of_run(&values, None, &mut buf, &mut fields),
+                Err(why) if with_error => {
+                    fill_failed(cells, &point, &mut values);
+                    writer.row_of_run(&values, Some(&why), &mut buf, &mut fields);
+                    errors.fetch_add(1, Ordering::Relaxed);
+                }
+                Err(why) => {
+                    let e = RowError {
+                        place: format!("run {} ({})", r + 1, describe(&point)),
+                        problem: RowProblem::Run(why),
+                    };
+                    if skip_bad {
+                        out.skipped.push(e);
+                        continue;
+                    }
+                    out.stop = Some(e);
+                    break;
+                }
+            }
+            out.rows += 1;
+        }
+        out.body = writer.seal(buf);
+        out
+    };
+    let starts = (rows.start..rows.end).step_by(CHUNK_ROWS);
+    let mut summary = write_chunks(starts, solve, sink, progress)?;
+    summary.errors = errors.load(Ordering::Relaxed);
+    Ok(summary)
 }
 
 /// The knob `name` names (`m2`, `x1`, `wall-stiffness`), if `kind` has it.
@@ -211,6 +315,13 @@ pub fn write_runs<K: Kind>(
 ) -> Result<Summary, RowsError> {
     let rows = shard.rows(grid.total);
     let mut sink = Sink::open(writer, shard.k, out)?;
+    if kind.cheap() {
+        let summary = write_cheap(
+            kind, grid, rows, cells, writer, skip_bad, &mut sink, progress,
+        )?;
+        sink.finish()?;
+        return Ok(summary);
+    }
     let mut summary = Summary::default();
     let mut buf = writer.buffer(CHUNK_ROWS);
     let mut in_buf = 0usize;
@@ -232,31 +343,11 @@ pub fn write_runs<K: Kind>(
             })
             .collect();
         for (r, point, result) in done {
-            let result = result.and_then(|o| {
-                for (slot, cell) in values.iter_mut().zip(cells) {
-                    *slot = match cell {
-                        Cell::Param(p) => point[*p].1,
-                        Cell::Of(c) => match kind.value(*c, &o) {
-                            Some(v) if !v.is_finite() => {
-                                return Err(format!("a result became {v}"));
-                            }
-                            Some(v) => v,
-                            None => f64::NAN,
-                        },
-                        Cell::Error => f64::NAN,
-                    };
-                }
-                Ok(())
-            });
+            let result = result.and_then(|o| fill(kind, cells, &point, &o, &mut values));
             match result {
                 Ok(()) => writer.row_of_run(&values, None, &mut buf, &mut fields),
                 Err(why) if error_at(cells).is_some() => {
-                    for (slot, cell) in values.iter_mut().zip(cells) {
-                        *slot = match cell {
-                            Cell::Param(p) => point[*p].1,
-                            _ => f64::NAN,
-                        };
-                    }
+                    fill_failed(cells, &point, &mut values);
                     writer.row_of_run(&values, Some(&why), &mut buf, &mut fields);
                     summary.errors += 1;
                 }

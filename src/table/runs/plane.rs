@@ -360,6 +360,10 @@ impl Kind for PlaneSweep {
     fn value(&self, col: Col, out: &Impact) -> Option<f64> {
         out.value(col)
     }
+
+    fn cheap(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]
