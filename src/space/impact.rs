@@ -101,13 +101,12 @@ pub fn bounded<const D: usize>(
     if nn.v.hi == 0.0 {
         return None;
     }
-    let s = s_num.div(nn);
+    // One division: (1 + e) s / (m1 + m2), then times each mass (w_i s = m_i s / M).
     let total = Bounded::exact(Dd::sum(m[0], m[1]));
-    let w1 = Bounded::exact(Dd::new(m[0])).div(total);
-    let w2 = Bounded::exact(Dd::new(m[1])).div(total);
     let k = Bounded::exact(Dd::sum(1.0, e));
-    let j1 = k.mul(w2).mul(s);
-    let j2 = k.mul(w1).mul(s);
+    let q = k.mul(s_num).div(nn.mul(total));
+    let j1 = q.mul(Bounded::exact(Dd::new(m[1])));
+    let j2 = q.mul(Bounded::exact(Dd::new(m[0])));
     let mut out = [[0.0; D]; 2];
     for c in 0..D {
         let nk = Bounded::exact(Dd::new(n[c]));

@@ -639,3 +639,68 @@ fn an_error_row_is_one_quoted_csv_field() {
     assert!(rows[0][2].ends_with("larger --sizes"), "{out}");
     assert_eq!(&rows[1][2], "");
 }
+
+#[cfg(feature = "parquet")]
+#[test]
+fn the_slurm_recipe_shards_read_back_as_the_single_process_table() {
+    // examples/cluster/slurm.sh as Slurm runs it, task by task, with the array's variables set
+    // here (no Slurm needed): 3 shards of Parquet whose rows, read with the parquet crate in
+    // shard order, are the single process's CSV rows bit for bit.
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    let dir = std::env::temp_dir().join(format!("collide-slurm-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/cluster/slurm.sh");
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    for k in 1..=3 {
+        let out = StdCommand::new("bash")
+            .arg(&script)
+            .current_dir(&dir)
+            .env("COLLIDE", &bin)
+            .env("SLURM_ARRAY_TASK_ID", k.to_string())
+            .env("SLURM_ARRAY_TASK_COUNT", "3")
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let (_, single, _) = run(&[
+        "contact",
+        "-m",
+        "1,1",
+        "-x",
+        "0,1",
+        "--sizes",
+        "1,1",
+        "-v",
+        "1,0",
+        "--law",
+        "hertz",
+        "--vary",
+        "v1=0.1:2:100:log",
+        "--vary",
+        "stiffness=10:1000:100:log",
+    ]);
+    let (names, t) = table(&single);
+    assert_eq!(t[&names[0]].len(), 10_000);
+    let mut i = 0;
+    for k in 1..=3 {
+        let path = dir.join(format!("part-{k}.parquet"));
+        let reader = SerializedFileReader::new(std::fs::File::open(&path).unwrap()).unwrap();
+        for row in reader.get_row_iter(None).unwrap() {
+            for (n, field) in row.unwrap().get_column_iter() {
+                let want = t[n.as_str()][i];
+                match field {
+                    parquet::record::Field::Double(x) => assert_eq!(x.to_bits(), want.to_bits()),
+                    parquet::record::Field::Null => assert!(want.is_nan(), "{n} row {i}"),
+                    other => panic!("{n}: {other:?}"),
+                }
+            }
+            i += 1;
+        }
+    }
+    assert_eq!(i, 10_000);
+    std::fs::remove_dir_all(&dir).ok();
+}

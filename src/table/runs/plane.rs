@@ -188,8 +188,8 @@ impl Impact {
         let (_, nd) = cross_dot(self.n, d);
         let (_, nn) = cross_dot(self.n, self.n);
         let mu = self.m[0] * (self.m[1] / (self.m[0] + self.m[1]));
-        // (n.d)^2 / n.n rounded once from the rounded dot products: no square root.
-        0.5 * mu * (Dd::prod(nd, nd) / Dd::new(nn)).value()
+        // (n.d)^2 / n.n from the rounded dot products, no square root: a few ulps.
+        0.5 * mu * (nd * (nd / nn))
     }
 
     /// The energy of the relative motion after: the tangential part passes, the normal part
@@ -333,19 +333,19 @@ impl Kind for PlaneSweep {
         COLUMNS.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
     }
 
+    /// FIN, how far each moving body turned (a body at rest before has no direction to turn
+    /// from: left out), the angle between the final velocities, the energy lost.
     fn defaults(&self) -> Vec<String> {
-        [
-            "fin1x",
-            "fin1y",
-            "fin2x",
-            "fin2y",
-            "turned1_deg",
-            "turned2_deg",
-            "between_deg",
-            "lost",
-        ]
-        .map(String::from)
-        .to_vec()
+        let mut out: Vec<String> = ["fin1x", "fin1y", "fin2x", "fin2y"]
+            .map(String::from)
+            .to_vec();
+        for (i, name) in ["turned1_deg", "turned2_deg"].iter().enumerate() {
+            if self.v[i] != [0.0, 0.0] {
+                out.push(name.to_string());
+            }
+        }
+        out.extend(["between_deg".to_string(), "lost".to_string()]);
+        out
     }
 
     fn column_forms(&self) -> String {
