@@ -409,12 +409,58 @@ pub fn set_text_digits(digits: u8) {
 }
 
 /// `x` rounded to `digits` significant decimal digits (0: unchanged), as the nearest binary64
-/// of that decimal, so its shortest form has at most `digits` digits.
+/// of that decimal, so its shortest form has at most `digits` digits. The rounding is the
+/// textbook's: half away from zero, on the decimal people read (the shortest round-trip digits
+/// of `x`, when they end one digit past the cut), so 0.125 to 2 digits is 0.13, 0.145 is 0.15
+/// and 7.105e8 to 3 is 7.11e8 (issue 27; Rust's own formatting rounds exact ties to even and
+/// 0.145 by its binary value: 0.12, 0.14, 7.10e8); otherwise by the exact binary value.
 pub fn round_significant(x: f64, digits: u8) -> f64 {
     if digits == 0 || digits >= 17 || x == 0.0 || !x.is_finite() {
         return x;
     }
-    format!("{:.*e}", usize::from(digits) - 1, x)
+    let shortest = format!("{:e}", x.abs());
+    let Some((mantissa, exponent)) = shortest.split_once('e') else {
+        return x;
+    };
+    let Ok(mut exponent) = exponent.parse::<i32>() else {
+        return x;
+    };
+    let all: Vec<u8> = mantissa.bytes().filter(u8::is_ascii_digit).collect();
+    let n = usize::from(digits);
+    if all.len() <= n {
+        return x;
+    }
+    if all.len() > n + 1 || all.len() > 15 {
+        // More digits than one past the cut: the binary64 is no tie there, and its exact
+        // value decides. So do 16 or 17 shortest digits, a computed value's rather than a
+        // decimal anyone typed or reads as one (3.4641016151377548 is shortest
+        // 3.464101615137755, yet to 15 digits it is ...775): the default 15 digits are
+        // unchanged.
+        return format!("{:.*e}", n - 1, x).parse().unwrap_or(x);
+    }
+    let mut kept = all[..n].to_vec();
+    if all[n] >= b'5' {
+        // Carry from the last kept digit; 9.99 -> 10.0 moves the exponent.
+        let mut i = n;
+        loop {
+            if i == 0 {
+                kept.insert(0, b'1');
+                kept.pop();
+                exponent += 1;
+                break;
+            }
+            i -= 1;
+            if kept[i] == b'9' {
+                kept[i] = b'0';
+            } else {
+                kept[i] += 1;
+                break;
+            }
+        }
+    }
+    let sign = if x < 0.0 { "-" } else { "" };
+    let rest = std::str::from_utf8(&kept[1..]).unwrap_or("0");
+    format!("{sign}{}.{rest}0e{exponent}", char::from(kept[0]))
         .parse()
         .unwrap_or(x)
 }
@@ -560,6 +606,30 @@ impl<'de> serde::Deserialize<'de> for Number {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn significant_digits_round_half_away_from_zero() {
+        // Ties in the decimal people read go away from zero (the textbook's rule), others to
+        // the nearest; carries move the exponent.
+        for (x, d, want) in [
+            (0.125, 2, 0.13),
+            (-0.125, 2, -0.13),
+            (7.105e8, 3, 7.11e8),
+            (0.145, 2, 0.15),
+            (2.5, 1, 3.0),
+            (0.124, 2, 0.12),
+            (9.995, 3, 10.0),
+            (-9.96e-300, 2, -1.0e-299),
+            (6.79e-17, 3, 6.79e-17),
+            (1.0 / 3.0, 15, 0.333333333333333),
+            (0.6320687500000001, 15, 0.63206875),
+            (12f64.sqrt().hypot(0.0), 15, 3.46410161513775),
+            (3.464_101_615_137_755, 15, 3.46410161513775),
+        ] {
+            assert_eq!(round_significant(x, d), want, "{x} to {d}");
+        }
+        assert_eq!(round_significant(0.1 + 0.2, 0), 0.1 + 0.2);
+    }
 
     fn num(s: &str) -> f64 {
         s.parse::<Number>().unwrap().value()

@@ -37,6 +37,8 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     /// largest velocity of its vector) is rounding noise of an exact 0 (a car that stops prints
     /// `0`, not `-4.4e-16`); exact values are never changed.
     fn snap(&self, scale: f64) -> Self;
+    /// Exact arithmetic (`--exact`): values are printed as the fractions they are.
+    const EXACT: bool;
 }
 
 /// The stated error bound of a binary64 velocity, in ulps of the largest velocity of its case.
@@ -71,6 +73,8 @@ impl Scalar for f64 {
         }
         to_f64(&(from_f64(*self) * q)).unwrap_or(f64::NAN)
     }
+    const EXACT: bool = false;
+
     fn snap(&self, scale: f64) -> f64 {
         if self.abs() <= SNAP_ULPS * f64::EPSILON * scale.abs() {
             0.0
@@ -154,6 +158,8 @@ impl Scalar for Exact {
     fn scale(&self, q: &Q) -> Exact {
         self.with(self.rational() * q)
     }
+    const EXACT: bool = true;
+
     fn snap(&self, _scale: f64) -> Exact {
         self.clone()
     }

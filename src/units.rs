@@ -633,11 +633,20 @@ fn squared(v: &str) -> String {
 impl Units {
     /// "N" for kg and m/s, else the impulse unit per second.
     pub fn force(&self) -> String {
-        if self.mass == Some("kg") && self.velocity == Some("m/s") {
+        if self.force_scale().is_some() {
             "N".into()
         } else {
             format!("{} per second", self.impulse())
         }
+    }
+
+    /// The factor from the case's force unit (mass unit x velocity unit per second) to newtons,
+    /// when both units are given: forces print in N whatever the units typed (issue 27: "1423000
+    /// in g m/s per second" was 1.423 kN).
+    pub fn force_scale(&self) -> Option<Q> {
+        let m = lookup(self.mass?, Dimension::Mass).ok()?;
+        let v = lookup(self.velocity?, Dimension::Velocity).ok()?;
+        Some(m.si() * v.si())
     }
 
     /// "kg m/s" (momentum, impulse), or the generic description.

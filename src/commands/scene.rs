@@ -149,6 +149,7 @@ fn solve(scene: Scene) -> Result<Checked> {
     let mut sections = scene.sections_needed();
     // energy_unit = "kJ": every energy in kJ, as the header says.
     sections.energy_scale = scene.case.units.energy_scale();
+    sections.force_scale = scene.case.units.force_scale();
     let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
         .with_context(|| format!("{}", scene.about.path.display()))?;
     let mut text = result.text(&scene.case, &scene.show, scene.solved.as_ref());

@@ -40,7 +40,23 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         &units,
     ));
     sections.energy_scale = units.energy_scale();
+    sections.force_scale = units.force_scale();
     let (case, unknowns) = match &posed {
+        // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
+        // denominator, and a typed -e would print FIN = IN as if it were an answer.
+        Posed::Collision(case, _)
+            if args.fin.is_some()
+                && args.case.restitution.is_some()
+                && case.collision.v_in.x == case.collision.v_in.y =>
+        {
+            anyhow::bail!(
+                "-e {}: e is undefined for a separation (the bodies start together, V1 = V2 = \
+                 {}, so e = (v2' - v1') / (v1 - v2) divides by zero); drop -e and give what \
+                 the problem gives: a final velocity, or the energy released",
+                case.restitution(),
+                collide::number::num(case.collision.v_in.x)
+            );
+        }
         Posed::Collision(case, unknowns) => (case, unknowns),
         Posed::Separation(s, solved) => {
             return special(Special::Separation(s), Some(solved), &sections, &args);

@@ -114,6 +114,8 @@ pub struct Sections {
     pub heights: Option<crate::units::HeightScale>,
     /// The factor from the case's energy unit to the printed one (`--energy-unit`).
     pub energy_scale: Option<Q>,
+    /// The factor from the case's force unit to newtons (`Units::force_scale`).
+    pub force_scale: Option<Q>,
     /// The sections were asked for (`--show`), not the default: a pair that moves apart then
     /// gets the FIN it would have if body 1 were on the right, not the note alone.
     pub asked: bool,
@@ -134,6 +136,7 @@ impl Sections {
             contact_time: None,
             heights: None,
             energy_scale: None,
+            force_scale: None,
             asked: false,
         }
     }
@@ -310,7 +313,7 @@ pub struct ChangeReport<N = f64> {
 impl<N: Scalar> ChangeReport<N> {
     /// The exact changes in this report's arithmetic (each rounded once in binary64), energies
     /// times `energy_scale` (a change of unit).
-    pub fn of(c: &Changes, energy_scale: Option<&Q>) -> ChangeReport<N> {
+    pub fn of(c: &Changes, energy_scale: Option<&Q>, force_scale: Option<&Q>) -> ChangeReport<N> {
         let one = |q: &Q| N::of_rational(q);
         let two = |p: &[Q; 2]| [one(&p[0]), one(&p[1])];
         let energy = |p: &[Q; 2]| match energy_scale {
@@ -325,7 +328,10 @@ impl<N: Scalar> ChangeReport<N> {
             dke: c.dke.as_ref().map(energy),
             lost_fraction: c.lost_fraction.as_ref().map(one),
             transferred_fraction: c.transferred_fraction.as_ref().map(one),
-            average_force: c.average_force.as_ref().map(two),
+            average_force: c.average_force.as_ref().map(|f| match force_scale {
+                Some(k) => [one(&(&f[0] * k)), one(&(&f[1] * k))],
+                None => two(f),
+            }),
         }
     }
 }
@@ -606,6 +612,7 @@ impl<N: Scalar> Report<N> {
                 ChangeReport::of(
                     &c.exact().changes(sections.contact_time.as_ref()),
                     sections.energy_scale.as_ref(),
+                    sections.force_scale.as_ref(),
                 )
             }),
             heights: sections

@@ -84,6 +84,7 @@ impl<N: Scalar> SeparationReport<N> {
                 ChangeReport::of(
                     &s.changes(sections.contact_time.as_ref()),
                     sections.energy_scale.as_ref(),
+                    sections.force_scale.as_ref(),
                 )
             }),
         }

@@ -375,15 +375,26 @@ pub fn typed(n: &crate::number::Number) -> String {
 
 /// `M = diag(4, 1)   V_IN = (60, 10)   e = 1 (elastic: ka-bong)`, a line.
 pub fn header(case: &Case) -> String {
+    header_in(case, false)
+}
+
+/// The header; `exact`: a solved value (e, a velocity) is shown as the fraction it is (`Solved: e = 3/7` and `e =
+/// 3/7` in the header), not as `≈` digits.
+pub fn header_in(case: &Case, exact: bool) -> String {
     let e = case.restitution();
+    let shown = |n: &crate::number::Number| match n.text() {
+        t if exact && t.len() <= 40 => t.into_owned(),
+        _ => typed(n),
+    };
+    let e_text = shown(e.number());
     let mut out = parts(&[
         format!("M = {}", case.inertia().describe()),
         format!(
             "V_IN = ({}, {})",
-            typed(&case.velocities[0]),
-            typed(&case.velocities[1])
+            shown(&case.velocities[0]),
+            shown(&case.velocities[1])
         ),
-        format!("e = {} ({})", typed(e.number()), e.kind()),
+        format!("e = {e_text} ({})", e.kind()),
     ]);
     out.push_str(&header_units(&case.units));
     out
@@ -436,8 +447,11 @@ pub fn answer<N: Scalar>(case: &Case, report: &Report<N>) -> Option<String> {
     if !v.approaching {
         return None;
     }
-    let scale = scale(v);
-    let [f1, f2] = [v.fin[0].snap(scale).show(), v.fin[1].snap(scale).show()];
+    let own = Scales::of(case, v, true);
+    let [f1, f2] = [
+        v.fin[0].snap(own.fin[0]).show(),
+        v.fin[1].snap(own.fin[1]).show(),
+    ];
     Some(if case.restitution().is_totally_inelastic() {
         format!("FIN: v1' = v2' = {f1} {unit} (the bodies stick)\n")
     } else {
@@ -449,11 +463,11 @@ pub fn answer<N: Scalar>(case: &Case, report: &Report<N>) -> Option<String> {
 /// and the note that the bodies never meet, unless sections were asked for (`show.asked`).
 pub fn render<N: Scalar>(case: &Case, report: &Report<N>, show: &Sections) -> String {
     let mut out = String::new();
-    out.push_str(&header(case));
+    out.push_str(&header_in(case, N::EXACT));
     let apart = case.collision.v_in.x < case.collision.v_in.y;
     if apart && !show.asked {
         if let Some(v) = &report.vectors {
-            vectors(case, v, false).render(&mut out);
+            vectors(case, v, false, report.frame.is_none()).render(&mut out);
         }
         return out;
     }
@@ -465,7 +479,7 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>, show: &Sections) -> St
         )));
     }
     if let Some(v) = &report.vectors {
-        vectors(case, v, true).render(&mut out);
+        vectors(case, v, true, report.frame.is_none()).render(&mut out);
     }
     if let Some(m) = &report.momentum {
         momentum(case, m, &report.notes).render(&mut out);
@@ -571,8 +585,8 @@ fn diagnostics(d: &Diagnostics) -> Block {
 }
 
 /// `pair`, with rounding noise below the scale's error bound shown as 0 (`Scalar::snap`).
-fn snapped<N: Scalar>(v: &[N; 2], scale: f64) -> String {
-    pair(&[v[0].snap(scale), v[1].snap(scale)])
+fn snapped<N: Scalar>(v: &[N; 2], scale: [f64; 2]) -> String {
+    pair(&[v[0].snap(scale[0]), v[1].snap(scale[1])])
 }
 
 /// The largest velocity of IN and FIN: the scale of their rounding noise (`Scalar::snap`).
@@ -584,22 +598,67 @@ fn scale<N: Scalar>(v: &Vectors<N>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The vectors section; `fin`: with the FIN row (also for a pair that moves apart).
-fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>, fin: bool) -> Block {
+/// The error bounds a printed velocity is zeroed within (`Scalar::snap`): each value's own.
+/// `V_COM = w1 V1 + w2 V2` (`w_i = m_i / M`) is a quotient accurate to ulps of `w1 |V1| + w2
+/// |V2|`, and `FIN_i = V_i + (1 + e) w_j (V_j - V_i)` to ulps of `|V_i| + (1 + e) w_j (|V1| +
+/// |V2|)`: a Moon's recoil of 6.79e-17 m/s beside a 5 m/s body is a number, not noise. Seen
+/// from another frame, or with a general tensor, the largest velocity of IN and FIN bounds
+/// them all.
+struct Scales {
+    com: f64,
+    fin: [f64; 2],
+}
+
+impl Scales {
+    fn of<N: Scalar>(case: &Case, v: &Vectors<N>, lab: bool) -> Scales {
+        let global = scale(v);
+        let whole = Scales {
+            com: global,
+            fin: [global, global],
+        };
+        let m = case.inertia().matrix();
+        if !lab || !case.inertia().is_diagonal() {
+            return whole;
+        }
+        let (m1, m2) = (m[(0, 0)], m[(1, 1)]);
+        let total = m1 + m2;
+        let (w1, w2) = (m1 / total, m2 / total);
+        let (a, b) = (case.collision.v_in.x.abs(), case.collision.v_in.y.abs());
+        let com = w1 * a + w2 * b;
+        let k = 1.0 + case.restitution().value();
+        let fin = if case.restitution().is_totally_inelastic() {
+            [com, com]
+        } else {
+            [a + k * w2 * a + k * w2 * b, b + k * w1 * a + k * w1 * b]
+        };
+        if [com, fin[0], fin[1]].iter().all(|x| x.is_finite()) {
+            Scales { com, fin }
+        } else {
+            whole
+        }
+    }
+}
+
+/// The vectors section; `fin`: with the FIN row (also for a pair that moves apart); `lab`: seen
+/// from the lab.
+fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>, fin: bool, lab: bool) -> Block {
     let mut b = Block::new("Vectors (V1, V2)");
-    let scale = scale(v);
+    let own = Scales::of(case, v, lab);
     b.row("IN   V_IN", pair(&v.v_in), "");
     b.row(
         "COM  V_COM u",
-        snapped(&v.com, scale),
-        format!("V_COM = P_total / M_total = {}", v.v_com.snap(scale).show()),
+        snapped(&v.com, [own.com, own.com]),
+        format!(
+            "V_COM = P_total / M_total = {}",
+            v.v_com.snap(own.com).show()
+        ),
     );
     if fin && case.restitution().is_totally_inelastic() {
         b.row("FIN  V_FIN", "= COM", "the bodies stick and move together");
     } else if fin {
         b.row(
             "FIN  V_FIN",
-            snapped(&v.fin, scale),
+            snapped(&v.fin, own.fin),
             "= (1 + e) V_COM u - e V_IN",
         );
     }

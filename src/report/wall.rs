@@ -2,7 +2,7 @@
 //! be infinite or meaningless (its kinetic energy, its momentum, the centre of mass). JSON:
 //! `event = "wall"`, `wall` (1 or 2), `restitution`, `mass`, `in`, `fin`, `approaching`,
 //! `momentum {in, fin}`, `energy {in, fin, crunch, lost | released}`, `changes {dv, impulse,
-//! lost_fraction, average_force}` (the ball's), `heights {in, fin}` (the ball's).
+//! lost_fraction, kept_fraction, average_force}` (the ball's), `heights {in, fin}` (the ball's).
 
 use crate::rational::Q;
 use serde::Serialize;
@@ -65,6 +65,9 @@ pub struct WallChanges<N> {
     pub impulse: N,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lost_fraction: Option<N>,
+    /// The share kept, `1 - lost / crunch = e^2` (problems ask for both).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kept_fraction: Option<N>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub average_force: Option<N>,
 }
@@ -108,7 +111,12 @@ impl<N: Scalar> WallReport<N> {
                     impulse: one(&impulse),
                     lost_fraction: (!superelastic && crunch > Q::ZERO)
                         .then(|| one(&(&lost / &crunch))),
-                    average_force: sections.contact_time.as_ref().map(|t| one(&(&impulse / t))),
+                    kept_fraction: (!superelastic && crunch > Q::ZERO)
+                        .then(|| one(&((&crunch - &lost) / &crunch))),
+                    average_force: sections.contact_time.as_ref().map(|t| {
+                        let f = &impulse / t;
+                        one(&sections.force_scale.as_ref().map_or(f.clone(), |k| &f * k))
+                    }),
                 }
             }),
             heights: sections
@@ -202,6 +210,9 @@ impl<N: Scalar> WallReport<N> {
                     l.show(),
                     "the share of the ball's energy (wall frame) lost",
                 );
+            }
+            if let Some(k) = &ch.kept_fraction {
+                b.row("kept / crunch", k.show(), "the share kept: e^2");
             }
             if let Some(fc) = &ch.average_force {
                 b.row(

@@ -229,6 +229,7 @@ impl CaseInput {
         let mut sections = Sections::new(Section::DEFAULT);
         sections.heights = Some(HeightScale::new(None, &case.units));
         sections.energy_scale = case.units.energy_scale();
+        sections.force_scale = case.units.force_scale();
         let frame = &typed.frame;
         let report = AnyReport::of(&case, frame, false, &sections, self.reverse)
             .map_err(|e| InputError::new(if self.reverse { "reverse" } else { "m1" }, e))?;

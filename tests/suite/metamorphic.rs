@@ -247,6 +247,8 @@ fn velocity_power(path: &str) -> i32 {
         || path.starts_with("inertia")
         || path.contains("restitution")
         || path.contains("fraction")
+        // Forces print in newtons whatever the typed units: the same force in both.
+        || path.contains("average_force")
         || leaf.starts_with('m') && leaf.len() <= 3
         || leaf == "e"
     {

@@ -131,9 +131,10 @@ fn recoil_from_rest_is_a_separation() {
 
 #[test]
 fn the_workaround_e_1_no_longer_prints_another_collision() {
-    // With -e 1 the data contradict restitution (f2 - f1 = 10.5 but e (V1 - V2) = 0): exit 1,
-    // the check says so, and no recomputed FIN is printed.
-    let (code, out, _) = run(&[
+    // With -e 1 on bodies that start together (a separation), e is undefined: refused with
+    // exit 2 and a message that says so (issue 27 §3; it was a contradiction, exit 1), and no
+    // recomputed FIN is printed.
+    let (code, out, err) = run(&[
         "-m",
         "80.0 kg,?",
         "-v",
@@ -143,9 +144,9 @@ fn the_workaround_e_1_no_longer_prints_another_collision() {
         "-e",
         "1",
     ]);
-    assert_eq!(code, 1);
-    assert!(out.contains("restitution does NOT hold"), "{out}");
-    assert!(!out.contains("V_FIN") && !out.contains("-6.4"), "{out}");
+    assert_eq!(code, 2);
+    assert!(out.is_empty(), "{out}");
+    assert!(err.contains("e is undefined for a separation"), "{err}");
     // The same for a collision: FIN (40, 90) with e = 1/2 misses restitution by 25.
     let (code, j) = json("-m 4,1 -v 60,10 --fin 40,90 -e 0.5");
     assert_eq!(code, 1);
@@ -711,4 +712,107 @@ fn typed_negative_zeros_print_as_zero_in_headers() {
         header,
         "M = diag(1, 2)   V_IN = (0, 1)   e = 0 (totally inelastic: ka-runch)"
     );
+}
+
+/// Issue 27 §3: rounding and display as a textbook reader expects.
+#[test]
+fn textbook_rounding_and_display() {
+    // --sig rounds half away from zero: V_COM = (1 x 0.25) / 2 = 0.125 exactly, to 2 digits
+    // 0.13 (it printed 0.12, ties to even); 7.105e8 to 3 digits: 7.11e8 (masses 1420999999
+    // and 1 both at 1: KE_IN = 1/2 x 1.421e9 = 710500000 exactly; it printed 710000000).
+    let (_, out, _) = run(&["-m", "1,1", "-v", "0.25,0", "-e", "0", "--sig", "2"]);
+    assert!(out.contains("V_COM = P_total / M_total = 0.13"), "{out}");
+    let (_, out, _) = run(&[
+        "-m",
+        "1420999999,1",
+        "-v",
+        "1,1",
+        "--show",
+        "energy",
+        "--sig",
+        "3",
+    ]);
+    assert!(
+        out.contains(" 711000000 ") && !out.contains("710000000"),
+        "{out}"
+    );
+    // The Moon's recoil: 1000 kg at 5 m/s sticks to 7.35e22 kg at rest: V_COM = 5000 /
+    // (7.35e22 + 1000) = 6.80272108843537e-20 m/s to 15 digits (a quotient, accurate to its
+    // own ulps), not 0; elastic, the Moon leaves at twice that.
+    let (_, out, _) = run(&["-m", "1000 kg,7.35e22 kg", "-v", "5 m/s,0", "-e", "0"]);
+    assert!(
+        out.contains("V_COM = P_total / M_total = 6.80272108843537e-20"),
+        "{out}"
+    );
+    assert!(
+        out.contains("v1' = v2' = 6.80272108843537e-20 m/s"),
+        "{out}"
+    );
+    let (_, out, _) = run(&["-m", "1000 kg,7.35e22 kg", "-v", "5 m/s,0", "-e", "1"]);
+    assert!(out.contains("v2' = 1.36054421768707e-19 m/s"), "{out}");
+    // Noise is still noise: equal masses, elastic, v = (0.1, 0.2): FIN = (0.2, 0.1) exactly
+    // in the impulse form, and a frame's rounding prints no -1e-17.
+    let (_, out, _) = run(&["-m", "1,1", "-v", "0.3,0.1", "--frame", "com"]);
+    assert!(!out.contains("e-17") && !out.contains("e-18"), "{out}");
+    // A separation with a typed e: refused, e is undefined there.
+    let (code, out, err) = run(&["-m", "1,1", "-v", "0,0", "--fin", "?,?", "-e", "2.80e3"]);
+    assert_eq!(code, 2);
+    assert!(
+        out.is_empty() && err.contains("e is undefined for a separation"),
+        "{err}"
+    );
+    // --exact prints exact values everywhere: FIN1 = 11/7 gives e = 3/7 (f2 = 32/7:
+    // 6 x 3 - 4 = 6 x 11/7 + f2, e = (32/7 - 11/7) / 7 = 3/7), in the header too.
+    let (_, out, _) = run(&["-m", "6,1", "-v", "3,-4", "--fin", "11/7,?", "--exact"]);
+    assert!(out.contains("Solved: f2 = 32/7, e = 3/7"), "{out}");
+    assert!(
+        out.contains("e = 3/7 (ka-whump)") && !out.contains('≈'),
+        "{out}"
+    );
+    // A wall: the share kept beside the share lost, e^2 = 1/4 and 1 - e^2 = 3/4.
+    let (_, j) = json("-m 1,wall -v 4,0 -e 0.5 --show changes");
+    assert_eq!(f(&j["changes"]["lost_fraction"]), 0.75);
+    assert_eq!(f(&j["changes"]["kept_fraction"]), 0.25);
+}
+
+#[test]
+fn forces_print_in_newtons_whatever_the_units() {
+    // A 145 g ball at 40 m/s hits a wall, e = 1/2, in 2 ms: dv = -60 m/s, dp = -8.7 N s,
+    // F = dp / T = -4350 N (it printed -4350000 "in g m/s per second"); the same ball typed
+    // in kg and km/h gives the same newtons (40 m/s = 144 km/h).
+    for (m, v) in [("145 g", "40 m/s"), ("0.145 kg", "144 km/h")] {
+        let (_, out, _) = run(&[
+            "-m",
+            &format!("{m},wall"),
+            "-v",
+            &format!("{v},0"),
+            "-e",
+            "1/2",
+            "--contact-time",
+            "2ms",
+            "--show",
+            "changes",
+            "--format",
+            "json",
+        ]);
+        let j: Value = serde_json::from_str(&out).unwrap();
+        let force = f(&j["changes"]["average_force"]);
+        assert!(
+            (force + 4350.0).abs() <= 4350.0 * 4.0 * f64::EPSILON,
+            "{m}, {v}: {force}"
+        );
+    }
+    let (_, out, _) = run(&[
+        "-m",
+        "145 g,wall",
+        "-v",
+        "40 m/s,0",
+        "-e",
+        "1/2",
+        "--contact-time",
+        "2ms",
+        "--show",
+        "changes",
+    ]);
+    assert!(out.contains("-4350") && out.contains("in N"), "{out}");
 }
