@@ -4,6 +4,7 @@
 
 #[cfg(feature = "cli")]
 pub mod accuracy;
+pub mod block;
 #[cfg(feature = "cli")]
 pub mod contact;
 pub mod frames;
