@@ -72,7 +72,14 @@ def main():
         page.on("console", lambda m: out["console"].append([m.type, m.text]))
         page.on("pageerror", lambda e: out["errors"].append(str(e)))
         page.goto("file://" + os.path.abspath(page_path))
-        page.wait_for_function("window.collideView && window.collideView.ready", timeout=30000)
+        # Polled with page.evaluate: Playwright's wait_for_function evaluates its predicate with
+        # eval() when it has to poll, which the page's Content-Security-Policy (no
+        # 'unsafe-eval') refuses, so it failed whenever the page was not ready at the first look.
+        deadline = time.time() + 30
+        while not page.evaluate("() => !!(window.collideView && window.collideView.ready)"):
+            if time.time() > deadline:
+                raise TimeoutError("the page did not become ready in 30 s")
+            time.sleep(0.02)
         out["ready_s"] = time.time() - started
         text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
 
