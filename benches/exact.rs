@@ -7,9 +7,9 @@
 
 use std::time::Instant;
 
-use collide::case::{Case, parse_masses, parse_velocities};
-use collide::frame::Frame;
-use collide::inertia::InertiaTensor;
+use collide::line::case::{Case, parse_masses, parse_velocities};
+use collide::line::frame::Frame;
+use collide::line::inertia::InertiaTensor;
 use collide::report::{AnyReport, Section, Sections};
 
 /// `1.` then `digits - 2` pseudo-random digits (an LCG, so every run times the same case).

@@ -24,7 +24,7 @@ cd "$(dirname "$0")/.."
 # area -> files (cargo-mutants globs) and test-name filters.
 declare -A FILES=(
     [contact]="src/contact/*.rs"
-    [units]="src/units.rs"
+    [units]="src/values/units.rs"
     [motion]="src/track/motion.rs"
     [columns]="src/table/columns.rs"
 )

@@ -9,10 +9,10 @@
 
 use std::time::Instant;
 
-use collide::rational::{Q, int, ratio, to_f64};
 use collide::rigid::laws::Law;
 use collide::rigid::routh;
 use collide::rigid::slip::Slip;
+use collide::values::rational::{Q, int, ratio, to_f64};
 
 fn fastest(s: &Slip, rtol: f64) -> (f64, collide::rigid::slip::Run) {
     let mut best = f64::INFINITY;

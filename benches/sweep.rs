@@ -10,14 +10,14 @@ use std::hint::black_box;
 use std::io;
 use std::time::Instant;
 
-use collide::case::{Case, parse_masses, parse_velocities};
-use collide::inertia::InertiaTensor;
-use collide::output::Progress;
+use collide::line::case::{Case, parse_masses, parse_velocities};
+use collide::line::inertia::InertiaTensor;
 use collide::table::columns::Column;
 use collide::table::engine::{solve_row, write_sweep};
 use collide::table::row::RowCase;
 use collide::table::sweep::{Grid, Shard};
 use collide::table::writer::{RowFormat, RowWriter};
+use collide::values::output::Progress;
 
 fn median(mut xs: Vec<f64>) -> f64 {
     xs.sort_by(f64::total_cmp);

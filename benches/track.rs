@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use collide::inertia::Mass;
+use collide::line::inertia::Mass;
 use collide::track::{Body, Limits, Track};
 
 fn main() {

@@ -3,8 +3,8 @@
 //!
 //!     cargo run --example case_a
 
-use collide::case::{Case, parse_masses, parse_velocities};
-use collide::inertia::InertiaTensor;
+use collide::line::case::{Case, parse_masses, parse_velocities};
+use collide::line::inertia::InertiaTensor;
 use collide::report::{Report, Section, Sections};
 use collide::solver::binary64::Binary64;
 

@@ -5,20 +5,20 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 use nalgebra::{Matrix2, Vector2};
 use num_traits::Signed;
 use serde::Serialize;
 
-use crate::collision::Collision;
-use crate::compensated::exponent;
-use crate::inertia::InertiaTensor;
-use crate::number::Number;
-use crate::quantity::{from_f64, to_f64};
-use crate::restitution::Restitution;
+use crate::line::collision::Collision;
+use crate::line::inertia::InertiaTensor;
+use crate::line::restitution::Restitution;
 use crate::solver::Solver;
 use crate::solver::binary64::Binary64;
 use crate::solver::exact::ExactCollision;
+use crate::values::compensated::exponent;
+use crate::values::number::Number;
+use crate::values::quantity::{from_f64, to_f64};
 
 /// A way to compute FIN, the crunch energy and the energy lost.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
@@ -205,7 +205,7 @@ pub fn ulps(approx: f64, exact: &Q, scale: f64) -> f64 {
     if scale == 0.0 {
         return f64::INFINITY;
     }
-    let ulp = from_f64(crate::compensated::pow2(
+    let ulp = from_f64(crate::values::compensated::pow2(
         exponent(scale).max(-1022 + 52) - 52,
     ));
     to_f64(&(err / ulp)).unwrap_or(f64::INFINITY)

@@ -8,18 +8,18 @@ use std::path::PathBuf;
 use clap::builder::{PossibleValue, StringValueParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use collide::case::parse_inertia;
-use collide::frame::Frame;
-use collide::inertia::InertiaTensor;
-use collide::number::{Given, Number, NumberList};
+use collide::line::case::parse_inertia;
+use collide::line::frame::Frame;
+use collide::line::inertia::InertiaTensor;
+use collide::line::restitution::Restitution;
 use collide::report::Section;
-use collide::restitution::Restitution;
 use collide::space::typed::Listed;
 use collide::table::batch::InputFormat;
 use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary, VaryError};
 use collide::table::writer::{Header, RowFormat};
-use collide::units::Dimension;
+use collide::values::number::{Given, Number, NumberList};
+use collide::values::units::Dimension;
 
 /// The exit statuses, for `collide --help` and the man page: the same words as the guide's table
 /// (docs/cli.md, "Exit status"), which `tests/suite/shell.rs` compares with both.
@@ -688,9 +688,9 @@ pub struct CaseArgs {
     /// Radii of two smooth disks (with --impact-parameter): the line of impact from the geometry
     #[arg(long, value_name = "R1,R2", requires = "impact_parameter",
           value_parser = |s: &str| -> Result<[Number; 2], String> {
-              let [a, b] = collide::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
-              Ok([a.parse().map_err(|e: collide::number::NumberError| e.to_string())?,
-                  b.parse().map_err(|e: collide::number::NumberError| e.to_string())?])
+              let [a, b] = collide::values::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
+              Ok([a.parse().map_err(|e: collide::values::number::NumberError| e.to_string())?,
+                  b.parse().map_err(|e: collide::values::number::NumberError| e.to_string())?])
           })]
     pub radii: Option<[Number; 2]>,
 
@@ -711,8 +711,8 @@ pub struct CaseArgs {
 
     /// Print energies in this unit: J, kJ, eV, MeV, ft*lbf or cal (the masses and velocities need
     /// units)
-    #[arg(long, value_name = "UNIT", value_parser = |s: &str| collide::units::energy_unit(s))]
-    pub energy_unit: Option<&'static collide::units::EnergyUnit>,
+    #[arg(long, value_name = "UNIT", value_parser = |s: &str| collide::values::units::energy_unit(s))]
+    pub energy_unit: Option<&'static collide::values::units::EnergyUnit>,
 
     /// g in m/s^2 for velocities typed as heights ('height 2 m': the speed sqrt(2 g h) of a fall
     /// from rest through 2 m) and for --show heights [default: 9.80665, standard gravity]
@@ -746,8 +746,8 @@ pub struct SolveArgs {
 
     /// How long the bodies touch, e.g. '2 ms' or 0.01 (seconds; units s, ms, us): the changes
     /// section then gives the average force dp / T on each body
-    #[arg(long, value_name = "T", value_parser = |s: &str| collide::units::seconds(s))]
-    pub contact_time: Option<collide::rational::Q>,
+    #[arg(long, value_name = "T", value_parser = |s: &str| collide::values::units::seconds(s))]
+    pub contact_time: Option<collide::values::rational::Q>,
 
     /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
     /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest

@@ -7,7 +7,7 @@ use std::fmt;
 use num_traits::Signed;
 use serde_json::Value as Json;
 
-use crate::number::{Number, num, num_full};
+use crate::values::number::{Number, num, num_full};
 
 /// Relative tolerance of a plain expected number.
 pub const DEFAULT_REL: f64 = 1e-12;
@@ -180,7 +180,7 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
         // the rationals they are (a decimal expectation is the decimal it is).
         (Expected::Number(x), Json::String(y)) => y.parse::<Number>().is_ok_and(|y| {
             let x = x.exact();
-            let bound = |t: f64| crate::rational::from_f64(t);
+            let bound = |t: f64| crate::values::rational::from_f64(t);
             (y.exact() - &x).abs() <= bound(tol.abs) + bound(tol.rel) * x.abs()
         }),
         (Expected::Text(x), Json::String(y)) => x == y,

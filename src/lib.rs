@@ -1,13 +1,15 @@
-//! `collide`: two-body collisions on a rail, solved where the momentum line meets the energy
-//! ellipse, with an explicit inertia tensor, in the notation of W. G. Harter, *Classical Mechanics
-//! with a BANG!*, Unit 1, Lecture 1.
+//! `collide`: collisions on a rail, in the plane and in space, solved where the momentum line
+//! meets the energy ellipse, with an explicit inertia tensor, in the notation of W. G. Harter,
+//! *Classical Mechanics with a BANG!*, Unit 1, Lecture 1.
 //!
 //! The modules are layers; each imports only from the layers above it in this list:
 //!
-//! 1. values: `rational`, `number`, `units`, `quantity`, `compensated`, `output`, `terminal`;
-//! 2. two-body physics: `inertia`, `restitution`, `collision`, `ellipse`;
-//! 3. what the user asked: `case`, `problem`, `unknowns`, `frame`; the plane and space
-//!    (`space`) and rigid bodies at impact (`rigid`);
+//! 1. `values`: rationals, numbers as typed, units, quantities, compensated sums, output, width;
+//! 2. `line`, the rail: two-body physics (`inertia`, `restitution`, `collision`, `ellipse`,
+//!    `changes`, `separation`, `wall`) and what the user asked of it (`case`, `problem`,
+//!    `unknowns`, `frame`);
+//! 3. the plane and space (`space`: vectors, lines of impact, N bodies), built on `line`; rigid
+//!    bodies at impact (`rigid`);
 //! 4. how it is computed: `solver` (the `Solver` trait, `binary64`, `exact`);
 //! 5. computations beyond one solve: `accuracy`, `expect`, `table`, `track`, `contact` (which
 //!    runs `track` as its impulse model);
@@ -20,7 +22,7 @@
 //! compiles to WebAssembly for `collide view`.
 //!
 //! ```
-//! use collide::{case::{Case, parse_masses, parse_velocities}, inertia::InertiaTensor};
+//! use collide::line::{case::{Case, parse_masses, parse_velocities}, inertia::InertiaTensor};
 //! let [m1, m2] = parse_masses("4,1").unwrap();
 //! let case = Case::new(InertiaTensor::diagonal(&m1, &m2).unwrap(),
 //!                      parse_velocities("60,10").unwrap(), "elastic".parse().unwrap());
@@ -29,29 +31,10 @@
 //! ```
 
 // 1. values
-pub mod compensated;
-pub mod number;
-#[cfg(feature = "cli")]
-pub mod output;
-pub mod quantity;
-pub mod rational;
-pub mod terminal;
-pub mod units;
+pub mod values;
 
-// 2. two-body physics
-pub mod changes;
-pub mod collision;
-pub mod ellipse;
-pub mod inertia;
-pub mod restitution;
-pub mod separation;
-
-// 3. what the user asked
-pub mod case;
-pub mod frame;
-pub mod problem;
-pub mod unknowns;
-pub mod wall;
+// 2-3. the rail: two-body physics and what the user asked of it
+pub mod line;
 
 // 3b. the plane and space, rigid bodies
 #[cfg(feature = "cli")]

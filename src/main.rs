@@ -9,12 +9,12 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{CommandFactory, FromArgMatches};
-use collide::output::diagnostic;
-use collide::terminal;
+use collide::values::output::diagnostic;
+use collide::values::terminal;
 
 fn main() -> ExitCode {
     // Signals remove partial output files; a file-size limit is an error, not a silent death.
-    collide::output::guard_signals();
+    collide::values::output::guard_signals();
     let args: Vec<OsString> = std::env::args_os().collect();
     // Text, --help and errors fit the terminal: COLUMNS, else 80; --wide lifts the limit. Read
     // before parsing, so that --help and usage errors are laid out for it too.
@@ -56,7 +56,7 @@ fn main() -> ExitCode {
         terminal::set_width(terminal::UNLIMITED);
     }
     if let Some(digits) = cli.sig {
-        collide::number::set_text_digits(digits);
+        collide::values::number::set_text_digits(digits);
     }
     match commands::run(cli.command) {
         Ok(outcome) => {

@@ -40,7 +40,7 @@ fn escaped(e: &clap::Error) -> String {
         return format!(
             "error: invalid value '{}' for '{arg}': {source}\n\nFor more information, try \
              '--help'.",
-            collide::number::printable(value)
+            collide::values::number::printable(value)
         );
     }
     e.render().to_string()

@@ -2,8 +2,8 @@
 
 use anyhow::Result;
 use collide::accuracy::{Cost, families, report};
-use collide::output::write_file;
 use collide::report::{accuracy, json};
+use collide::values::output::write_file;
 
 use super::Outcome;
 use crate::cli::{AccuracyArgs, Format};
@@ -53,13 +53,13 @@ fn within_budget(args: &AccuracyArgs) -> Result<()> {
          us each) besides the timing, more than the budget allows (--budget-ms {} for {} methods \
          on {} families: {} s, and at least {} s): give --cases {} or fewer{or_budget}",
         args.cases,
-        collide::number::num((needed * 10.0).round() / 10.0),
+        collide::values::number::num((needed * 10.0).round() / 10.0),
         cost.cases(args.cases),
-        collide::number::num((cost.per_case * 1e7).round() / 10.0),
+        collide::values::number::num((cost.per_case * 1e7).round() / 10.0),
         args.budget_ms,
         args.methods.len(),
         cost.families,
-        collide::number::num(timing),
+        collide::values::number::num(timing),
         FLOOR_SECONDS,
         fits.max(1.0),
     )

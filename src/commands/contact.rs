@@ -3,9 +3,9 @@
 
 use anyhow::Result;
 use collide::contact::{self, Damping, Laws, Method, Settings, Setup};
-use collide::output::write_file;
 use collide::report::{contact as report, json};
 use collide::table::runs::contact::ContactSweep;
+use collide::values::output::write_file;
 
 use super::Outcome;
 use crate::cli::{ContactArgs, Format, MethodArg, RunFormat};

@@ -2,8 +2,8 @@
 //! 3.4), with the invariants checked in every frame.
 
 use anyhow::Result;
-use collide::case::Case;
-use collide::frame::Frame;
+use collide::line::case::Case;
+use collide::line::frame::Frame;
 use collide::report::frames::{self, Agree, FramesTable};
 use collide::report::{Irreversible, json};
 use collide::solver::Lab;

@@ -18,8 +18,8 @@ mod track;
 mod view;
 
 use anyhow::Result;
-use collide::case::Case;
-use collide::problem::Problem;
+use collide::line::case::Case;
+use collide::line::problem::Problem;
 use collide::space;
 use collide::space::typed::Listed;
 

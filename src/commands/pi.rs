@@ -3,10 +3,10 @@
 use std::time::Instant;
 
 use anyhow::Result;
-use collide::inertia::Mass;
-use collide::number::Number;
+use collide::line::inertia::Mass;
 use collide::report::pi as report;
 use collide::track::{DEFAULT_MAX_COLLISIONS, Limits, Track, TrackReport, pi::pi_digits};
+use collide::values::number::Number;
 
 use super::Outcome;
 use crate::cli::{Format, PiArgs};
@@ -27,7 +27,7 @@ const SAY_ABOVE_SECONDS: f64 = 10.0;
 fn expected(n: u32) -> String {
     let log10_seconds = std::f64::consts::PI.log10() + f64::from(n) + SECONDS_PER_COLLISION.log10();
     let seconds = 10f64.powf(log10_seconds);
-    let round = |x: f64| collide::number::num((x * 10.0).round() / 10.0);
+    let round = |x: f64| collide::values::number::num((x * 10.0).round() / 10.0);
     const YEAR: f64 = 365.25 * 86400.0;
     if seconds < 120.0 {
         format!("{} s", round(seconds))
@@ -61,7 +61,7 @@ pub fn run(args: PiArgs) -> Result<Outcome> {
     let simulate = !args.no_simulate && (args.simulate || args.n <= SIMULATE_UP_TO);
     let seconds = std::f64::consts::PI * 10f64.powi(args.n as i32) * SECONDS_PER_COLLISION;
     if simulate && seconds > SAY_ABOVE_SECONDS {
-        collide::output::diagnostic(format_args!(
+        collide::values::output::diagnostic(format_args!(
             "simulating {count} collisions: about {} (--no-simulate gives the exact count alone)",
             expected(args.n)
         ));

@@ -4,12 +4,12 @@
 use std::path::Path;
 
 use anyhow::Result;
-use collide::case::Case;
-use collide::frame::Frame;
-use collide::output::write_file;
+use collide::line::case::Case;
+use collide::line::frame::Frame;
 use collide::plot::{self, Kind, Picture};
 use collide::report::{Report, Section, Sections};
 use collide::solver::binary64::Binary64;
+use collide::values::output::write_file;
 
 use super::Outcome;
 use crate::cli::PlotArgs;
@@ -98,7 +98,7 @@ pub fn draw(case: &Case, frame: &Frame, kind: Kind, frames: bool, target: &Path)
             "\n{}",
             plot::term::render(
                 &Picture::new(case, frame, frames),
-                collide::terminal::width()
+                collide::values::terminal::width()
             )
         ));
     }

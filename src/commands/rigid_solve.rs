@@ -3,7 +3,6 @@
 //! rendered; also the picture (`collide plot`) and a scene's `[[body]]` report.
 
 use anyhow::Result;
-use collide::number::Number;
 use collide::report::rigid::{self as report, RigidUnits};
 use collide::report::space::Style;
 use collide::report::{Section, Sections, json};
@@ -12,14 +11,15 @@ use collide::rigid::impact::{ImpactError, Problem};
 use collide::rigid::pose::{Either, LawsTyped, MassTyped};
 use collide::rigid::units::{Measure, Typed};
 use collide::space::typed::split_bodies;
-use collide::units::{EnergyUnit, Units};
+use collide::values::number::Number;
+use collide::values::units::{EnergyUnit, Units};
 
 use super::Outcome;
 use crate::cli::{CaseArgs, Format, RigidArgs, SolveArgs};
 
 pub fn run(args: &SolveArgs) -> Result<Outcome> {
     let refused = [
-        (args.frame != collide::frame::Frame::Lab, "--frame"),
+        (args.frame != collide::line::frame::Frame::Lab, "--frame"),
         (args.plot.is_some(), "--plot (use collide plot)"),
         (args.contact_time.is_some(), "--contact-time"),
         (args.fin.is_some(), "--fin"),
@@ -95,7 +95,7 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
     };
     let restitution = match &case.restitution {
         None => Number::from_f64(1.0)?,
-        Some(collide::number::Given::Known(r)) => r.number().clone(),
+        Some(collide::values::number::Given::Known(r)) => r.number().clone(),
         Some(_) => anyhow::bail!(
             "-e ?: rigid impacts solve forward only: give the restitution (e in [0, 1])"
         ),
@@ -156,7 +156,7 @@ pub fn report_of(
             );
             return Ok(match format {
                 Format::Text => (
-                    collide::report::text::wrap(&note, collide::terminal::width(), "  "),
+                    collide::report::text::wrap(&note, collide::values::terminal::width(), "  "),
                     0,
                 ),
                 Format::Json => (

@@ -87,7 +87,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
             Err(e) if !several => return Err(e),
             Err(e) => {
                 bad += 1;
-                collide::output::diagnostic(format_args!("error: {e:#}"));
+                collide::values::output::diagnostic(format_args!("error: {e:#}"));
             }
         }
     }

@@ -1,8 +1,8 @@
 //! `collide solve`: one collision (or separation) from the command line.
 
 use anyhow::Result;
+use collide::line::problem::Posed;
 use collide::plot::Kind;
-use collide::problem::Posed;
 use collide::report::special::Special;
 use collide::report::{AnyReport, Sections, json, solved};
 
@@ -35,7 +35,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     sections.asked = !args.show.is_empty();
     sections.contact_time = args.contact_time.clone();
     let units = posed.units().clone();
-    sections.heights = Some(collide::units::HeightScale::new(
+    sections.heights = Some(collide::values::units::HeightScale::new(
         args.case.gravity.as_ref(),
         &units,
     ));
@@ -54,7 +54,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
                  {}, so e = (v2' - v1') / (v1 - v2) divides by zero); drop -e and give what \
                  the problem gives: a final velocity, or the energy released",
                 case.restitution(),
-                collide::number::num(case.collision.v_in.x)
+                collide::values::number::num(case.collision.v_in.x)
             );
         }
         Posed::Collision(case, unknowns) => (case, unknowns),
@@ -98,12 +98,12 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
 /// movable bodies refused.
 fn special(
     event: Special,
-    solved: Option<&collide::unknowns::Solved>,
+    solved: Option<&collide::line::unknowns::Solved>,
     sections: &Sections,
     args: &SolveArgs,
 ) -> Result<Outcome> {
     let extra = [
-        (args.frame != collide::frame::Frame::Lab).then_some("--frame"),
+        (args.frame != collide::line::frame::Frame::Lab).then_some("--frame"),
         args.reverse.then_some("--reverse"),
         args.plot.as_ref().map(|_| "--plot"),
     ];
@@ -142,8 +142,8 @@ fn special(
 /// Given values that contradict a checked law: what was checked, and no event (one recomputed
 /// from some of the values would differ from the others).
 fn inconsistent_report(
-    s: &collide::unknowns::Solved,
-    units: &collide::units::Units,
+    s: &collide::line::unknowns::Solved,
+    units: &collide::values::units::Units,
     args: &SolveArgs,
 ) -> String {
     match args.format {

@@ -2,7 +2,7 @@
 //! solve its unknowns, keep the physical solutions, render them.
 
 use anyhow::Result;
-use collide::frame::Frame;
+use collide::line::frame::Frame;
 use collide::report::json;
 use collide::report::space::solved::{Options, render};
 use collide::report::space::{self as report, Style};
@@ -69,7 +69,7 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
         list.extend((1..=n).map(Frame::RestFin));
     }
     list.extend(args.frame.iter().cloned());
-    let seen: Vec<(String, Vec<collide::rational::Q>, Event)> = list
+    let seen: Vec<(String, Vec<collide::values::rational::Q>, Event)> = list
         .iter()
         .map(|f| {
             let w = lab.observer(f, posed.typed_values)?;
@@ -132,7 +132,9 @@ pub fn plane_svg(case: &crate::cli::CaseArgs) -> Result<String> {
         "masses {}",
         o.masses
             .iter()
-            .map(|m| collide::number::num(collide::rational::to_f64(m).unwrap_or(f64::NAN)))
+            .map(|m| collide::values::number::num(
+                collide::values::rational::to_f64(m).unwrap_or(f64::NAN)
+            ))
             .collect::<Vec<_>>()
             .join(", ")
     );

@@ -2,13 +2,13 @@
 
 use anyhow::Result;
 use clap::ValueEnum;
-use collide::case::Case;
-use collide::output::{Output, Progress};
+use collide::line::case::Case;
 use collide::table::batch;
 use collide::table::columns::Column;
 use collide::table::engine::{RowsError, Summary, write_batch, write_sweep};
 use collide::table::sweep::{Grid, Param, Shard};
 use collide::table::writer::{Header, RowFormat, RowWriter};
+use collide::values::output::{Output, Progress};
 
 use collide::table::runs::{self, Kind};
 
@@ -48,7 +48,8 @@ fn plane_sweep(args: SweepArgs) -> Result<Outcome> {
             st.dim
         );
     }
-    let f = |q: &collide::rational::Q| collide::rational::to_f64(q).unwrap_or(f64::NAN);
+    let f =
+        |q: &collide::values::rational::Q| collide::values::rational::to_f64(q).unwrap_or(f64::NAN);
     let m: Vec<f64> = st
         .masses
         .iter()
@@ -112,7 +113,7 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
             "--energy-unit {} (energy_unit in a scene): a table's energies are in the case's own \
              unit, {}, and its columns carry no unit label; drop it, or convert the columns",
             unit.name,
-            collide::units::Units {
+            collide::values::units::Units {
                 energy_as: None,
                 ..case.units.clone()
             }
@@ -280,13 +281,13 @@ fn finish(
     };
     out.commit().map_err(|e| output_error(table, e))?;
     if summary.skipped > 0 {
-        collide::output::diagnostic(format_args!(
+        collide::values::output::diagnostic(format_args!(
             "{} rows written, {} bad rows skipped",
             summary.rows, summary.skipped
         ));
     }
     if summary.errors > 0 {
-        collide::output::diagnostic(format_args!(
+        collide::values::output::diagnostic(format_args!(
             "{} of {} runs failed: their rows give why in the error column",
             summary.errors, summary.rows
         ));

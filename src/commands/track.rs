@@ -4,11 +4,11 @@ use std::io::Write;
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use collide::output::Output;
 use collide::report::{json, track as report};
 use collide::table::batch::InputFormat;
 use collide::table::runs::track::TrackSweep;
 use collide::track::{Event, Limits, Run, Track, TrackReport};
+use collide::values::output::Output;
 
 use super::Outcome;
 use crate::cli::{Format, RunFormat, TrackArgs};

@@ -1,8 +1,8 @@
 //! `collide view`: the lecture's simulators as one self-contained web page.
 
 use anyhow::{Result, bail};
-use collide::output::write_file;
 use collide::scene::{AnyScene, Scene};
+use collide::values::output::write_file;
 use collide::view::page::{self, Focus, Setup};
 use collide::view::stack::TrackInput;
 
@@ -39,7 +39,7 @@ pub fn run(args: ViewArgs) -> Result<Outcome> {
     if let Some(e) = &args.restitution {
         setup.case.e = e.trim().to_string();
     }
-    if args.scene.is_none() || args.frame != collide::frame::Frame::Lab {
+    if args.scene.is_none() || args.frame != collide::line::frame::Frame::Lab {
         setup.case.frame = args.frame.to_string();
     }
     setup.case.reverse |= args.reverse;
@@ -67,13 +67,13 @@ fn two(text: &str, flag: &str, what: &str) -> Result<[String; 2]> {
 
 /// The layout as the page's inputs hold it.
 fn track_input(t: &ViewTrackArgs) -> TrackInput {
-    let list = |l: &collide::number::NumberList| {
+    let list = |l: &collide::values::number::NumberList| {
         l.0.iter()
             .map(|n| n.to_string())
             .collect::<Vec<_>>()
             .join(",")
     };
-    let text = |n: &Option<collide::number::Number>| n.as_ref().map(|n| n.to_string());
+    let text = |n: &Option<collide::values::number::Number>| n.as_ref().map(|n| n.to_string());
     let layout = &t.layout;
     TrackInput {
         masses: list(&layout.masses),

@@ -22,7 +22,7 @@ pub mod work;
 
 use serde::Serialize;
 
-use crate::number::num;
+use crate::values::number::num;
 
 use crate::track::{self, Body, Contact, Track};
 

@@ -11,8 +11,8 @@ pub mod term;
 pub mod velocity;
 pub mod work;
 
-use crate::case::Case;
-use crate::frame::Frame;
+use crate::line::case::Case;
+use crate::line::frame::Frame;
 use crate::solver::Solver;
 use crate::solver::binary64::Binary64;
 
@@ -96,7 +96,7 @@ impl Picture {
         };
         // Radii as the report computes them, sqrt(2 KE) / sqrt(lambda): no overflow on the way.
         let shape = |ke: f64| {
-            let root = crate::ellipse::root_2ke(ke);
+            let root = crate::line::ellipse::root_2ke(ke);
             EllipseShape {
                 ke,
                 radii: (root / axes[0].0.sqrt(), root / axes[1].0.sqrt()),

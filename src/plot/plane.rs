@@ -66,8 +66,12 @@ impl Panel {
     }
 }
 
-fn point(v: &[crate::rational::Q]) -> (f64, f64) {
-    let g = |k: usize| v.get(k).and_then(crate::rational::to_f64).unwrap_or(0.0);
+fn point(v: &[crate::values::rational::Q]) -> (f64, f64) {
+    let g = |k: usize| {
+        v.get(k)
+            .and_then(crate::values::rational::to_f64)
+            .unwrap_or(0.0)
+    };
     (g(0), g(1))
 }
 
@@ -75,21 +79,27 @@ fn point(v: &[crate::rational::Q]) -> (f64, f64) {
 /// masses, the velocities' components along the unit normal and the same e, as a 1D case. `None`
 /// where there is no such rail or a value does not fit binary64.
 fn normal_parts(o: &Outcome) -> Option<super::Picture> {
-    use crate::case::Case;
-    use crate::inertia::{InertiaTensor, Mass};
-    use crate::number::Number;
-    use crate::restitution::Restitution;
+    use crate::line::case::Case;
+    use crate::line::inertia::{InertiaTensor, Mass};
+    use crate::line::restitution::Restitution;
+    use crate::values::number::Number;
     if o.dim != 2 {
         return None;
     }
     let parts = o.normal_parts()?;
-    let q = |x: &crate::rational::Q| crate::rational::to_f64(x).filter(|v| v.is_finite());
+    let q = |x: &crate::values::rational::Q| {
+        crate::values::rational::to_f64(x).filter(|v| v.is_finite())
+    };
     let mass = |i: usize| Mass::from_f64(q(&o.masses[i])?).ok();
-    let speed = |x: &crate::rational::Q| Number::from_f64(q(x)?).ok();
+    let speed = |x: &crate::values::rational::Q| Number::from_f64(q(x)?).ok();
     let inertia = InertiaTensor::diagonal(&mass(0)?, &mass(1)?).ok()?;
     let e = Restitution::new(Number::from_f64(q(o.e.as_ref()?)?).ok()?).ok()?;
     let case = Case::new(inertia, [speed(&parts.v_in[0])?, speed(&parts.v_in[1])?], e);
-    Some(super::Picture::new(&case, &crate::frame::Frame::Lab, false))
+    Some(super::Picture::new(
+        &case,
+        &crate::line::frame::Frame::Lab,
+        false,
+    ))
 }
 
 /// Places a whole SVG document `inner` (from [`Svg::finish`]) at `(x, y)` of `svg`, as a nested
@@ -160,13 +170,13 @@ pub fn svg(o: &Outcome, title: &str) -> String {
     let n = o.bodies();
     let v_in: Vec<(f64, f64)> = o.v_in.iter().map(|v| point(v)).collect();
     let fin: Vec<(f64, f64)> = o.fin.iter().map(|v| point(v)).collect();
-    let p_in: Vec<Vec<crate::rational::Q>> = o
+    let p_in: Vec<Vec<crate::values::rational::Q>> = o
         .v_in
         .iter()
         .zip(&o.masses)
         .map(|(v, m)| v.iter().map(|x| x * m).collect())
         .collect();
-    let p_fin: Vec<Vec<crate::rational::Q>> = o
+    let p_fin: Vec<Vec<crate::values::rational::Q>> = o
         .fin
         .iter()
         .zip(&o.masses)
@@ -255,7 +265,7 @@ pub fn svg(o: &Outcome, title: &str) -> String {
     svg.circle(Some("impact"), origin, 3.5, "fill=\"#111827\"");
 
     // Momentum triangles: p1, p2, ... tip to tail, before and after, to the same P.
-    let tips = |ps: &[Vec<crate::rational::Q>]| -> Vec<(f64, f64)> {
+    let tips = |ps: &[Vec<crate::values::rational::Q>]| -> Vec<(f64, f64)> {
         let mut acc = (0.0, 0.0);
         let mut out = vec![acc];
         for p in ps {
@@ -309,7 +319,7 @@ pub fn svg(o: &Outcome, title: &str) -> String {
     let mut x = LEFTS[0];
     for i in 0..n {
         let colour = COLOURS[i % COLOURS.len()];
-        let m = crate::rational::to_f64(&o.masses[i]).unwrap_or(f64::NAN);
+        let m = crate::values::rational::to_f64(&o.masses[i]).unwrap_or(f64::NAN);
         svg.raw(&format!(
             "<rect x=\"{}\" y=\"{}\" width=\"10\" height=\"10\" fill=\"{colour}\"/>",
             f(x),
@@ -335,7 +345,7 @@ pub fn svg(o: &Outcome, title: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::int;
+    use crate::values::rational::int;
 
     #[test]
     fn arrows_keep_their_angles_and_stay_inside() {

@@ -6,13 +6,13 @@
 //! `|P_t| = mu P_n`, the compression line (`w_n = 0`), the sticking line (`w_t = 0`) and the
 //! path of the impulse with the end of compression (C), the stick (S) and the end (F).
 
-use crate::rational::{Q, to_f64};
 use crate::rigid::algebra::dot;
 use crate::rigid::body::Mobility;
 use crate::rigid::laws::Tangential;
 use crate::rigid::outcome::Outcome;
 use crate::rigid::routh::Event;
 use crate::rigid::shape::Kind;
+use crate::values::rational::{Q, to_f64};
 
 use super::plane::arrow;
 use super::svg::{Svg, f, short};

@@ -217,7 +217,7 @@ impl Svg {
 /// them all).
 pub fn short(x: f64) -> String {
     let r: f64 = format!("{x:.3e}").parse().unwrap_or(x);
-    crate::number::num(r)
+    crate::values::number::num(r)
 }
 
 /// "Nice" tick positions covering `[lo, hi]`: steps of 1, 2 or 5 times a power of ten.

@@ -3,7 +3,7 @@
 
 use super::Picture;
 use super::velocity::Map;
-use crate::number::num;
+use crate::values::number::num;
 
 /// A braille canvas of `cols` x `rows` characters.
 struct Canvas {
@@ -134,7 +134,7 @@ pub fn render(p: &Picture, width: usize) -> String {
     if p.e > 0.0 {
         cv.mark(to(p.v_fin), 'F');
     }
-    let fit = |text: String| crate::terminal::wrap(&text, width, "  ");
+    let fit = |text: String| crate::values::terminal::wrap(&text, width, "  ");
     let mut out = fit(format!("Velocity plane (V1 across, V2 up), {}", p.title));
     out.push_str(&cv.render());
     let (k1, k2, c) = p.line;

@@ -2,8 +2,8 @@
 //! terminal's width, folding what does not fit; several short parts on a line; wrapped
 //! paragraphs; durations in their unit. Every text report is built from these.
 
-use crate::quantity::Scalar;
-pub use crate::terminal::wrap;
+use crate::values::quantity::Scalar;
+pub use crate::values::terminal::wrap;
 
 /// `(V1, V2)`.
 pub fn pair<N: Scalar>(v: &[N; 2]) -> String {
@@ -12,7 +12,7 @@ pub fn pair<N: Scalar>(v: &[N; 2]) -> String {
 
 /// Rows of cells aligned into columns (two spaces apart, trailing blanks trimmed), under an
 /// optional heading: every aligned table collide prints for people. A block keeps within the
-/// width of the terminal ([`crate::terminal::width`], or the one given to [`Block::fit`]) without
+/// width of the terminal ([`crate::values::terminal::width`], or the one given to [`Block::fit`]) without
 /// cutting a number: a row's note that does not fit goes on a line of its own below the row
 /// (wrapped if need be), a label too long to leave room for its value goes on a line above it,
 /// and a table too wide for the width is folded into groups of columns, each repeating the
@@ -132,7 +132,7 @@ impl Block {
     }
 
     pub fn render(&self, out: &mut String) {
-        let limit = self.width.unwrap_or_else(crate::terminal::width);
+        let limit = self.width.unwrap_or_else(crate::values::terminal::width);
         if let Some(h) = &self.heading {
             out.push('\n');
             out.push_str(&wrap(h, limit, ""));
@@ -282,7 +282,7 @@ impl Block {
         };
         lay.widths = self.widths(&lay);
         lay.groups = vec![(0..lay.widths.len()).collect()];
-        if limit == crate::terminal::UNLIMITED || self.overflowing(&lay, limit).is_empty() {
+        if limit == crate::values::terminal::UNLIMITED || self.overflowing(&lay, limit).is_empty() {
             return lay;
         }
         let section = self
@@ -316,7 +316,7 @@ impl Block {
         if self.overflowing(&lay, limit).is_empty() {
             return lay;
         }
-        lay.groups = crate::terminal::fold(
+        lay.groups = crate::values::terminal::fold(
             &lay.widths,
             1,
             lay.gap,
@@ -364,7 +364,7 @@ pub fn duration(seconds: f64) -> String {
 /// `parts` three spaces apart, as many on a line as fit the terminal (a part too long for a
 /// line of its own is wrapped).
 pub fn parts(parts: &[String]) -> String {
-    let width = crate::terminal::width();
+    let width = crate::values::terminal::width();
     let mut out = String::new();
     let mut line = String::new();
     for p in parts {
@@ -383,7 +383,7 @@ pub fn parts(parts: &[String]) -> String {
 
 /// `text` wrapped to the terminal's width, lines after the first indented by two spaces.
 pub fn paragraph(text: &str) -> String {
-    wrap(text, crate::terminal::width(), "  ")
+    wrap(text, crate::values::terminal::width(), "  ")
 }
 
 #[cfg(test)]

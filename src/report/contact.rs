@@ -7,7 +7,7 @@ use super::text::{Block, duration, paragraph, wrap};
 use super::track::Unrepresentable;
 use crate::contact::work::{Row, Work};
 use crate::contact::{ContactRun, Damping, LawKind, Setup, Spec};
-use crate::number::num;
+use crate::values::number::num;
 
 /// A run as JSON, refusing by name a quantity that is not a real result.
 pub fn json(run: &ContactRun) -> Result<serde_json::Value, Unrepresentable> {
@@ -108,7 +108,7 @@ pub fn text(setup: &Setup, run: &ContactRun) -> String {
                     "collisions"
                 }
             ),
-            crate::terminal::width(),
+            crate::values::terminal::width(),
             "    ",
         ));
     }

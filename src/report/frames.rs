@@ -8,12 +8,12 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use super::text::{Block, header, pair, paragraph, wrap};
-use crate::case::Case;
-use crate::frame::Frame;
-use crate::quantity::{Exact, Scalar};
-use crate::rational::Q;
+use crate::line::case::Case;
+use crate::line::frame::Frame;
 use crate::report::{Energy, Report, Section, Sections, Unrepresentable};
 use crate::solver::{Lab, Solver};
+use crate::values::quantity::{Exact, Scalar};
+use crate::values::rational::Q;
 
 /// One row of the frames table.
 #[derive(Clone, Debug, Serialize)]
@@ -262,7 +262,11 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
         "Invariants, computed in each frame from its own velocities and equal in all:",
     ));
     for l in lines {
-        out.push_str(&wrap(&format!("  {l}"), crate::terminal::width(), "    "));
+        out.push_str(&wrap(
+            &format!("  {l}"),
+            crate::values::terminal::width(),
+            "    ",
+        ));
     }
     if e.is_totally_inelastic() {
         let _ = writeln!(
@@ -277,7 +281,7 @@ pub fn text<N: Scalar>(case: &Case, t: &FramesTable<N>) -> String {
 mod tests {
     use super::*;
     use crate::accuracy::case;
-    use crate::collision::Collision;
+    use crate::line::collision::Collision;
     use crate::solver::binary64::Binary64;
 
     /// A lab whose COM row is another collision: the check must catch the different crunch.

@@ -24,17 +24,17 @@ pub mod wall;
 
 use std::collections::BTreeSet;
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 use serde::{Deserialize, Serialize};
 
-use crate::case::Case;
-use crate::changes::Changes;
-use crate::ellipse::Ellipse;
-use crate::frame::Frame;
-use crate::quantity::{Exact, Scalar};
+use crate::line::case::Case;
+use crate::line::changes::Changes;
+use crate::line::ellipse::Ellipse;
+use crate::line::frame::Frame;
+use crate::line::unknowns::Solved;
 use crate::solver::exact::ExactCollision;
 use crate::solver::{Lab, Solver};
-use crate::unknowns::Solved;
+use crate::values::quantity::{Exact, Scalar};
 
 /// A section of the report (`--show`, `show = [...]` in a scene).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
@@ -112,7 +112,7 @@ pub struct Sections {
     /// The contact time in seconds, for the average forces of `changes` (`--contact-time`).
     pub contact_time: Option<Q>,
     /// `g` and the velocity unit, for `heights`.
-    pub heights: Option<crate::units::HeightScale>,
+    pub heights: Option<crate::values::units::HeightScale>,
     /// The factor from the case's energy unit to the printed one (`--energy-unit`).
     pub energy_scale: Option<Q>,
     /// The factor from the case's force unit to newtons (`Units::force_scale`).
@@ -498,7 +498,7 @@ pub enum ReportError {
     #[error(transparent)]
     Unrepresentable(#[from] Unrepresentable),
     #[error(transparent)]
-    ExactTooLong(#[from] crate::number::ExactTooLong),
+    ExactTooLong(#[from] crate::values::number::ExactTooLong),
     #[error(transparent)]
     Irreversible(#[from] Irreversible),
     #[error(transparent)]

@@ -1,6 +1,6 @@
 //! `collide pi N`: the exact count, the digits of pi it spells, and the simulation against it.
 
-use crate::rational::UBig;
+use crate::values::rational::UBig;
 use serde_json::json;
 
 use super::text::{Block, duration};

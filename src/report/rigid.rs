@@ -3,21 +3,21 @@
 //! FIN, crunch with the effective masses), velocities and spins before and after, momentum and
 //! angular momentum about a stated point, the explicit inertia tensor with the Jacobian rows and
 //! the collision matrix, energies split into translation and rotation, and the ODE's error
-//! estimate and run time in space; as text (fitting the terminal: `crate::terminal`) and as JSON.
+//! estimate and run time in space; as text (fitting the terminal: `crate::values::terminal`) and as JSON.
 //!
 //! Values are exact and rounded once here (`--exact`: fractions, `≈` for 40-digit values).
 //! Energy created is never printed as physics: the report says why it is not (Kane's paradox).
 
 use std::fmt::Write;
 
-use crate::number::num;
-use crate::rational::{Q, to_f64};
 use crate::rigid::algebra::Mat;
 use crate::rigid::body::{Body, Mobility};
 use crate::rigid::laws::{Mode, Tangential};
 use crate::rigid::outcome::{Energy, Outcome};
 use crate::rigid::units::rpm;
-use crate::units::Units;
+use crate::values::number::num;
+use crate::values::rational::{Q, to_f64};
+use crate::values::units::Units;
 
 use super::space::{Overflow, Style, vector};
 use super::text::{Block, wrap};
@@ -29,7 +29,7 @@ pub use json::{KEYS, json};
 
 /// Text lines fit the terminal: 80 columns, or `COLUMNS`, or no limit with `--wide`.
 fn width() -> usize {
-    crate::terminal::width()
+    crate::values::terminal::width()
 }
 
 /// The sections a rigid report shows by default (the impulse, the contact and the collision

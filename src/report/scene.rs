@@ -96,7 +96,7 @@ fn failure_lines(s: &Checked, out: &mut String) {
                 c.tolerance,
                 c.actual
             ),
-            crate::terminal::width(),
+            crate::values::terminal::width(),
             "       ",
         ));
     }
@@ -112,7 +112,7 @@ fn failures(s: &Checked) -> Vec<&Check> {
 /// `line`, then `title` beside it when both fit the terminal, else on the next line under
 /// column `under` (wrapped).
 fn with_title(line: String, title: &str, under: usize) -> String {
-    let width = crate::terminal::width();
+    let width = crate::values::terminal::width();
     let whole = format!("{line}  {title}");
     if title.is_empty() || whole.chars().count() <= width {
         return format!("{}\n", whole.trim_end());
@@ -132,7 +132,7 @@ pub fn text(s: &Checked) -> String {
             Some(src) => format!("{t} ({src})"),
             None => t.clone(),
         };
-        out.push_str(&wrap(&title, crate::terminal::width(), "  "));
+        out.push_str(&wrap(&title, crate::values::terminal::width(), "  "));
     }
     out.push_str(&s.text);
     if !s.checks.is_empty() {

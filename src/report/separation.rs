@@ -7,8 +7,8 @@ use serde::Serialize;
 
 use super::text::{Block, changes, header_units, pair, parts, typed};
 use super::{ChangeReport, Section, Sections};
-use crate::quantity::Scalar;
-use crate::separation::Separation;
+use crate::line::separation::Separation;
+use crate::values::quantity::Scalar;
 
 /// A separation's numbers. Field names are the JSON schema.
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -53,10 +53,10 @@ impl<N: Scalar> SeparationReport<N> {
     /// The sections of `sections` that mean something for a separation; each value exact, and
     /// rounded once in binary64.
     pub fn new(s: &Separation, sections: &Sections) -> SeparationReport<N> {
-        let one = |q: &crate::rational::Q| N::of_rational(q);
-        let two = |p: &[crate::rational::Q; 2]| [one(&p[0]), one(&p[1])];
+        let one = |q: &crate::values::rational::Q| N::of_rational(q);
+        let two = |p: &[crate::values::rational::Q; 2]| [one(&p[0]), one(&p[1])];
         let has = |x| sections.contains(x);
-        let energy = |q: &crate::rational::Q| match &sections.energy_scale {
+        let energy = |q: &crate::values::rational::Q| match &sections.energy_scale {
             Some(k) => one(&(q * k)),
             None => one(q),
         };

@@ -1,14 +1,14 @@
 //! What a homework problem's unknowns came out as (`Solved: v1 = 60, e = 1`), the laws checked
 //! rather than used, and the units: the lines and JSON keys `solve` and scenes add to a report.
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 use serde_json::{Map, Value};
 
 use super::text::paragraph;
-use crate::number::num;
-use crate::quantity::{Exact, Scalar, fraction, to_f64};
-use crate::units::Units;
-use crate::unknowns::{Solved, Var};
+use crate::line::unknowns::{Solved, Var};
+use crate::values::number::num;
+use crate::values::quantity::{Exact, Scalar, fraction, to_f64};
+use crate::values::units::Units;
 
 /// `Solved: ...` and `Check: ...` lines, then a blank line.
 pub fn text(s: &Solved, exact: bool, units: &Units) -> String {

@@ -5,9 +5,9 @@
 use super::separation::SeparationReport;
 use super::wall::WallReport;
 use super::{Sections, Unrepresentable, first_unrepresentable};
-use crate::quantity::{Exact, Scalar};
-use crate::separation::Separation;
-use crate::wall::WallCase;
+use crate::line::separation::Separation;
+use crate::line::wall::WallCase;
+use crate::values::quantity::{Exact, Scalar};
 
 /// An event other than a two-body collision.
 #[derive(Clone, Copy, Debug)]
@@ -31,14 +31,14 @@ impl Special<'_> {
         exact: bool,
     ) -> Result<Rendered, super::ReportError> {
         if exact {
-            let typed: Vec<&crate::number::Number> = match self {
+            let typed: Vec<&crate::values::number::Number> = match self {
                 Special::Separation(s) => s.masses.iter().chain(&s.velocities).collect(),
                 Special::Wall(w) => [&w.mass, w.restitution.number()]
                     .into_iter()
                     .chain(&w.velocities)
                     .collect(),
             };
-            crate::number::check_exact_length(typed)?;
+            crate::values::number::check_exact_length(typed)?;
             Ok(self.in_arithmetic::<Exact>(compute, show)?)
         } else {
             Ok(self.in_arithmetic::<f64>(compute, show)?)
@@ -68,7 +68,7 @@ impl Special<'_> {
     }
 
     /// The units of the event's numbers.
-    pub fn units(self) -> crate::units::Units {
+    pub fn units(self) -> crate::values::units::Units {
         match self {
             Special::Separation(s) => s.units.clone(),
             Special::Wall(w) => w.units.clone(),

@@ -7,12 +7,12 @@ use super::{
     ChangeReport, Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Reverse,
     Sections, Vectors,
 };
-use crate::case::Case;
-use crate::ellipse::Ellipse;
-use crate::quantity::Scalar;
+use crate::line::case::Case;
+use crate::line::ellipse::Ellipse;
+use crate::values::quantity::Scalar;
 
 /// A value for the header (`Number::brief`).
-pub fn typed(n: &crate::number::Number) -> String {
+pub fn typed(n: &crate::values::number::Number) -> String {
     n.brief()
 }
 
@@ -25,7 +25,7 @@ pub fn header(case: &Case) -> String {
 /// 3/7` in the header), not as `≈` digits.
 pub fn header_in(case: &Case, exact: bool) -> String {
     let e = case.restitution();
-    let shown = |n: &crate::number::Number| match n.text() {
+    let shown = |n: &crate::values::number::Number| match n.text() {
         t if exact && t.len() <= 40 => t.into_owned(),
         _ => typed(n),
     };
@@ -44,7 +44,7 @@ pub fn header_in(case: &Case, exact: bool) -> String {
 }
 
 /// `Units: masses in kg, velocities in m/s, energies in J`, when units were given.
-pub fn header_units(u: &crate::units::Units) -> String {
+pub fn header_units(u: &crate::values::units::Units) -> String {
     if u.mass.is_none() && u.velocity.is_none() {
         return String::new();
     }
@@ -439,7 +439,7 @@ fn energy<N: Scalar>(case: &Case, en: &Energy<N>, notes: &Notes<N>) -> Block {
 }
 
 /// `--show changes`: per body, then the fractions and forces (a collision or a separation).
-pub fn changes<N: Scalar>(c: &ChangeReport<N>, units: &crate::units::Units) -> Block {
+pub fn changes<N: Scalar>(c: &ChangeReport<N>, units: &crate::values::units::Units) -> Block {
     let mut b = Block::new(format!(
         "Changes (body 1, body 2; impulse in {}, energies in {})",
         units.impulse(),
@@ -479,7 +479,7 @@ pub fn changes<N: Scalar>(c: &ChangeReport<N>, units: &crate::units::Units) -> B
 fn percent<N: Scalar>(x: &N) -> String {
     x.show()
         .parse::<f64>()
-        .map(|v| format!("= {} %", crate::number::num(v * 100.0)))
+        .map(|v| format!("= {} %", crate::values::number::num(v * 100.0)))
         .unwrap_or_default()
 }
 

@@ -1,8 +1,8 @@
 //! `collide track`'s result for people: the stop, the counts, the bodies, the bookkeeping.
 
 use super::text::{Block, paragraph};
-use crate::number::num;
 use crate::track::{Limits, Stop, Track, TrackReport};
+use crate::values::number::num;
 
 /// A quantity of a track's result beyond binary64.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

@@ -4,13 +4,13 @@
 //! `momentum {in, fin}`, `energy {in, fin, crunch, lost | released}`, `changes {dv, impulse,
 //! lost_fraction, kept_fraction, average_force}` (the ball's), `heights {in, fin}` (the ball's).
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 use serde::Serialize;
 
 use super::text::{Block, header_units, pair, paragraph, parts, typed};
 use super::{Section, Sections};
-use crate::quantity::Scalar;
-use crate::wall::WallCase;
+use crate::line::wall::WallCase;
+use crate::values::quantity::Scalar;
 
 /// A wall case's numbers. Field names are the JSON schema.
 #[derive(Clone, Debug, Serialize, PartialEq)]

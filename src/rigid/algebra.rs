@@ -5,7 +5,7 @@
 
 use num_traits::Zero;
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 
 /// A square (or any) rational matrix, row by row.
 pub type Mat = Vec<Vec<Q>>;
@@ -207,7 +207,7 @@ pub fn symmetric(a: &Mat) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::{int, ratio};
+    use crate::values::rational::{int, ratio};
 
     fn m(rows: &[&[i64]]) -> Mat {
         rows.iter()

@@ -7,7 +7,7 @@
 
 use num_traits::Zero;
 
-use crate::rational::{Q, half};
+use crate::values::rational::{Q, half};
 
 use super::algebra::{self, Mat, dot, rot_dim, spin_at, spin_matrix, sub};
 use super::shape::Shape;
@@ -330,7 +330,7 @@ impl Motion {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::{int, ratio};
+    use crate::values::rational::{int, ratio};
 
     #[test]
     fn a_pivoted_rod_turns_about_its_end() {

@@ -14,7 +14,7 @@
 
 use num_traits::Signed;
 
-use crate::rational::{Q, int, ratio, sqrt_exact};
+use crate::values::rational::{Q, int, ratio, sqrt_exact};
 
 use super::algebra::rot_dim;
 use super::body::Motion;
@@ -119,7 +119,7 @@ pub enum HomeworkError {
 }
 
 fn f(q: &Q) -> String {
-    crate::number::num(crate::rational::to_f64(q).unwrap_or(f64::NAN))
+    crate::values::number::num(crate::values::rational::to_f64(q).unwrap_or(f64::NAN))
 }
 
 impl Homework {
@@ -277,8 +277,10 @@ impl Homework {
                             .into());
                         }
                         None => {
-                            let x = crate::quantity::sqrt(&c2, 40);
-                            crate::rational::from_f64(crate::rational::to_f64(&x).unwrap_or(0.0))
+                            let x = crate::values::quantity::sqrt(&c2, 40);
+                            crate::values::rational::from_f64(
+                                crate::values::rational::to_f64(&x).unwrap_or(0.0),
+                            )
                         }
                     };
                     (vec![-root.clone(), b.clone()], vec![root, -b], rad)

@@ -14,7 +14,7 @@
 
 use num_traits::Signed;
 
-use crate::rational::{Q, from_f64, to_f64};
+use crate::values::rational::{Q, from_f64, to_f64};
 
 use super::algebra::{self, Mat, apply, dot, scale, sub};
 use super::body::Motion;
@@ -95,7 +95,7 @@ impl Problem {
         let along = dot(n, &w);
         if !along.is_positive() {
             return Err(ImpactError::NotApproaching(
-                to_f64(&along).map_or_else(|| along.to_string(), crate::number::num),
+                to_f64(&along).map_or_else(|| along.to_string(), crate::values::number::num),
             ));
         }
         let k = self.pair.collision_matrix();

@@ -8,7 +8,7 @@
 //! semidefinite). Along the unit normal `1/K_nn` is the effective mass:
 //! `(1/m1 + 1/m2 + (r1 x n).I1^-1.(r1 x n) + (r2 x n).I2^-1.(r2 x n))^-1` for free bodies.
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 
 use super::algebra::{self, Mat, apply, dot, mul, transpose};
 use super::body::{Body, Motion};
@@ -140,8 +140,8 @@ impl Pair {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::{int, ratio};
     use crate::rigid::body::Mobility;
+    use crate::values::rational::{int, ratio};
 
     /// A free uniform rod (mass M, length L, along y, centre at the origin) and a particle
     /// (mass m) hitting it at height b along x.

@@ -4,7 +4,7 @@
 //! Newton's law can create energy (Kane's paradox; Stronge 1991, J. Appl. Mech. 58:1049), which
 //! collide detects and says rather than prints as physics.
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 
 /// A restitution law.
 #[derive(

@@ -6,8 +6,8 @@
 
 use num_traits::Signed;
 
-use crate::quantity::sqrt;
-use crate::rational::{Q, half, pow10, sqrt_exact};
+use crate::values::quantity::sqrt;
+use crate::values::rational::{Q, half, pow10, sqrt_exact};
 
 use super::algebra::{self, dot, neg, scale, sub};
 use super::body::{Body, Motion};
@@ -200,7 +200,7 @@ impl Outcome {
         let scale_of = &ki + &kf;
         let tolerance = if let Some(ode) = &self.impact.ode {
             let rel = 10.0 * ode.error + 1e-13;
-            crate::rational::from_f64(rel) * &scale_of
+            crate::values::rational::from_f64(rel) * &scale_of
         } else if self.impact.approx {
             scale_of / Q::from(pow10(30))
         } else {

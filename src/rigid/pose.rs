@@ -7,8 +7,8 @@ use std::cell::Cell;
 
 use num_traits::Signed;
 
-use crate::number::Number;
-use crate::rational::{Q, from_f64};
+use crate::values::number::Number;
+use crate::values::rational::{Q, from_f64};
 
 use super::algebra::{self, Mat, rot_dim};
 use super::body::{Body, BodyError, Mobility, Motion};
@@ -315,7 +315,7 @@ pub fn problem(
 pub fn tolerance(rtol: Option<f64>) -> Result<f64, PoseError> {
     let t = rtol.unwrap_or(DEFAULT_RTOL);
     if !(1e-13..=1e-3).contains(&t) {
-        return Err(PoseError::Tolerance(crate::number::num(t)));
+        return Err(PoseError::Tolerance(crate::values::number::num(t)));
     }
     Ok(t)
 }
@@ -445,8 +445,8 @@ impl Spec {
             }
             Heavy::Mass(m) if m.is_positive() => m,
             Heavy::Mass(m) => {
-                let shown =
-                    crate::rational::to_f64(&m).map_or_else(|| m.to_string(), crate::number::num);
+                let shown = crate::values::rational::to_f64(&m)
+                    .map_or_else(|| m.to_string(), crate::values::number::num);
                 return Err(PoseError::Mass(index, shown));
             }
         };

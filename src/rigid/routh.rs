@@ -15,7 +15,7 @@
 
 use num_traits::Signed;
 
-use crate::rational::{Q, half, int, sqrt_exact};
+use crate::values::rational::{Q, half, int, sqrt_exact};
 
 use super::laws::{Law, Mode};
 
@@ -80,7 +80,7 @@ fn sign(q: &Q) -> Q {
 fn root(q: &Q, approx: &mut bool) -> Q {
     sqrt_exact(q).unwrap_or_else(|| {
         *approx = true;
-        crate::quantity::sqrt(q, DIGITS)
+        crate::values::quantity::sqrt(q, DIGITS)
     })
 }
 
@@ -207,7 +207,7 @@ pub fn solve(k: &[[Q; 2]; 2], w0: &[Q; 2], mu: &Q, law: Law, e: &Q) -> Result<Ro
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::ratio;
+    use crate::values::rational::ratio;
 
     /// A sphere (m = 1, R = 1, I = 2/5) on a floor: n = (0, -1) from ball to floor, t = (1, 0).
     /// K in (n, t): K_nn = 1/m = 1 (the lever is along n), K_tt = 1/m + R^2/I = 7/2, K_nt = 0.

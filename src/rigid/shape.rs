@@ -8,7 +8,7 @@
 //! sides `(a, b, c)` along x, y, z. A thin rod has no inertia about its own axis, so in space it
 //! is refused (a box of small width does the job).
 
-use crate::rational::{Q, int, ratio};
+use crate::values::rational::{Q, int, ratio};
 
 use super::algebra::{Mat, diag};
 use super::units::{Measure, RigidUnitError, Typed, TypedVec};

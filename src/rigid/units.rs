@@ -9,9 +9,9 @@
 //! (`rpm`, `rev/s`) and degrees are irrational in radians: their values are the binary64 of
 //! `pi` times the exact rest, marked approximate.
 
-use crate::number::{Number, NumberError};
-use crate::rational::{Q, from_f64, int, ratio};
-use crate::units::{Dimension, QuantityError, lookup};
+use crate::values::number::{Number, NumberError};
+use crate::values::rational::{Q, from_f64, int, ratio};
+use crate::values::units::{Dimension, QuantityError, lookup};
 
 /// What a typed value measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,7 +58,7 @@ pub struct RigidUnit {
     /// Whether the size has a factor of pi (turns and degrees in radians).
     pi: bool,
     /// Set for units from the common table, whose exact size it holds.
-    common: Option<&'static crate::units::Unit>,
+    common: Option<&'static crate::values::units::Unit>,
 }
 
 impl RigidUnit {

@@ -8,8 +8,8 @@ use toml::Spanned;
 
 use super::{About, ExpectTable, SceneError, among, from_toml, layout, located};
 use crate::contact::{Damping, LawKind, Laws, Method, Settings, Setup};
-use crate::number::Number;
 use crate::track::Limits;
+use crate::values::number::Number;
 
 /// `[contact]` in a scene: bodies pushing with contact forces (`collide contact`).
 #[derive(Deserialize)]

@@ -32,7 +32,7 @@ use std::path::{Path, PathBuf};
 use toml::Spanned;
 
 use crate::expect::{ExpectError, Expectation};
-use crate::number::{Number, NumberError};
+use crate::values::number::{Number, NumberError};
 
 pub use contact::{CONTACT_KEYS, ContactScene};
 pub use rigid::{RIGID_KEYS, RigidScene};
@@ -82,7 +82,7 @@ fn read_capped(path: &Path) -> Result<String, String> {
 /// Text with its control characters escaped (`\u{1b}`): a shared scene cannot send escape
 /// sequences to a terminal.
 fn printable(text: &str) -> String {
-    crate::number::printable(text)
+    crate::values::number::printable(text)
 }
 
 /// `[expect]` as written: JSON paths of the report, each with its value and place.

@@ -27,7 +27,6 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::{About, ExpectTable, SceneError, among, from_toml, located};
-use crate::number::Number;
 use crate::report::Section;
 use crate::rigid::impact::Problem;
 use crate::rigid::laws::Law;
@@ -36,6 +35,7 @@ use crate::rigid::pose::{
 };
 use crate::rigid::shape::ShapeTyped;
 use crate::rigid::units::{Measure, Typed, TypedVec};
+use crate::values::number::Number;
 
 type Val = Spanned<toml::Value>;
 
@@ -84,7 +84,7 @@ pub struct RigidScene {
     pub problem: Problem,
     pub show: Vec<Section>,
     pub exact: bool,
-    pub energy_unit: Option<&'static crate::units::EnergyUnit>,
+    pub energy_unit: Option<&'static crate::values::units::EnergyUnit>,
 }
 
 /// A value as a number (a TOML number or a string holding one).
@@ -281,7 +281,7 @@ impl RigidScene {
             .energy_unit
             .as_ref()
             .map(|u| {
-                crate::units::energy_unit(u.get_ref())
+                crate::values::units::energy_unit(u.get_ref())
                     .map_err(|e| err(Some(u.span()), e.to_string()))
             })
             .transpose()?;

@@ -20,12 +20,12 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::{About, ExpectTable, SceneError, among, from_toml, located};
-use crate::frame::Frame;
-use crate::number::{Given, Number};
+use crate::line::frame::Frame;
 use crate::report::Section;
 use crate::report::space::Show;
 use crate::space::pose::{Input, NormalGiven};
 use crate::space::typed::parse_masses;
+use crate::values::number::{Given, Number};
 
 /// The file as written.
 #[derive(Deserialize)]
@@ -85,7 +85,7 @@ pub struct SpaceScene {
     pub frame: Frame,
     pub show: Show,
     pub reverse: bool,
-    pub energy_unit: Option<&'static crate::units::EnergyUnit>,
+    pub energy_unit: Option<&'static crate::values::units::EnergyUnit>,
 }
 
 /// Top-level keys of the plane's JSON report (`[expect]` addresses them).
@@ -211,7 +211,7 @@ impl SpaceScene {
                 let t = r.get_ref().text();
                 Some(
                     Given::parse(&t, |s| {
-                        s.parse::<crate::restitution::Restitution>()
+                        s.parse::<crate::line::restitution::Restitution>()
                             .map(|r| r.number().clone())
                     })
                     .map_err(|e| err(Some(r.span()), format!("restitution: {e}")))?,
@@ -221,7 +221,7 @@ impl SpaceScene {
         let energy_unit = match &file.energy_unit {
             None => None,
             Some(u) => Some(
-                crate::units::energy_unit(u.get_ref())
+                crate::values::units::energy_unit(u.get_ref())
                     .map_err(|e| err(Some(u.span()), format!("energy_unit: {e}")))?,
             ),
         };

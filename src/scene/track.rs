@@ -7,9 +7,9 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::{About, ExpectTable, SceneError, among, from_toml, layout, located, where_in_layout};
-use crate::number::Number;
-use crate::restitution::{Restitution, RestitutionError};
+use crate::line::restitution::{Restitution, RestitutionError};
 use crate::track::{Limits, Track, TrackError};
+use crate::values::number::Number;
 
 /// `[track]` in a scene: bodies on a track (`collide track`).
 #[derive(Deserialize)]

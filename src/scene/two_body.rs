@@ -9,22 +9,22 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::{About, AnyScene, ExpectTable, SceneError, from_toml, located};
-use crate::case::Case;
 use crate::expect::ExpectError;
-use crate::frame::Frame;
-use crate::inertia::InertiaTensor;
-use crate::number::{Given, Number};
-use crate::problem::{Posed, Problem};
+use crate::line::case::Case;
+use crate::line::frame::Frame;
+use crate::line::inertia::InertiaTensor;
+use crate::line::problem::{Posed, Problem};
+use crate::line::restitution::Restitution;
+use crate::line::separation::Separation;
+use crate::line::unknowns::Solved;
+use crate::line::wall::WallCase;
 use crate::report::special::Special;
 use crate::report::{Section, Sections};
-use crate::restitution::Restitution;
-use crate::separation::Separation;
 use crate::table::columns::Column;
 use crate::table::sweep::{DEFAULT_MAX_ROWS, Grid};
 use crate::table::writer::RowFormat;
-use crate::units::{Dimension, Pair, PairError, parse_pair};
-use crate::unknowns::Solved;
-use crate::wall::WallCase;
+use crate::values::number::{Given, Number};
+use crate::values::units::{Dimension, Pair, PairError, parse_pair};
 
 /// The file as written. Field names are the scene format.
 #[derive(Deserialize)]
@@ -100,7 +100,7 @@ impl std::str::FromStr for Typed {
 
 impl<'de> Deserialize<'de> for Typed {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Typed, D::Error> {
-        crate::number::deserialize_parsed(
+        crate::values::number::deserialize_parsed(
             d,
             "a number, a string with a unit such as \"4 t\", or \"?\"",
         )
@@ -244,7 +244,7 @@ impl Scene {
             gravity: file.gravity.clone(),
             energy_unit: match &file.energy_unit {
                 Some(u) => Some(
-                    crate::units::energy_unit(u.get_ref())
+                    crate::values::units::energy_unit(u.get_ref())
                         .map_err(|e| err(Some(u.span()), e.to_string()))?,
                 ),
                 None => None,
@@ -262,7 +262,7 @@ impl Scene {
         let contact_time = match &file.contact_time {
             None => None,
             Some(t) => Some(
-                crate::units::seconds(t.get_ref())
+                crate::values::units::seconds(t.get_ref())
                     .map_err(|e| err(Some(t.span()), format!("contact_time: {e}")))?,
             ),
         };
@@ -272,7 +272,7 @@ impl Scene {
         let mut show = Sections::new(file.show.unwrap_or_else(|| Section::DEFAULT.to_vec()));
         show.contact_time = contact_time;
         let units = posed.units().clone();
-        show.heights = Some(crate::units::HeightScale::new(
+        show.heights = Some(crate::values::units::HeightScale::new(
             file.gravity.as_ref(),
             &units,
         ));

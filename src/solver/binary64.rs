@@ -21,12 +21,12 @@
 
 use nalgebra::Vector2;
 
-use crate::collision::Collision;
-use crate::compensated::{Dd, dot2};
-use crate::ellipse::Ellipse;
-use crate::frame::Frame;
+use crate::line::collision::Collision;
+use crate::line::ellipse::Ellipse;
+use crate::line::frame::Frame;
 use crate::solver::exact::ExactCollision;
 use crate::solver::{Lab, Pair, Solver};
+use crate::values::compensated::{Dd, dot2};
 
 /// A binary64 collision seen by an observer moving at `w`.
 #[derive(Clone, Debug)]
@@ -60,7 +60,7 @@ pub fn observer_velocity(c: &Collision, frame: &Frame) -> Dd {
         Frame::RestFin(i) => c.v_fin_dd()[i - 1],
         Frame::Velocity(n) => Dd::new(n.value()),
         // Refused on a line by `Frame::on_line` before a solver sees it.
-        Frame::Vector(v) => Dd::new(v.first().map_or(0.0, crate::number::Number::value)),
+        Frame::Vector(v) => Dd::new(v.first().map_or(0.0, crate::values::number::Number::value)),
     }
 }
 
@@ -262,8 +262,8 @@ impl Solver for Binary64<'_> {
             // factor 1 - e^2 exactly from the typed value, rounded once, so the energy printed
             // agrees with the label.
             let x = self.lab.restitution.number().exact();
-            let factor = crate::rational::int(1) - &x * &x;
-            let factor = crate::quantity::to_f64(&factor).unwrap_or(0.0);
+            let factor = crate::values::rational::int(1) - &x * &x;
+            let factor = crate::values::quantity::to_f64(&factor).unwrap_or(0.0);
             return (Dd::new(factor) * self.crunch_dd()).value();
         }
         let lost = Dd::sum(1.0, -e) * Dd::sum(1.0, e) * self.crunch_dd();
@@ -331,7 +331,8 @@ impl Solver for Binary64<'_> {
         // frame moves with them (module docs).
         let w = match self.shift {
             Shift::By => {
-                crate::quantity::from_f64(self.w.hi) + crate::quantity::from_f64(self.w.lo)
+                crate::values::quantity::from_f64(self.w.hi)
+                    + crate::values::quantity::from_f64(self.w.lo)
             }
             Shift::Com => x.observer_velocity(&Frame::Com),
             Shift::Fin(i) => x.observer_velocity(&Frame::RestFin(i + 1)),
@@ -366,7 +367,7 @@ impl Lab for Collision {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::inertia::{InertiaTensor, Mass};
+    use crate::line::inertia::{InertiaTensor, Mass};
 
     fn case(m1: &str, m2: &str, v: [f64; 2], e: &str) -> Collision {
         let m = InertiaTensor::diagonal(&m1.parse::<Mass>().unwrap(), &m2.parse::<Mass>().unwrap());

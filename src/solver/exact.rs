@@ -4,15 +4,15 @@
 //! general tensor, its axes) are computed from the exact energies to well past
 //! `APPROX_DIGITS` digits and marked approximate.
 
-use crate::rational::{Q, half};
+use crate::values::rational::{Q, half};
 use num_traits::{One, Signed, Zero};
 
-use crate::case::Case;
-use crate::collision::Collision;
-use crate::ellipse::Ellipse;
-use crate::frame::Frame;
-use crate::quantity::{APPROX_DIGITS, Exact, from_f64, sqrt};
+use crate::line::case::Case;
+use crate::line::collision::Collision;
+use crate::line::ellipse::Ellipse;
+use crate::line::frame::Frame;
 use crate::solver::{Lab, Pair, Solver};
+use crate::values::quantity::{APPROX_DIGITS, Exact, from_f64, sqrt};
 
 /// Digits carried inside irrational computations before the final truncation.
 const WORK_DIGITS: usize = APPROX_DIGITS + 20;
@@ -83,7 +83,9 @@ impl ExactCollision {
             Frame::RestFin(i) => self.v_fin_q()[i - 1].clone(),
             Frame::Velocity(n) => n.exact(),
             // Refused on a line by `Frame::on_line` before a solver sees it.
-            Frame::Vector(v) => v.first().map_or_else(Q::zero, crate::number::Number::exact),
+            Frame::Vector(v) => v
+                .first()
+                .map_or_else(Q::zero, crate::values::number::Number::exact),
         }
     }
 
@@ -145,10 +147,10 @@ impl ExactCollision {
         (Q::one() - &self.e * &self.e) * self.crunch_q()
     }
     /// What the collision changes for each body (`changes`).
-    pub fn changes(&self, contact_time: Option<&Q>) -> crate::changes::Changes {
+    pub fn changes(&self, contact_time: Option<&Q>) -> crate::line::changes::Changes {
         let fin = self.v_fin_q();
-        crate::changes::Changes::of(
-            &crate::changes::Event {
+        crate::line::changes::Changes::of(
+            &crate::line::changes::Event {
                 tensor: [[&self.a, &self.c], [&self.c, &self.b]],
                 v_in: &self.v,
                 fin: &fin,
@@ -164,8 +166,8 @@ impl ExactCollision {
     /// `lambda_min = det / lambda_max` avoids the cancellation in `(tr - sqrt(disc)) / 2`.
     fn principal_axes(&self) -> [(Q, Pair<Q>); 2] {
         let tr = &self.a + &self.b;
-        let disc =
-            (&self.a - &self.b) * (&self.a - &self.b) + crate::rational::int(4) * &self.c * &self.c;
+        let disc = (&self.a - &self.b) * (&self.a - &self.b)
+            + crate::values::rational::int(4) * &self.c * &self.c;
         let l_max = (&tr + sqrt(&disc, WORK_DIGITS)) * half();
         let l_min = self.det() / &l_max;
         let axis = |l: &Q| {
@@ -237,7 +239,7 @@ impl Solver for ExactCollision {
         r(self.lost_q())
     }
     fn ellipse(&self, ke: &Exact) -> Ellipse<Exact> {
-        let two_ke = ke.rational() * crate::rational::int(2);
+        let two_ke = ke.rational() * crate::values::rational::int(2);
         let radius = |l: &Q| Exact::Approx(sqrt(&(&two_ke / l), WORK_DIGITS));
         if self.c.is_zero() {
             return Ellipse {
@@ -282,8 +284,8 @@ impl Solver for ExactCollision {
         let energy =
             (self.ke_fin_q() - self.ke_com_q() - &self.e * &self.e * self.crunch_q()).abs();
         (
-            crate::quantity::to_f64(&momentum).unwrap_or(f64::MAX),
-            crate::quantity::to_f64(&energy).unwrap_or(f64::MAX),
+            crate::values::quantity::to_f64(&momentum).unwrap_or(f64::MAX),
+            crate::values::quantity::to_f64(&energy).unwrap_or(f64::MAX),
         )
     }
     fn approaching(&self) -> bool {

@@ -6,9 +6,9 @@
 pub mod binary64;
 pub mod exact;
 
-use crate::ellipse::Ellipse;
-use crate::frame::Frame;
-use crate::quantity::Scalar;
+use crate::line::ellipse::Ellipse;
+use crate::line::frame::Frame;
+use crate::values::quantity::Scalar;
 
 pub type Pair<N> = [N; 2];
 

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use num_traits::{Signed, Zero};
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 
 /// `c + sum a_i x_i + sum b_ij x_i x_j`.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -266,7 +266,7 @@ pub fn sign_change_roots(c: &[Q], digits: usize) -> Vec<Q> {
     let at = |k: usize| -> Option<Q> {
         let theta = -std::f64::consts::PI + std::f64::consts::TAU * k as f64 / GRID as f64;
         let s = (theta / 2.0).tan();
-        s.is_finite().then(|| crate::rational::from_f64(s))
+        s.is_finite().then(|| crate::values::rational::from_f64(s))
     };
     let mut out = Vec::new();
     let mut prev: Option<(Q, Q)> = None;
@@ -290,8 +290,8 @@ pub fn sign_change_roots(c: &[Q], digits: usize) -> Vec<Q> {
 /// `10^-digits` times the bracket's size (and at least 1e-300 absolute).
 fn bisect(f: &impl Fn(&Q) -> Q, mut lo: Q, mut hi: Q, lo_negative: bool, digits: usize) -> Q {
     let size = lo.clone().abs().max(hi.clone().abs()).max(Q::ONE);
-    let width = size / Q::from(crate::rational::pow10(digits));
-    let two = crate::rational::int(2);
+    let width = size / Q::from(crate::values::rational::pow10(digits));
+    let two = crate::values::rational::int(2);
     for _ in 0..2000 {
         if (&hi - &lo).abs() <= width {
             break;
@@ -339,18 +339,18 @@ pub fn quadratic_roots(a: &Q, b: &Q, c: &Q) -> Vec<Root> {
         }
         return vec![Root::Exact(-c / b)];
     }
-    let four = crate::rational::int(4);
+    let four = crate::values::rational::int(4);
     let d = b * b - four * a * c;
     if d.is_negative() {
         return Vec::new();
     }
-    let two = crate::rational::int(2);
+    let two = crate::values::rational::int(2);
     if d.is_zero() {
         return vec![Root::Exact(-b / (two * a))];
     }
-    let (root, exact) = match crate::rational::sqrt_exact(&d) {
+    let (root, exact) = match crate::values::rational::sqrt_exact(&d) {
         Some(r) => (r, true),
-        None => (crate::quantity::sqrt(&d, ROOT_DIGITS + 5), false),
+        None => (crate::values::quantity::sqrt(&d, ROOT_DIGITS + 5), false),
     };
     let q = if b.is_negative() {
         -(b - &root) / &two
@@ -375,7 +375,7 @@ pub fn quadratic_roots(a: &Q, b: &Q, c: &Q) -> Vec<Root> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::{int, ratio};
+    use crate::values::rational::{int, ratio};
 
     #[test]
     fn products_of_unknowns() {
@@ -416,7 +416,7 @@ mod tests {
             panic!("sqrt 2 is irrational")
         };
         let sq = q * q - int(2);
-        assert!(sq.abs() < crate::rational::ratio(1, 1_000_000_000_000_000_000));
+        assert!(sq.abs() < crate::values::rational::ratio(1, 1_000_000_000_000_000_000));
         assert!(quadratic_roots(&int(1), &int(0), &int(1)).is_empty());
     }
 }

@@ -11,8 +11,8 @@ use std::fmt;
 
 use num_traits::Zero;
 
-use crate::number::{Number, NumberError};
-use crate::rational::{Q, int, to_f64};
+use crate::values::number::{Number, NumberError};
+use crate::values::rational::{Q, int, to_f64};
 
 /// An angle from +x, counterclockwise.
 #[derive(Clone, Debug, PartialEq)]
@@ -50,7 +50,7 @@ pub enum AngleError {
 impl Angle {
     /// An angle of exact degrees.
     pub fn degrees(q: Q) -> Angle {
-        let typed = format!("{}deg", crate::quantity::fraction(&q));
+        let typed = format!("{}deg", crate::values::quantity::fraction(&q));
         Angle {
             value: Value::Degrees(q),
             typed,
@@ -125,7 +125,7 @@ impl Angle {
 /// others within an ulp.
 fn sin_cos_degrees(d: &Q) -> (f64, f64) {
     // pi/180 as a double-double.
-    const PI_180: crate::compensated::Dd = crate::compensated::Dd {
+    const PI_180: crate::values::compensated::Dd = crate::values::compensated::Dd {
         hi: 0.017453292519943295,
         lo: 2.9486522708701687e-19,
     };
@@ -142,7 +142,7 @@ fn sin_cos_degrees(d: &Q) -> (f64, f64) {
         (0.75f64.sqrt(), 0.5)
     } else {
         let tf = to_f64(&t).unwrap_or(0.0);
-        let r = crate::compensated::Dd::new(tf) * PI_180;
+        let r = crate::values::compensated::Dd::new(tf) * PI_180;
         (
             r.hi.cos() - r.lo * r.hi.sin(),
             r.hi.sin() + r.lo * r.hi.cos(),

@@ -10,8 +10,8 @@
 //! `by_normal_parts` is the other form, kept to check this one: the normal parts `v.n^` collide
 //! by the rail's rule (`collision::Collision`), the tangential parts pass unchanged.
 
-use crate::compensated::Dd;
-use crate::rational::{Q, from_f64, to_f64};
+use crate::values::compensated::Dd;
+use crate::values::rational::{Q, from_f64, to_f64};
 
 /// Unit roundoff of binary64.
 const U: f64 = f64::EPSILON / 2.0;

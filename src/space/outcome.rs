@@ -8,9 +8,9 @@
 
 use num_traits::{Signed, Zero};
 
-use crate::frame::Frame;
-use crate::quantity::Exact;
-use crate::rational::{Q, half, to_f64};
+use crate::line::frame::Frame;
+use crate::values::quantity::Exact;
+use crate::values::rational::{Q, half, to_f64};
 
 /// N bodies, before and after, in `dim` dimensions.
 #[derive(Clone, Debug, PartialEq)]
@@ -116,7 +116,7 @@ impl Outcome {
     pub fn lost(&self) -> Q {
         let (ki, kf) = (self.ke_in(), self.ke_fin());
         let d = &ki - &kf;
-        if self.approx && d.clone().abs() * Q::from(crate::rational::pow10(30)) <= ki + kf {
+        if self.approx && d.clone().abs() * Q::from(crate::values::rational::pow10(30)) <= ki + kf {
             return Q::ZERO;
         }
         d
@@ -136,9 +136,9 @@ impl Outcome {
             return None;
         }
         let nn = dot(n, n);
-        let (len, exact) = match crate::rational::sqrt_exact(&nn) {
+        let (len, exact) = match crate::values::rational::sqrt_exact(&nn) {
             Some(r) => (r, true),
-            None => (crate::quantity::sqrt(&nn, 40), false),
+            None => (crate::values::quantity::sqrt(&nn, 40), false),
         };
         let along = |v: &[Q]| dot(v, n) / &len;
         Some(NormalParts {
@@ -162,11 +162,11 @@ impl Outcome {
     /// i's velocity before (`rest-in:i`) or after (`rest-fin:i`), or the vector given (its
     /// typed value with `typed`, else its binary64 value).
     pub fn observer(&self, frame: &Frame, typed: bool) -> Result<Vec<Q>, FrameVelocityError> {
-        let q = |n: &crate::number::Number| {
+        let q = |n: &crate::values::number::Number| {
             if typed {
                 n.exact()
             } else {
-                crate::rational::from_f64(n.value())
+                crate::values::rational::from_f64(n.value())
             }
         };
         let body = |i: usize| {
@@ -304,7 +304,7 @@ pub fn magnitude(q: &Q) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::{int, ratio};
+    use crate::values::rational::{int, ratio};
 
     fn v(xs: &[i64]) -> Vec<Q> {
         xs.iter().map(|x| int(*x)).collect()

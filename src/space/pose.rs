@@ -9,9 +9,9 @@
 
 use num_traits::{Signed, Zero};
 
-use crate::number::{Given, Number};
-use crate::rational::{Q, from_f64};
-use crate::units::{Quantity, ResolveError, Units, resolve};
+use crate::values::number::{Given, Number};
+use crate::values::rational::{Q, from_f64};
+use crate::values::units::{Quantity, ResolveError, Units, resolve};
 
 use super::angle::Angle;
 use super::outcome::Outcome;
@@ -321,7 +321,7 @@ impl Input {
                 if b_q.abs() > sum {
                     return Err(PoseError::Miss {
                         b: b.to_string(),
-                        sum: crate::quantity::fraction(&sum),
+                        sum: crate::values::quantity::fraction(&sum),
                     });
                 }
                 let (Some(v1), Some(v2)) = (v_in[0].value(), v_in[1].value()) else {
@@ -333,7 +333,7 @@ impl Input {
                 }
                 // n = cos(phi) d/|d| + sin(phi) d_perp/|d|, along sqrt(R^2 - b^2) d + b d_perp.
                 let c2 = &sum * &sum - &b_q * &b_q;
-                let (c, rounded) = match crate::rational::sqrt_exact(&c2) {
+                let (c, rounded) = match crate::values::rational::sqrt_exact(&c2) {
                     Some(c) => (c, false),
                     None if self.exact => {
                         return Err(PoseError::Irrational {
@@ -343,7 +343,7 @@ impl Input {
                         });
                     }
                     None => (
-                        from_f64(crate::rational::to_f64(&c2).unwrap_or(0.0).sqrt()),
+                        from_f64(crate::values::rational::to_f64(&c2).unwrap_or(0.0).sqrt()),
                         true,
                     ),
                 };
@@ -395,7 +395,7 @@ fn unit_of(a: &Angle, exact: bool, what: &str) -> Result<(Vec<Q>, bool), PoseErr
 /// the velocity is the binary64 nearest the product).
 fn round_if(q: Q, rounded: bool) -> Q {
     if rounded {
-        from_f64(crate::rational::to_f64(&q).unwrap_or(0.0))
+        from_f64(crate::values::rational::to_f64(&q).unwrap_or(0.0))
     } else {
         q
     }
@@ -424,8 +424,8 @@ pub fn outcomes(posed: &Posed, solved: &solve::Solved) -> Vec<(Outcome, Vec<solv
                     .iter()
                     .chain(s.v_in.iter().flatten())
                     .chain(s.fin.iter().flatten())
-                    .any(|x| matches!(x, crate::quantity::Exact::Approx(_)));
-            let q = |e: &crate::quantity::Exact| e.rational().clone();
+                    .any(|x| matches!(x, crate::values::quantity::Exact::Approx(_)));
+            let q = |e: &crate::values::quantity::Exact| e.rational().clone();
             let outcome = Outcome {
                 dim: st.dim,
                 masses: s.masses.iter().map(q).collect(),
@@ -443,16 +443,18 @@ pub fn outcomes(posed: &Posed, solved: &solve::Solved) -> Vec<(Outcome, Vec<solv
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::int;
     use crate::space::typed::parse_list;
+    use crate::values::rational::int;
 
     fn input(m: &str, v: &str) -> Input {
         Input {
             masses: m
                 .split(',')
                 .map(|s| {
-                    Given::parse_mass(s, |s| crate::units::parse(s, crate::units::Dimension::Mass))
-                        .unwrap()
+                    Given::parse_mass(s, |s| {
+                        crate::values::units::parse(s, crate::values::units::Dimension::Mass)
+                    })
+                    .unwrap()
                 })
                 .collect(),
             v_in: parse_list(v).unwrap(),
@@ -470,7 +472,10 @@ mod tests {
         let (o, _) = &outcomes(&posed, &solved)[0];
         assert_eq!(
             o.fin[0],
-            vec![crate::rational::ratio(75, 8), crate::rational::ratio(25, 2)]
+            vec![
+                crate::values::rational::ratio(75, 8),
+                crate::values::rational::ratio(25, 2)
+            ]
         );
         assert_eq!(posed.units.velocity, Some("m/s"));
     }

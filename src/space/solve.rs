@@ -14,9 +14,9 @@
 
 use num_traits::{Signed, Zero};
 
-use crate::number::Given;
-use crate::quantity::Exact;
-use crate::rational::{Q, from_f64, to_f64};
+use crate::values::number::Given;
+use crate::values::quantity::Exact;
+use crate::values::rational::{Q, from_f64, to_f64};
 
 use super::algebra::{self, Poly, Root, TooNonlinear};
 
@@ -343,7 +343,9 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
         }
         eqs.push((Law::Energy, p));
     } else if let Some(q) = e_value {
-        return Err(SolveError::NeedsNormal(crate::quantity::fraction(&q)));
+        return Err(SolveError::NeedsNormal(crate::values::quantity::fraction(
+            &q,
+        )));
     }
     // Otherwise e is unknown without a line of impact: the final velocities fix it.
     for (i, v) in given.v_in.iter().chain(&given.fin).enumerate() {
@@ -390,7 +392,7 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
                     // are no reason to fail.
                     let ok = r.is_zero()
                         || ((given.inexact || approx)
-                            && r.abs() <= crate::rational::from_f64(INEXACT_TOL) * &scale);
+                            && r.abs() <= crate::values::rational::from_f64(INEXACT_TOL) * &scale);
                     Check {
                         law: *law,
                         residual: r,
@@ -710,7 +712,7 @@ impl Ellipse {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::{int, ratio};
+    use crate::values::rational::{int, ratio};
 
     fn k(n: i64) -> Given<Q> {
         Given::Known(int(n))

@@ -4,8 +4,8 @@
 //! Bodies are separated by commas at the top level; commas inside parentheses belong to the
 //! vector: `-v '(4,1),(-1,0.5)'`. A plain number is a velocity on a line (one dimension).
 
-use crate::number::{Given, Number, NumberError};
-use crate::units::{
+use crate::values::number::{Given, Number, NumberError};
+use crate::values::units::{
     Dimension, Pair, PairError, Quantity, QuantityError, Unit, lookup, parse as parse_quantity,
     parse_pair,
 };

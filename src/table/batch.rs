@@ -10,9 +10,9 @@ use std::io::{self, BufRead, BufReader, Read};
 use std::path::Path;
 
 use super::row::{LayoutError, RowCase, RowError, RowProblem, ValueProblem};
-use crate::inertia::Mass;
-use crate::number::Number;
-use crate::restitution::Restitution;
+use crate::line::inertia::Mass;
+use crate::line::restitution::Restitution;
+use crate::values::number::Number;
 
 /// Input format (`--input-format`; by default from the file's extension, or for stdin from its
 /// first character: `{` means JSON Lines).

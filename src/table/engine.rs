@@ -13,13 +13,13 @@ use super::columns::Column;
 use super::row::{Row, RowCase, RowError, RowProblem};
 use super::sweep::{Grid, Param, Shard};
 use super::writer::{FieldCache, RowWriter, Sealed, Sink};
-use crate::case::Case;
-use crate::collision::Collision;
-use crate::inertia::InertiaTensor;
-use crate::number::Number;
-use crate::output::Progress;
-use crate::restitution::Restitution;
+use crate::line::case::Case;
+use crate::line::collision::Collision;
+use crate::line::inertia::InertiaTensor;
+use crate::line::restitution::Restitution;
 use crate::solver::binary64::Binary64;
+use crate::values::number::Number;
+use crate::values::output::Progress;
 
 /// Solves a row's columns into `out`. `shared` is the tensor when every row has the same one.
 pub fn solve_row(
@@ -139,7 +139,7 @@ pub fn write_chunks<C: Send>(
             summary.rows += c.rows;
             progress.advance(c.rows + c.skipped.len() as u64);
             for s in &c.skipped {
-                crate::output::diagnostic(format_args!("skipped {s}"));
+                crate::values::output::diagnostic(format_args!("skipped {s}"));
             }
             summary.skipped += c.skipped.len() as u64;
             if let Some(stop) = c.stop {

@@ -1,10 +1,10 @@
 //! One row of a table: its inputs, the solver computing it, and why a row can be bad.
 
-use crate::inertia::{InertiaError, MassError};
-use crate::number::NumberError;
-use crate::restitution::RestitutionError;
+use crate::line::inertia::{InertiaError, MassError};
+use crate::line::restitution::RestitutionError;
 use crate::solver::Solver;
 use crate::solver::binary64::Binary64;
+use crate::values::number::NumberError;
 
 /// The inputs of one row: `M = [[m11, m12], [m12, m22]]`, `V`, `e`.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,13 +9,13 @@
 use std::fmt;
 use std::str::FromStr;
 
-use crate::rational::{IBig, Q, UBig, pow10, to_f64};
+use crate::values::rational::{IBig, Q, UBig, pow10, to_f64};
 use num_traits::ToPrimitive;
 
 use super::row::ValueProblem;
-use crate::inertia::Mass;
-use crate::number::{Number, NumberError};
-use crate::restitution::Restitution;
+use crate::line::inertia::Mass;
+use crate::line::restitution::Restitution;
+use crate::values::number::{Number, NumberError};
 
 /// The default cap on a sweep's rows (`--max-rows`, `max_rows` in a scene): 1e8 rows, about
 /// 7 GB of CSV; more must be asked for.

@@ -399,7 +399,7 @@ impl<'a> Sink<'a> {
 
 /// A page of a text table (the rows of one chunk): the fields as they come, aligned when the
 /// page is done, each column as wide as its widest value (or name), right-aligned; a page wider
-/// than the terminal ([`crate::terminal::width`]) is folded into groups of columns, each
+/// than the terminal ([`crate::values::terminal::width`]) is folded into groups of columns, each
 /// repeating the first. Every page starts with the names (unless `--header never`): a text
 /// table is for people, who read pages, not shards.
 pub struct TextPage {
@@ -429,7 +429,7 @@ impl TextPage {
         for k in 0..self.ends.len() {
             widths[k % columns] = widths[k % columns].max(field(k).len());
         }
-        let groups = crate::terminal::fold(&widths, 1, 2, crate::terminal::width());
+        let groups = crate::values::terminal::fold(&widths, 1, 2, crate::values::terminal::width());
         let mut out = Vec::with_capacity(self.fields.len() + self.ends.len() * 4);
         let cell = |out: &mut Vec<u8>, c: usize, text: &[u8], first: bool| {
             let pad = widths[c] - text.len() + if first { 0 } else { 2 };

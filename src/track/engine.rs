@@ -651,7 +651,7 @@ pub(super) fn budgets_hold(track: &Track, run: &Run) -> Result<(), Broken> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::inertia::Mass;
+    use crate::line::inertia::Mass;
     use crate::track::Body;
     use proptest::prelude::*;
 

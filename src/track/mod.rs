@@ -27,9 +27,9 @@ mod zeno;
 
 use serde::Serialize;
 
-use crate::inertia::{Mass, MassError};
-use crate::number::Number;
-use crate::restitution::{Restitution, RestitutionError};
+use crate::line::inertia::{Mass, MassError};
+use crate::line::restitution::{Restitution, RestitutionError};
+use crate::values::number::Number;
 
 pub use pi::{PiTheory, TrackReport};
 

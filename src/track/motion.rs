@@ -2,10 +2,10 @@
 //! bodies (or a body and a wall) approach, when a gap closes, the impulse a collision gives, and
 //! how positions are put back into contact after rounding.
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 use num_traits::One;
 
-use crate::compensated::{Dd, two_prod, two_sum};
+use crate::values::compensated::{Dd, two_prod, two_sum};
 
 /// Two bodies approach when their closing speed `v1 - v2` exceeds `2^-50` (about 8.9e-16) of the
 /// sum of their own speeds `|v1| + |v2|`. Each velocity after a collision is the exact result
@@ -28,7 +28,7 @@ pub fn dd_of(q: &Q) -> Dd {
     if !hi.is_finite() {
         return Dd::new(hi);
     }
-    let rest = q - crate::rational::from_f64(hi);
+    let rest = q - crate::values::rational::from_f64(hi);
     Dd {
         hi,
         lo: rest.to_f64().value(),
@@ -48,7 +48,7 @@ pub struct Kick {
 
 impl Kick {
     pub fn new(m1: &Q, m2: &Q, e: f64) -> Kick {
-        let e_exact = crate::rational::from_f64(e);
+        let e_exact = crate::values::rational::from_f64(e);
         let total = m1 + m2;
         let k = Q::one() + e_exact;
         Kick {

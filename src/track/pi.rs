@@ -5,7 +5,7 @@ use dashu_float::FBig;
 use dashu_float::round::mode::HalfEven;
 use num_traits::One;
 
-use crate::rational::{IBig, Q, UBig};
+use crate::values::rational::{IBig, Q, UBig};
 use serde::Serialize;
 
 use super::{Run, Stop, Track};
@@ -28,8 +28,12 @@ fn big(n: impl Into<IBig>, bits: usize) -> Big {
 ///   is the same at both ends of that interval.
 pub fn pi_count(m: &Q, big_m: &Q) -> UBig {
     let r = m / big_m;
-    let third = crate::rational::ratio(1, 3);
-    for (q, k) in [(crate::rational::int(3), 2u32), (Q::one(), 3), (third, 5)] {
+    let third = crate::values::rational::ratio(1, 3);
+    for (q, k) in [
+        (crate::values::rational::int(3), 2u32),
+        (Q::one(), 3),
+        (third, 5),
+    ] {
         if r == q {
             return UBig::from(k);
         }
@@ -134,7 +138,7 @@ mod tests {
 
     #[test]
     fn whole_multiple_ratios_are_exact() {
-        let q = crate::rational::ratio;
+        let q = crate::values::rational::ratio;
         assert_eq!(pi_count(&q(1, 1), &q(1, 1)), UBig::from(3u8));
         assert_eq!(pi_count(&q(1, 1), &q(3, 1)), UBig::from(5u8));
         assert_eq!(pi_count(&q(3, 1), &q(1, 1)), UBig::from(2u8));

@@ -7,10 +7,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::number::{Number, NumberList};
+use crate::line::restitution::Restitution;
 use crate::report::json;
-use crate::restitution::Restitution;
 use crate::track::{Contact, Event, Limits, Run, Track, TrackReport};
+use crate::values::number::{Number, NumberList};
 
 use super::InputError;
 
@@ -221,7 +221,7 @@ fn default_until(track: &Track) -> Result<f64, InputError> {
     if run.collisions == 0 || !(t > 0.0 && t.is_finite()) {
         return Ok(10.0);
     }
-    Ok(crate::number::round_significant(t, 2))
+    Ok(crate::values::number::round_significant(t, 2))
 }
 
 /// The state at `SAMPLES + 1` evenly spaced times from 0 to `end` and just before and at each

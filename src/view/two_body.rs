@@ -5,15 +5,15 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::case::parse_inertia;
-use crate::collision::Collision;
-use crate::frame::Frame;
-use crate::number::Given;
-use crate::problem::{Posed, Problem};
+use crate::line::case::parse_inertia;
+use crate::line::collision::Collision;
+use crate::line::frame::Frame;
+use crate::line::problem::{Posed, Problem};
+use crate::line::restitution::Restitution;
 use crate::report::{AnyReport, Report, Section, Sections, json, solved};
-use crate::restitution::Restitution;
 use crate::solver::{Lab, Solver};
-use crate::units::{Dimension, HeightScale, parse_pair};
+use crate::values::number::Given;
+use crate::values::units::{Dimension, HeightScale, parse_pair};
 
 use super::InputError;
 
@@ -125,7 +125,7 @@ pub struct Reversed {
 /// The typed values as `collide solve` would read them.
 struct Typed {
     problem: Problem,
-    inertia: Option<crate::inertia::InertiaTensor>,
+    inertia: Option<crate::line::inertia::InertiaTensor>,
     frame: Frame,
 }
 
@@ -263,7 +263,7 @@ fn picture(
     else {
         unreachable!("the sections asked for are computed");
     };
-    let shape = |e: &crate::ellipse::Ellipse<f64>, ke: f64| Shape {
+    let shape = |e: &crate::line::ellipse::Ellipse<f64>, ke: f64| Shape {
         ke,
         a: e.a,
         b: e.b,
@@ -311,7 +311,7 @@ fn picture(
 
 /// `M^(1/2) = sum sqrt(lambda_i) q_i q_i^T` over the principal axes (`diag(sqrt M1, sqrt M2)` for
 /// masses).
-fn sqrt_m(m: &crate::inertia::InertiaTensor) -> [[f64; 2]; 2] {
+fn sqrt_m(m: &crate::line::inertia::InertiaTensor) -> [[f64; 2]; 2] {
     if m.is_diagonal() {
         let d = m.matrix();
         return [[d[(0, 0)].sqrt(), 0.0], [0.0, d[(1, 1)].sqrt()]];

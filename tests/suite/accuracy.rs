@@ -10,11 +10,11 @@
 use std::collections::BTreeMap;
 
 use collide::accuracy::{Family, families, ulps};
-use collide::quantity::{Exact, from_f64, to_f64};
-use collide::rational::Q;
 use collide::report::{Report, Section, Sections};
 use collide::solver::binary64::Binary64;
 use collide::solver::exact::ExactCollision;
+use collide::values::quantity::{Exact, from_f64, to_f64};
+use collide::values::rational::Q;
 use num_traits::Signed;
 
 /// The stated bounds, in ulps (README "Accuracy"). Measured worst cases (printed by

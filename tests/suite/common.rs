@@ -37,8 +37,9 @@ pub fn assert_pair(actual: [f64; 2], expected: [f64; 2], what: &str) {
 /// as in the README's accuracy table.
 #[track_caller]
 pub fn assert_ulps(actual: f64, expected: f64, n: f64, what: &str) {
-    let ulp =
-        collide::compensated::pow2(collide::compensated::exponent(expected).max(-1022 + 52) - 52);
+    let ulp = collide::values::compensated::pow2(
+        collide::values::compensated::exponent(expected).max(-1022 + 52) - 52,
+    );
     assert!(
         (actual - expected).abs() <= n * ulp,
         "{what}: expected {expected:e} to {n} ulps, got {actual:e} ({:.2} ulps)",
@@ -47,13 +48,13 @@ pub fn assert_ulps(actual: f64, expected: f64, n: f64, what: &str) {
 }
 
 /// The nearest binary64 to an exact rational (ties to even).
-pub fn rounded(q: &collide::rational::Q) -> f64 {
-    collide::rational::to_f64(q).expect("within binary64")
+pub fn rounded(q: &collide::values::rational::Q) -> f64 {
+    collide::values::rational::to_f64(q).expect("within binary64")
 }
 
 /// The exact value of a binary64.
-pub fn exact(x: f64) -> collide::rational::Q {
-    collide::rational::from_f64(x)
+pub fn exact(x: f64) -> collide::values::rational::Q {
+    collide::values::rational::from_f64(x)
 }
 
 /// Runs `collide args` whatever its exit status: (exit code, stdout, stderr).

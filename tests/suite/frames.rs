@@ -3,10 +3,10 @@
 use crate::common;
 
 use collide::accuracy::case;
-use collide::frame::Frame;
-use collide::quantity::from_f64;
+use collide::line::frame::Frame;
 use collide::solver::Solver;
 use collide::solver::binary64::Binary64;
+use collide::values::quantity::from_f64;
 use common::{REL, assert_close, assert_exact, assert_pair, collide, stdout};
 use proptest::prelude::*;
 use serde::Deserialize;
@@ -270,7 +270,7 @@ proptest! {
         let c = case([[m1, 0.0], [0.0, m2]], [v1, v2], e).unwrap();
         let w = s * 10f64.powi(k);
         let lab = Binary64::lab(&c);
-        let moving = Binary64::new(&c, &Frame::Velocity(collide::number::Number::from_f64(w).unwrap()));
+        let moving = Binary64::new(&c, &Frame::Velocity(collide::values::number::Number::from_f64(w).unwrap()));
         prop_assert_eq!(moving.crunch(), lab.crunch());
         prop_assert_eq!(moving.lost(), lab.lost());
         prop_assert_eq!(moving.relative_velocity(), lab.relative_velocity());
@@ -338,8 +338,12 @@ fn frames_energies_are_in_the_unit_the_label_names() {
     // They were joules under an eV label, in text and JSON. KE_IN = 1/2 1 kg (2 m/s)^2 = 2 J
     // = 2 / 1.602176634e-19 eV (exact), rounded once.
     let ev = |j: &str| {
-        let q = |s: &str| s.parse::<collide::number::Number>().unwrap().exact();
-        collide::quantity::to_f64(&(q(j) / q("1.602176634e-19"))).unwrap()
+        let q = |s: &str| {
+            s.parse::<collide::values::number::Number>()
+                .unwrap()
+                .exact()
+        };
+        collide::values::quantity::to_f64(&(q(j) / q("1.602176634e-19"))).unwrap()
     };
     let args = ["-m", "1 kg,12 kg", "-v", "2 m/s,0", "--energy-unit", "eV"];
     let (code, out, err) = outcome(&[&args[..], &["--format", "json"]].concat());
@@ -354,7 +358,10 @@ fn frames_energies_are_in_the_unit_the_label_names() {
     }
     let (_, text, _) = outcome(&args);
     assert!(text.contains("energies in eV"), "{text}");
-    assert!(text.contains(&collide::number::num(ev("2"))), "{text}");
+    assert!(
+        text.contains(&collide::values::number::num(ev("2"))),
+        "{text}"
+    );
 }
 
 #[test]

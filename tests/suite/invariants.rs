@@ -17,7 +17,7 @@
 use crate::common;
 
 use collide::contact::{self, Damping, LawKind, Laws, Settings, Setup};
-use collide::inertia::Mass;
+use collide::line::inertia::Mass;
 use collide::track::Body;
 use common::{collide, proptest_config, stdout};
 use proptest::prelude::*;
@@ -29,7 +29,7 @@ pub fn num(v: &Value) -> f64 {
     match v {
         Value::Number(n) => n.as_f64().expect("a JSON number"),
         Value::String(s) => s
-            .parse::<collide::number::Number>()
+            .parse::<collide::values::number::Number>()
             .unwrap_or_else(|e| panic!("{s:?} is not a number: {e}"))
             .value(),
         other => panic!("{other} is not a number"),

@@ -3,8 +3,8 @@
 
 use crate::common;
 
-use collide::rational::Q;
 use collide::report::Report;
+use collide::values::rational::Q;
 use common::{assert_exact, assert_pair, assert_ulps, collide, exact, rounded};
 
 fn solve_json(args: &[&str]) -> Report {

@@ -26,18 +26,20 @@ use std::collections::BTreeMap;
 use crate::common;
 use crate::invariants::{Layout, layout_json, num, nums};
 
-use collide::rational::Q;
+use collide::values::rational::Q;
 use common::{collide, stdout};
 use serde_json::Value;
 
 /// A decimal or fraction, exactly.
 fn q(s: &str) -> Q {
-    s.parse::<collide::number::Number>().unwrap().exact()
+    s.parse::<collide::values::number::Number>()
+        .unwrap()
+        .exact()
 }
 
 /// `x f`, exact, rounded once.
 fn times(x: f64, f: &Q) -> f64 {
-    collide::quantity::to_f64(&(collide::quantity::from_f64(x) * f)).unwrap()
+    collide::values::quantity::to_f64(&(collide::values::quantity::from_f64(x) * f)).unwrap()
 }
 
 /// Distance in ulps between two binary64 of the same sign (0 for equal values, -0 = 0).
@@ -370,7 +372,7 @@ fn masses_in_grams_scale_every_energy_by_1000_and_no_velocity() {
         .iter()
         .map(|(m1, m2, v1, v2, e)| {
             let m = |m: &str| {
-                collide::number::num(
+                collide::values::number::num(
                     num(&Value::String(m.to_string())) * scale.parse::<f64>().unwrap(),
                 )
             };

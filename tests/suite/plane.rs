@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use collide::rational::{Q, from_f64, int, ratio, to_f64};
+use collide::values::rational::{Q, from_f64, int, ratio, to_f64};
 use common::{collide, run, stdout};
 use proptest::prelude::*;
 use serde_json::Value;
@@ -440,7 +440,7 @@ proptest! {
             format!("({},{}),({},{})", v[0] + w[0], v[1] + w[1], v[2] + w[0], v[3] + w[1]),
             format!("({},{})", n[0], n[1]),
         );
-        let q = |x: &Value| -> Q { x.as_str().unwrap().parse::<collide::number::Number>().unwrap().exact() };
+        let q = |x: &Value| -> Q { x.as_str().unwrap().parse::<collide::values::number::Number>().unwrap().exact() };
         for b in 0..2 {
             for k in 0..2 {
                 prop_assert_eq!(q(&boosted["fin"][b][k]), q(&base["fin"][b][k]) + int(w[k]));
@@ -478,7 +478,7 @@ fn lost_is_one_minus_e_squared_times_crunch() {
     let q = |x: &Value| {
         x.as_str()
             .unwrap()
-            .parse::<collide::number::Number>()
+            .parse::<collide::values::number::Number>()
             .unwrap()
             .exact()
     };
@@ -702,7 +702,7 @@ fn frames_in_the_plane_agree_with_solve_seen_from_each_frame() {
     let q = |x: &Value| {
         x.as_str()
             .unwrap()
-            .parse::<collide::number::Number>()
+            .parse::<collide::values::number::Number>()
             .unwrap()
             .exact()
     };

@@ -676,7 +676,10 @@ fn the_forms_line_is_in_one_unit() {
     assert_eq!(code, 0);
     let line = out.lines().find(|l| l.contains("V_IN.M.V_IN/4")).unwrap();
     assert!(
-        line.contains(&format!("= crunch = {}", collide::number::num(24.0 / 13.0))),
+        line.contains(&format!(
+            "= crunch = {}",
+            collide::values::number::num(24.0 / 13.0)
+        )),
         "{line}"
     );
 }

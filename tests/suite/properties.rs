@@ -6,14 +6,14 @@ use crate::common;
 use std::path::Path;
 
 use collide::accuracy::{Method, Reference, case, errors, solve, ulps};
-use collide::case::{parse_inertia, parse_masses, parse_velocities};
-use collide::collision::Collision;
-use collide::number::Number;
-use collide::quantity::{from_f64, to_f64};
-use collide::restitution::Restitution;
+use collide::line::case::{parse_inertia, parse_masses, parse_velocities};
+use collide::line::collision::Collision;
+use collide::line::restitution::Restitution;
 use collide::scene::Scene;
 use collide::solver::Solver;
 use collide::solver::binary64::Binary64;
+use collide::values::number::Number;
+use collide::values::quantity::{from_f64, to_f64};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -286,9 +286,9 @@ proptest! {
             let _ = parse_masses(text);
             let _ = parse_velocities(text);
             let _ = parse_inertia(text);
-            for d in [collide::units::Dimension::Mass, collide::units::Dimension::Velocity] {
-                let _ = collide::units::parse(text, d);
-                let _ = collide::units::parse_pair(text, d, "values");
+            for d in [collide::values::units::Dimension::Mass, collide::values::units::Dimension::Velocity] {
+                let _ = collide::values::units::parse(text, d);
+                let _ = collide::values::units::parse_pair(text, d, "values");
             }
             if let Ok(e) = text.parse::<Restitution>() {
                 prop_assert!(e.value() >= 0.0 && e.value().is_finite());
@@ -555,7 +555,7 @@ proptest! {
     /// guard far above the milliseconds these take, not a speed test).
     #[test]
     fn hostile_values_everywhere(value in hostile()) {
-        use collide::units::{Dimension, parse, parse_pair, seconds, energy_unit};
+        use collide::values::units::{Dimension, parse, parse_pair, seconds, energy_unit};
         let start = std::time::Instant::now();
         let text = String::from_utf8_lossy(&value).into_owned();
         if let Ok(n) = text.parse::<Number>() {

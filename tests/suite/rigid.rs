@@ -6,8 +6,8 @@
 
 use crate::common;
 
-use collide::rational::{Q, from_f64, int, ratio};
 use collide::rigid::laws::Mode;
+use collide::values::rational::{Q, from_f64, int, ratio};
 use common::run;
 use serde_json::Value;
 
@@ -62,7 +62,10 @@ pub(crate) fn common_dir() -> std::path::PathBuf {
 /// An exact value of the JSON (`--exact`: a fraction string).
 pub(crate) fn q(v: &Value) -> Q {
     match v {
-        Value::String(s) => s.parse::<collide::number::Number>().unwrap().exact(),
+        Value::String(s) => s
+            .parse::<collide::values::number::Number>()
+            .unwrap()
+            .exact(),
         Value::Number(n) => from_f64(n.as_f64().unwrap()),
         other => panic!("not a number: {other}"),
     }
@@ -94,7 +97,10 @@ fn a_free_rod_has_the_effective_mass_of_the_closed_form() {
             b,
             "--exact",
         ]);
-        let bq: Q = b.parse::<collide::number::Number>().unwrap().exact();
+        let bq: Q = b
+            .parse::<collide::values::number::Number>()
+            .unwrap()
+            .exact();
         let expect =
             Q::ONE / (ratio(1, m) + ratio(1, big) + int(12) * &bq * &bq / (int(big) * int(l * l)));
         assert_eq!(q(&j["m_eff"]), expect, "m {m} M {big} L {l} b {b}");

@@ -6,13 +6,13 @@
 use crate::common;
 use crate::rigid::{f, q, scene};
 
-use collide::rational::{Q, from_f64, int, ratio, to_f64};
 use collide::rigid::algebra::{self, Mat};
 use collide::rigid::body::{Body, Mobility, Motion};
 use collide::rigid::impact::Problem;
 use collide::rigid::jacobian::{Contact, Pair};
 use collide::rigid::laws::{Law, Tangential};
 use collide::rigid::outcome::{Energy, Outcome};
+use collide::values::rational::{Q, from_f64, int, ratio, to_f64};
 use proptest::prelude::*;
 
 /// The planar scene of a spinning disk against a spinning box, exact: bodies in the order

@@ -738,7 +738,7 @@ fn every_shard_file_carries_the_header_and_every_row_comes_once() {
 /// KE_COM, KE_FIN = KE_COM + e^2 crunch, lost = (1 - e^2) crunch, mu = det M / M_total.
 fn check_row(row: &serde_json::Value, what: &str) {
     use collide::accuracy::ulps;
-    use collide::rational::Q;
+    use collide::values::rational::Q;
     use common::exact as x;
     let g = |k: &str| {
         row[k]
@@ -747,7 +747,7 @@ fn check_row(row: &serde_json::Value, what: &str) {
     };
     let (a, c, b) = (x(g("m11")), x(g("m12")), x(g("m22")));
     let (v1, v2, e) = (x(g("v1")), x(g("v2")), x(g("e")));
-    let half = collide::rational::ratio(1, 2);
+    let half = collide::values::rational::ratio(1, 2);
     let one = Q::from(1);
     let form =
         |p: (&Q, &Q), q: (&Q, &Q)| &a * p.0 * q.0 + &c * (p.0 * q.1 + p.1 * q.0) + &b * p.1 * q.1;

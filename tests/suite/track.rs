@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use collide::inertia::Mass;
+use collide::line::inertia::Mass;
 use collide::track::{Body, Contact, Limits, Stop, Track};
 use common::collide;
 use serde_json::Value;
@@ -93,9 +93,10 @@ fn superball_stacks_approach_3v_and_7v() {
     ]);
     let top = two["v"][1].as_f64().unwrap();
     // (3 - r)/(1 + r) with r = 1e-8 exactly, rounded once; two impulses, each rounded once.
-    let r = collide::rational::ratio(1, 100_000_000);
-    let three_r =
-        common::rounded(&((collide::rational::int(3) - &r) / (collide::rational::int(1) + &r)));
+    let r = collide::values::rational::ratio(1, 100_000_000);
+    let three_r = common::rounded(
+        &((collide::values::rational::int(3) - &r) / (collide::values::rational::int(1) + &r)),
+    );
     common::assert_ulps(top, three_r, 2.0, "top speed of the two-ball stack");
     let three = json(&[
         "-m",
@@ -115,10 +116,10 @@ fn superball_stacks_approach_3v_and_7v() {
     // after that. With r = 1e-8 exactly (the masses as typed), in exact arithmetic, rounded
     // once: each of the three impulses is rounded once, so the top speed is within a few ulps.
     let top = three["v"][2].as_f64().unwrap();
-    let r = collide::rational::ratio(1, 100_000_000);
-    let one = collide::rational::int(1);
+    let r = collide::values::rational::ratio(1, 100_000_000);
+    let one = collide::values::rational::int(1);
     let seven = common::rounded(
-        &((collide::rational::int(7) - collide::rational::int(2) * &r - &r * &r)
+        &((collide::values::rational::int(7) - collide::values::rational::int(2) * &r - &r * &r)
             / ((&one + &r) * (&one + &r))),
     );
     common::assert_ulps(top, seven, 4.0, "top speed of the three-ball stack");
@@ -1039,7 +1040,7 @@ fn a_track_without_walls_has_no_wall_restitution() {
 }
 
 fn collapse(collisions: usize) -> Collapse {
-    use collide::rational::{Q, from_f64, int};
+    use collide::values::rational::{Q, from_f64, int};
     let e = from_f64(0.3);
     let (zero, four) = (int(0), int(4));
     let mut x = vec![int(1), int(2), int(3)];
@@ -1222,9 +1223,9 @@ mod motion {
     //! definition: the approach rule, the first contact of a gap under gravity (closed-form
     //! roots), the impulse rounded once (exact rational arithmetic), the rounding slack.
 
-    use collide::compensated::pow2;
-    use collide::rational::{Q, from_f64, int, ratio, to_f64};
     use collide::track::motion::{APPROACH, Kick, closing, dd_of, event_at, first_contact, slack};
+    use collide::values::compensated::pow2;
+    use collide::values::rational::{Q, from_f64, int, ratio, to_f64};
 
     #[test]
     fn bodies_approach_only_faster_than_rounding() {
@@ -1347,7 +1348,7 @@ mod motion {
         let d = dd_of(&ratio(3, 4));
         assert_eq!((d.hi, d.lo), (0.75, 0.0));
         // Beyond binary64: the infinite head alone.
-        let huge = Q::from(collide::rational::IBig::from(10u8).pow(400));
+        let huge = Q::from(collide::values::rational::IBig::from(10u8).pow(400));
         let d = dd_of(&huge);
         assert_eq!((d.hi, d.lo), (f64::INFINITY, 0.0));
     }
@@ -1390,9 +1391,9 @@ mod motion {
 /// velocities the previous one left (the documented rule). Records every collision's time and
 /// contact, and the positions at the last collision.
 struct Collapse {
-    times: Vec<collide::rational::Q>,
+    times: Vec<collide::values::rational::Q>,
     who: Vec<&'static str>,
-    x: Vec<collide::rational::Q>,
+    x: Vec<collide::values::rational::Q>,
 }
 
 mod gravity_layouts {

@@ -1,9 +1,9 @@
-//! Units (issue 31 §5, mutants of `src/units.rs` that no test caught): the nearest-name
+//! Units (issue 31 §5, mutants of `src/values/units.rs` that no test caught): the nearest-name
 //! suggestion for a mistyped unit, and speeds as heights in another velocity unit and gravity.
 
 use crate::common;
 
-use collide::units::{Dimension, UnitError, lookup};
+use collide::values::units::{Dimension, UnitError, lookup};
 
 /// The suggestion for a mistyped unit: `Some(name)` or `None` (no known name within 2 edits).
 fn suggestion(typed: &str, d: Dimension) -> Option<&'static str> {
@@ -98,10 +98,10 @@ fn heights_use_the_velocity_unit_and_the_given_gravity() {
 
 #[test]
 fn a_height_of_zero_is_a_speed_of_zero_and_energy_units_need_both_units() {
-    use collide::units::{EnergyUnitError, Units, energy_unit, parse};
+    use collide::values::units::{EnergyUnitError, Units, energy_unit, parse};
     // 0 m is a height (a speed of 0), not a negative one; -1 m is refused.
     let q = parse("height 0 m", Dimension::Velocity).unwrap();
-    assert!(q.height && q.number.exact() == collide::rational::int(0));
+    assert!(q.height && q.number.exact() == collide::values::rational::int(0));
     assert!(parse("height -1 m", Dimension::Velocity).is_err());
     // --energy-unit converts from the case's energy unit, so it needs units on the masses
     // and on the velocities: either missing is refused.
@@ -124,5 +124,5 @@ fn a_height_of_zero_is_a_speed_of_zero_and_energy_units_need_both_units() {
     };
     // 1 kg (km/h)^2 = (1/3.6)^2 J = 25/324 J.
     let scale = units.with_energy_unit(j).unwrap().energy_scale().unwrap();
-    assert_eq!(scale, collide::rational::ratio(25, 324));
+    assert_eq!(scale, collide::values::rational::ratio(25, 324));
 }

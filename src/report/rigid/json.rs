@@ -4,11 +4,11 @@
 
 use serde_json::{Map, Value, json};
 
-use crate::rational::Q;
 use crate::rigid::algebra::Mat;
 use crate::rigid::body::{Mobility, Motion};
 use crate::rigid::laws::Tangential;
 use crate::rigid::outcome::{Energy, Outcome};
+use crate::values::rational::Q;
 
 use super::super::space::{Overflow, Style};
 use super::super::{Section, Sections};

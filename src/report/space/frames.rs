@@ -8,9 +8,9 @@ use num_traits::Signed;
 use serde_json::{Map, Value, json};
 
 use super::{Overflow, Style, name, vector};
-use crate::rational::Q;
 use crate::space::outcome::{Outcome, sub};
-use crate::units::Units;
+use crate::values::rational::Q;
+use crate::values::units::Units;
 
 use super::super::text::Block;
 
@@ -41,7 +41,7 @@ pub fn text(
             "Frames (every velocity less the observer's w; energies in {})",
             units.energy()
         ),
-        crate::terminal::width(),
+        crate::values::terminal::width(),
         "  ",
     ));
     for (k, f) in frames.iter().enumerate() {
@@ -65,7 +65,7 @@ pub fn text(
         let left = cells.iter().map(|c| c.0.chars().count()).max().unwrap_or(0);
         let right = cells.iter().map(|c| c.1.chars().count()).max().unwrap_or(0);
         for (vin, fin) in &cells {
-            if 4 + left + 3 + right <= crate::terminal::width() {
+            if 4 + left + 3 + right <= crate::values::terminal::width() {
                 let _ = writeln!(out, "    {vin:<left$}   {fin}");
             } else {
                 let _ = writeln!(out, "    {vin}\n    {fin}");

@@ -16,12 +16,12 @@ use std::fmt::Write;
 use num_traits::Signed;
 use serde_json::{Map, Value, json};
 
-use crate::number::num;
-use crate::quantity::{Exact, Scalar};
-use crate::rational::{Q, to_f64};
 use crate::space::outcome::{Outcome, angle_between, dot, polar};
+use crate::values::number::num;
+use crate::values::quantity::{Exact, Scalar};
+use crate::values::rational::{Q, to_f64};
 
-use crate::units::Units;
+use crate::values::units::Units;
 
 use super::text::Block;
 
@@ -538,7 +538,7 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rational::int;
+    use crate::values::rational::int;
 
     fn pucks() -> Outcome {
         let v = |xs: &[i64]| xs.iter().map(|x| int(*x)).collect::<Vec<Q>>();

@@ -5,12 +5,12 @@ use std::fmt::Write;
 
 use serde_json::{Map, Value, json};
 
-use crate::frame::Frame;
-use crate::rational::Q;
+use crate::line::frame::Frame;
 use crate::space::outcome::{FrameVelocityError, Outcome, dot, sub};
 use crate::space::pose::{Posed, outcomes};
 use crate::space::solve::{Check, Solved, Statement, Unknown, Velocity};
-use crate::units::{EnergyUnit, EnergyUnitError, Units};
+use crate::values::rational::Q;
+use crate::values::units::{EnergyUnit, EnergyUnitError, Units};
 
 use super::super::text::{header_units, wrap};
 use super::{Overflow, Show, Style, header, name, reverse_json, reverse_text, speed_angle, vector};
@@ -71,8 +71,8 @@ pub fn checks_text(checks: &[Check], used: usize) -> String {
             out,
             "Check: {} does NOT hold: it misses by {} (of terms of size {})",
             c.law.name(),
-            crate::quantity::significant(&c.residual, 3),
-            crate::quantity::significant(&c.scale, 3)
+            crate::values::quantity::significant(&c.residual, 3),
+            crate::values::quantity::significant(&c.scale, 3)
         );
     }
     out
@@ -236,7 +236,7 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
         } else if *v != Verdict::Physical {
             text.push_str(&wrap(
                 &format!("Note: {}", v.describe()),
-                crate::terminal::width(),
+                crate::values::terminal::width(),
                 "  ",
             ));
         }
@@ -249,7 +249,7 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
             text.push_str(&wrap(
                 "The given values contradict each other, so no collision is printed: check them, \
                  or mark one '?' to solve for it.",
-                crate::terminal::width(),
+                crate::values::terminal::width(),
                 "",
             ));
             json!({ "consistent": false })
@@ -272,10 +272,12 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
             .filter(|c| !c.ok)
             .map(|c| {
                 // A number where binary64 holds it, else its decimal text (never inf).
-                let residual = crate::rational::to_f64(&c.residual)
+                let residual = crate::values::rational::to_f64(&c.residual)
                     .filter(|x| x.is_finite())
                     .map(Value::from)
-                    .unwrap_or_else(|| crate::quantity::significant(&c.residual, 17).into());
+                    .unwrap_or_else(|| {
+                        crate::values::quantity::significant(&c.residual, 17).into()
+                    });
                 json!({"law": c.law.name(), "residual": residual})
             })
             .collect();
@@ -328,7 +330,7 @@ fn receding(o: &Outcome, along: &Q, style: &Style, units: &Units) -> Result<Rend
              so they do not collide (no FIN).",
             style.show(along, o.approx)
         ),
-        crate::terminal::width(),
+        crate::values::terminal::width(),
         "  ",
     ));
     let a = o.approx;

@@ -6,10 +6,10 @@
 
 use super::{Kind, Knob};
 use crate::contact::{self, ContactRun, Damping, Laws, Settings, Setup, work};
-use crate::inertia::Mass;
-use crate::number::Number;
+use crate::line::inertia::Mass;
 use crate::table::row::ValueProblem;
 use crate::track::Body;
+use crate::values::number::Number;
 
 /// A contact run to sweep: the base the grid's values go into.
 #[derive(Clone, Debug)]

@@ -31,8 +31,8 @@ use super::engine::{CHUNK_ROWS, RowsError, Summary};
 use super::row::{RowError, RowProblem, ValueProblem};
 use super::sweep::{Grid, Named, RANGE_FORMS, Shard, Vary, VaryError, parse_vary};
 use super::writer::{FieldCache, RowWriter, Sink};
-use crate::number::Number;
-use crate::output::Progress;
+use crate::values::number::Number;
+use crate::values::output::Progress;
 
 /// A parameter of a run: a body's mass, position, velocity or size (0-based), or a named one
 /// (`stiffness`, `gravity`, ...).
@@ -361,7 +361,7 @@ pub fn write_runs<K: Kind>(
                         sink.flush()?;
                         return Err(e.into());
                     }
-                    crate::output::diagnostic(format_args!("skipped {e}"));
+                    crate::values::output::diagnostic(format_args!("skipped {e}"));
                     summary.skipped += 1;
                     continue;
                 }

@@ -18,12 +18,12 @@
 //! bit).
 
 use super::{Kind, Knob};
-use crate::compensated::Dd;
-use crate::inertia::Mass;
-use crate::number::Number;
-use crate::restitution::Restitution;
+use crate::line::inertia::Mass;
+use crate::line::restitution::Restitution;
 use crate::space::impact;
 use crate::table::row::ValueProblem;
+use crate::values::compensated::Dd;
+use crate::values::number::Number;
 
 /// How the line of impact is given.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -140,7 +140,7 @@ fn between(a: [f64; 2], b: [f64; 2]) -> Option<f64> {
 /// The line of impact at `deg` degrees from `+x`, as `collide solve --normal DEGdeg` takes it:
 /// a rational direction at multiples of 45 degrees, else the binary64 cosine and sine.
 pub fn normal_at(deg: f64) -> [f64; 2] {
-    use crate::rational::{from_f64, to_f64};
+    use crate::values::rational::{from_f64, to_f64};
     let a = crate::space::angle::Angle::degrees(from_f64(deg));
     match a.rational_direction() {
         Some(d) => [to_f64(&d[0]).unwrap_or(0.0), to_f64(&d[1]).unwrap_or(0.0)],
@@ -161,8 +161,8 @@ impl PlaneSweep {
                 if b.abs() > sum {
                     return Err(format!(
                         "the disks miss: |b| = {} > R1 + R2 = {}",
-                        crate::number::num(b.abs()),
-                        crate::number::num(sum)
+                        crate::values::number::num(b.abs()),
+                        crate::values::number::num(sum)
                     ));
                 }
                 let d = [v[0][0] - v[1][0], v[0][1] - v[1][1]];

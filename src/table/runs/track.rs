@@ -4,11 +4,11 @@
 //! drift, and for pi billiards the exact count (`track::pi`).
 
 use super::{Kind, Knob};
-use crate::inertia::Mass;
-use crate::number::Number;
-use crate::restitution::Restitution;
+use crate::line::inertia::Mass;
+use crate::line::restitution::Restitution;
 use crate::table::row::ValueProblem;
 use crate::track::{Limits, Run, Stop, Track, pi};
+use crate::values::number::Number;
 
 /// A track run to sweep: the base the grid's values go into.
 #[derive(Clone, Debug)]

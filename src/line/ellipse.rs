@@ -5,7 +5,7 @@
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use crate::inertia::InertiaTensor;
+use crate::line::inertia::InertiaTensor;
 
 /// Radii `a`, `b` of one energy ellipse; `axes` (general `M` only) are the unit directions of `a`
 /// and `b`: the eigenvectors of `M` in ascending eigenvalue order, so `a >= b`. In exact mode the

@@ -10,7 +10,7 @@
 
 use std::fmt;
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 use num_traits::{One, Signed, Zero};
 
 /// One of the two laws, as a residual of all seven values.
@@ -190,7 +190,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
             let ratio = if (&x[2] - &x[4]).is_zero() {
                 "any".to_string()
             } else {
-                crate::quantity::fraction(&((&x[5] - &x[3]) / (&x[2] - &x[4])))
+                crate::values::quantity::fraction(&((&x[5] - &x[3]) / (&x[2] - &x[4])))
             };
             return many(format!(
                 "momentum fixes only the ratio m1/m2 = {ratio}; give one mass"
@@ -247,7 +247,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         if !x[m as usize].is_positive() {
             return Err(UnknownError::Unphysical(format!(
                 "{m} = {} is not a positive mass: no bodies collide that way",
-                crate::quantity::fraction(&x[m as usize])
+                crate::values::quantity::fraction(&x[m as usize])
             )));
         }
     }
@@ -255,7 +255,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
     if e.is_negative() {
         return Err(UnknownError::Unphysical(format!(
             "e = {} < 0: the bodies would pass through each other",
-            crate::quantity::fraction(e)
+            crate::values::quantity::fraction(e)
         )));
     }
     Ok(Solved {
@@ -284,8 +284,8 @@ fn apart(x: &[Q; 7], what: &str) -> Result<bool, UnknownError> {
         return Err(UnknownError::Unphysical(format!(
             "f1 = {} > f2 = {} after starting together: body 1 (on the left) would pass through \
              body 2",
-            crate::quantity::fraction(&x[Var::F1 as usize]),
-            crate::quantity::fraction(&x[Var::F2 as usize])
+            crate::values::quantity::fraction(&x[Var::F1 as usize]),
+            crate::values::quantity::fraction(&x[Var::F2 as usize])
         )));
     }
     Ok(true)
@@ -296,7 +296,7 @@ mod tests {
     use super::*;
 
     fn q(s: &str) -> Option<Q> {
-        (s != "?").then(|| s.parse::<crate::number::Number>().unwrap().exact())
+        (s != "?").then(|| s.parse::<crate::values::number::Number>().unwrap().exact())
     }
 
     /// m1 m2 v1 v2 f1 f2 e, "?" for unknown.
@@ -305,7 +305,7 @@ mod tests {
     }
 
     fn show(s: &Solved, v: Var) -> String {
-        crate::quantity::fraction(s.get(v))
+        crate::values::quantity::fraction(s.get(v))
     }
 
     /// Every pair of unknowns of a problem whose values (m1 m2 v1 v2 f1 f2 e) are `full` comes
@@ -353,7 +353,7 @@ mod tests {
         assert_eq!(s.checks, vec![("restitution", Q::zero())]);
         // With e = 1/2 given, momentum gives f2 = 90 but restitution misses by 25.
         let s = run(["4", "1", "60", "10", "40", "?", "1/2"]).unwrap();
-        assert_eq!(crate::quantity::fraction(&s.checks[0].1), "25");
+        assert_eq!(crate::values::quantity::fraction(&s.checks[0].1), "25");
     }
 
     #[test]

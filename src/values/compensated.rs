@@ -203,7 +203,7 @@ impl std::ops::Div for Dd {
 #[cfg(test)]
 mod dd_tests {
     use super::Dd;
-    use crate::rational::{Q, from_f64, to_f64};
+    use crate::values::rational::{Q, from_f64, to_f64};
 
     /// The exact value `hi + lo` of a double-double.
     fn exact(d: Dd) -> Q {

@@ -3,16 +3,16 @@
 //! Units are resolved first; the unknowns are then solved exactly (`unknowns`), and the result
 //! is an ordinary `Case`.
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 
-use crate::case::Case;
-use crate::inertia::{InertiaError, InertiaTensor, Mass, MassError};
-use crate::number::{Given, Number, NumberError};
-use crate::restitution::{Restitution, RestitutionError};
-use crate::separation::Separation;
-use crate::units::{Pair, ResolveError, Units, resolve};
-use crate::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
-use crate::wall::{WallCase, WallProblem};
+use crate::line::case::Case;
+use crate::line::inertia::{InertiaError, InertiaTensor, Mass, MassError};
+use crate::line::restitution::{Restitution, RestitutionError};
+use crate::line::separation::Separation;
+use crate::line::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
+use crate::line::wall::{WallCase, WallProblem};
+use crate::values::number::{Given, Number, NumberError};
+use crate::values::units::{Pair, ResolveError, Units, resolve};
 
 /// The typed values of a problem.
 #[derive(Clone, Debug)]
@@ -29,7 +29,7 @@ pub struct Problem {
     /// `g` for velocities typed as heights (default 9.80665 m/s^2).
     pub gravity: Option<Number>,
     /// The unit energies are printed in (`--energy-unit`), when not the case's own.
-    pub energy_unit: Option<&'static crate::units::EnergyUnit>,
+    pub energy_unit: Option<&'static crate::values::units::EnergyUnit>,
     /// Exact arithmetic follows (`--exact`): a velocity typed as a height whose speed
     /// `sqrt(2 g h)` is irrational is refused, since no rational holds it.
     pub exact: bool,
@@ -96,7 +96,7 @@ pub enum ProblemError {
     #[error(transparent)]
     Resolve(#[from] ResolveError),
     #[error(transparent)]
-    EnergyUnit(#[from] crate::units::EnergyUnitError),
+    EnergyUnit(#[from] crate::values::units::EnergyUnitError),
     #[error(transparent)]
     Unknown(#[from] UnknownError),
     #[error(transparent)]
@@ -145,7 +145,7 @@ impl Problem {
         let g = match &self.gravity {
             Some(g) if g.value() > 0.0 => g.exact(),
             Some(g) => return Err(ProblemError::Gravity(g.to_string())),
-            None => crate::units::STANDARD_GRAVITY
+            None => crate::values::units::STANDARD_GRAVITY
                 .parse::<Number>()
                 .map(|n| n.exact())
                 .unwrap_or_default(),
@@ -159,10 +159,10 @@ impl Problem {
                         .map_err(|e| ProblemError::Resolve(e.into()))?;
                     if self.exact && !rational {
                         let h = num_traits::Signed::abs(&q.number.exact());
-                        let two_gh = crate::rational::int(2) * &g * &h;
+                        let two_gh = crate::values::rational::int(2) * &g * &h;
                         return Err(ProblemError::IrrationalSpeed {
-                            height: crate::quantity::significant(&h, 15),
-                            two_gh: crate::quantity::significant(&two_gh, 15),
+                            height: crate::values::quantity::significant(&h, 15),
+                            two_gh: crate::values::quantity::significant(&two_gh, 15),
                         });
                     }
                     Given::Known(speed)
@@ -256,7 +256,7 @@ impl Problem {
         let e = match &self.restitution {
             Some(r) => r.known().map(|r| r.number().exact()),
             None if self.fin.is_some() => None,
-            None => Some(crate::rational::int(1)),
+            None => Some(crate::values::rational::int(1)),
         };
         let given_fin = self.fin.is_some();
         let fin = |i: usize| if given_fin { q(v.get(2 + i)) } else { None };
@@ -266,8 +266,8 @@ impl Problem {
             e: e.clone(),
             side: wall,
         };
-        let s = crate::wall::solve(problem)?;
-        let ((bv, bf), (wv, wf)) = crate::wall::vars(wall);
+        let s = crate::line::wall::solve(problem)?;
+        let ((bv, bf), (wv, wf)) = crate::line::wall::vars(wall);
         // A value as typed when it was given, else its solved value.
         let number =
             |var: Var, x: &Q, typed: Option<&Given<Number>>| match typed.and_then(Given::known) {
@@ -328,9 +328,9 @@ impl Problem {
 
 /// A solved value as a `Number` (`quantity::number_of`), its error naming the variable.
 fn solved_number(var: Var, q: &Q) -> Result<Number, ProblemError> {
-    crate::quantity::number_of(q).map_err(|error| ProblemError::Solved {
+    crate::values::quantity::number_of(q).map_err(|error| ProblemError::Solved {
         var,
-        text: crate::quantity::fraction(q),
+        text: crate::values::quantity::fraction(q),
         error,
     })
 }

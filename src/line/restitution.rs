@@ -6,7 +6,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use crate::number::{Number, NumberError};
+use crate::values::number::{Number, NumberError};
 
 /// A coefficient of restitution, validated to be finite and `>= 0` as typed.
 #[derive(Clone, Debug, PartialEq)]
@@ -47,7 +47,8 @@ impl Restitution {
     pub fn new(n: Number) -> Result<Restitution, RestitutionError> {
         let v = n.value();
         // A typed -0 or -1e-400 rounds to 0: its exact value decides.
-        if v.is_finite() && v >= 0.0 && (v != 0.0 || n.exact() >= crate::rational::Q::ZERO) {
+        if v.is_finite() && v >= 0.0 && (v != 0.0 || n.exact() >= crate::values::rational::Q::ZERO)
+        {
             Ok(Restitution(n))
         } else {
             Err(RestitutionError::Negative(n.to_string()))
@@ -74,7 +75,7 @@ impl Restitution {
 
     /// Exactly 1 as typed (`0.99999999999999999999999` is not, though it rounds to 1).
     pub fn is_elastic(&self) -> bool {
-        self.value() == 1.0 && self.0.exact() == crate::rational::int(1)
+        self.value() == 1.0 && self.0.exact() == crate::values::rational::int(1)
     }
 
     /// `FromStr`, then `dissipative`'s check (a command-line parser for `collide track`).
@@ -85,12 +86,13 @@ impl Restitution {
 
     /// Above 1 as typed (`1.0000000000000001` is, though it rounds to 1): energy is released.
     pub fn is_superelastic(&self) -> bool {
-        self.value() > 1.0 || (self.value() == 1.0 && self.0.exact() > crate::rational::int(1))
+        self.value() > 1.0
+            || (self.value() == 1.0 && self.0.exact() > crate::values::rational::int(1))
     }
 
     /// Exactly 0 as typed.
     pub fn is_totally_inelastic(&self) -> bool {
-        self.value() == 0.0 && self.0.exact() == crate::rational::Q::ZERO
+        self.value() == 0.0 && self.0.exact() == crate::values::rational::Q::ZERO
     }
 
     /// The lecture's name for the collision.
@@ -127,7 +129,7 @@ impl fmt::Display for Restitution {
 
 impl<'de> serde::Deserialize<'de> for Restitution {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Restitution, D::Error> {
-        crate::number::deserialize_parsed(d, "a number >= 0 or \"elastic\" / \"inelastic\"")
+        crate::values::number::deserialize_parsed(d, "a number >= 0 or \"elastic\" / \"inelastic\"")
     }
 }
 

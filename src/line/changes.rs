@@ -8,7 +8,7 @@
 //! Every value is computed in exact rationals from the velocities it describes and rounded once
 //! when printed in binary64: these are a few products per body, and exactness costs microseconds.
 
-use crate::rational::{Q, half};
+use crate::values::rational::{Q, half};
 use num_traits::Signed;
 
 /// The changes of a two-body event, exact. Per-body energies only for a diagonal tensor (bodies
@@ -82,7 +82,7 @@ mod tests {
     use super::*;
 
     fn q(s: &str) -> Q {
-        s.parse::<crate::number::Number>().unwrap().exact()
+        s.parse::<crate::values::number::Number>().unwrap().exact()
     }
 
     #[test]

@@ -13,9 +13,9 @@
 
 use nalgebra::Vector2;
 
-use crate::compensated::Dd;
-use crate::inertia::InertiaTensor;
-use crate::restitution::Restitution;
+use crate::line::inertia::InertiaTensor;
+use crate::line::restitution::Restitution;
+use crate::values::compensated::Dd;
 
 /// A collision to solve: tensor, initial velocities, restitution.
 #[derive(Clone, Debug)]
@@ -110,7 +110,7 @@ impl Collision {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::inertia::Mass;
+    use crate::line::inertia::Mass;
 
     fn case(m1: &str, m2: &str, v1: f64, v2: f64, e: &str) -> Collision {
         let m = InertiaTensor::diagonal(&m1.parse::<Mass>().unwrap(), &m2.parse::<Mass>().unwrap());

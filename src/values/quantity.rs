@@ -7,10 +7,10 @@ use std::fmt::Debug;
 use dashu_int::ops::{BitTest, SquareRoot, UnsignedAbs};
 use num_traits::{Signed, Zero};
 
-use crate::rational::{IBig, Q, UBig, pow10};
+use crate::values::rational::{IBig, Q, UBig, pow10};
 use serde::Serialize;
 
-use crate::number::{Number, NumberError, num};
+use crate::values::number::{Number, NumberError, num};
 
 /// Digits shown for an approximate (irrational) exact-mode value.
 pub const APPROX_DIGITS: usize = 20;
@@ -140,7 +140,7 @@ impl Scalar for Exact {
         true
     }
     fn quarter(&self) -> Exact {
-        let q = self.rational() / crate::rational::int(4);
+        let q = self.rational() / crate::values::rational::int(4);
         self.with(q)
     }
     fn neg(&self) -> Exact {
@@ -343,14 +343,14 @@ pub fn sqrt(q: &Q, digits: usize) -> Q {
     }
 }
 
-pub use crate::rational::{from_f64, to_f64};
+pub use crate::values::rational::{from_f64, to_f64};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn q(n: i64, d: i64) -> Q {
-        crate::rational::ratio(n, d)
+        crate::values::rational::ratio(n, d)
     }
 
     #[test]

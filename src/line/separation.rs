@@ -5,11 +5,11 @@
 //! `KE_FIN - KE_IN = 1/2 mu (f1 - f2)^2` with `mu = m1 m2 / (m1 + m2)`, since the centre of mass
 //! keeps `KE_COM = KE_IN`. Everything is exact: the values come from the solved problem.
 
-use crate::rational::{Q, half};
+use crate::values::rational::{Q, half};
 
-use crate::changes::{Changes, Event};
-use crate::number::Number;
-use crate::units::Units;
+use crate::line::changes::{Changes, Event};
+use crate::values::number::Number;
+use crate::values::units::Units;
 
 /// A separation from a common velocity.
 #[derive(Clone, Debug, PartialEq)]

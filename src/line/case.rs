@@ -3,10 +3,10 @@
 
 use nalgebra::Vector2;
 
-use crate::collision::Collision;
-use crate::inertia::{InertiaError, InertiaTensor, Mass, MassError};
-use crate::number::{FieldsError, Number, NumberError, split_fields};
-use crate::restitution::Restitution;
+use crate::line::collision::Collision;
+use crate::line::inertia::{InertiaError, InertiaTensor, Mass, MassError};
+use crate::line::restitution::Restitution;
+use crate::values::number::{FieldsError, Number, NumberError, split_fields};
 
 /// A validated two-body case.
 #[derive(Clone, Debug)]
@@ -14,7 +14,7 @@ pub struct Case {
     pub velocities: [Number; 2],
     pub collision: Collision,
     /// The units the numbers are in (none: as given).
-    pub units: crate::units::Units,
+    pub units: crate::values::units::Units,
 }
 
 impl Case {
@@ -36,9 +36,9 @@ impl Case {
     }
 
     /// Refuses typed numbers too long for exact arithmetic (`--exact`).
-    pub fn check_exact(&self) -> Result<(), crate::number::ExactTooLong> {
+    pub fn check_exact(&self) -> Result<(), crate::values::number::ExactTooLong> {
         let m = self.inertia().entries();
-        crate::number::check_exact_length(
+        crate::values::number::check_exact_length(
             m.iter()
                 .flatten()
                 .chain(&self.velocities)

@@ -5,8 +5,10 @@
 
 use nalgebra::{Cholesky, Matrix2, SymmetricEigen, Vector2};
 
-use crate::compensated::{Dd, diff_of_products, dot2, exponent, pow2, sum2, two_prod, two_sum};
-use crate::number::{Number, NumberError};
+use crate::values::compensated::{
+    Dd, diff_of_products, dot2, exponent, pow2, sum2, two_prod, two_sum,
+};
+use crate::values::number::{Number, NumberError};
 
 /// A body's mass: a finite number > 0.
 #[derive(Clone, Debug, PartialEq)]

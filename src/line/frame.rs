@@ -7,7 +7,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use crate::number::Number;
+use crate::values::number::Number;
 
 /// A frame of reference (`--frame`, `frame = "..."` in a scene).
 #[derive(Clone, Debug, PartialEq)]
@@ -89,7 +89,7 @@ impl fmt::Display for Frame {
 #[error(
     "frame '{}' is not a frame: expected lab, com, rest-in:1, rest-in:2, rest-fin:1, rest-fin:2, \
      or an observer velocity such as 2.5",
-    crate::number::printable(.0)
+    crate::values::number::printable(.0)
 )]
 pub struct FrameError(pub String);
 
@@ -139,7 +139,7 @@ impl FromStr for Frame {
 /// Serde: a frame word (`"com"`) or an observer velocity (`2.5`, `"-4"`).
 impl<'de> serde::Deserialize<'de> for Frame {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Frame, D::Error> {
-        crate::number::deserialize_parsed(
+        crate::values::number::deserialize_parsed(
             d,
             "a frame (\"lab\", \"com\", \"rest-in:1\", ...) or an observer velocity",
         )

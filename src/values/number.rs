@@ -5,7 +5,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use crate::rational::{IBig, Q, from_f64, pow10, to_f64};
+use crate::values::rational::{IBig, Q, from_f64, pow10, to_f64};
 
 /// Decimal exponents beyond this are refused outright: they are far outside binary64 and would
 /// only cost memory in exact arithmetic.
@@ -659,11 +659,11 @@ mod tests {
     #[test]
     fn exact_values_come_from_the_text() {
         let r = "0.1".parse::<Number>().unwrap().exact();
-        assert_eq!(r, crate::rational::ratio(1, 10));
+        assert_eq!(r, crate::values::rational::ratio(1, 10));
         let r = "-2/3".parse::<Number>().unwrap().exact();
-        assert_eq!(r, crate::rational::ratio(-2, 3));
+        assert_eq!(r, crate::values::rational::ratio(-2, 3));
         let r = "1.5e2".parse::<Number>().unwrap().exact();
-        assert_eq!(r, crate::rational::int(150));
+        assert_eq!(r, crate::values::rational::int(150));
     }
 
     #[test]

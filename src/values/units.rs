@@ -3,9 +3,9 @@
 //! all masses share one and all velocities share one; otherwise (or with `--si`) everything is
 //! converted exactly to kg and m/s.
 
-use crate::rational::Q;
+use crate::values::rational::Q;
 
-use crate::number::{FieldsError, Given, Number, NumberError, printable, split_fields};
+use crate::values::number::{FieldsError, Given, Number, NumberError, printable, split_fields};
 
 /// What a unit measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -190,7 +190,9 @@ pub const UNITS: &[Unit] = &[
 /// above 0 (`--contact-time`).
 pub fn seconds(text: &str) -> Result<Q, QuantityError> {
     let q = parse(text, Dimension::Time)?;
-    let s = q.number.exact() * q.unit.map_or_else(|| crate::rational::int(1), Unit::si);
+    let s = q.number.exact()
+        * q.unit
+            .map_or_else(|| crate::values::rational::int(1), Unit::si);
     if s <= Q::ZERO {
         return Err(QuantityError::NotPositive(text.trim().to_string()));
     }
@@ -328,25 +330,25 @@ impl Quantity {
             return Ok((self.clone(), true));
         }
         let h = self.number.exact();
-        let two_gh = crate::rational::int(2) * g * num_traits::Signed::abs(&h);
+        let two_gh = crate::values::rational::int(2) * g * num_traits::Signed::abs(&h);
         let negative = h < Q::ZERO;
         let speed_unit = lookup("m/s", Dimension::Velocity).ok();
-        if let Some(root) = crate::rational::sqrt_exact(&two_gh) {
+        if let Some(root) = crate::values::rational::sqrt_exact(&two_gh) {
             let speed = if negative { -root } else { root };
             let quantity = Quantity {
-                number: crate::quantity::number_of(&speed)?,
+                number: crate::values::quantity::number_of(&speed)?,
                 unit: speed_unit,
                 height: false,
             };
             return Ok((quantity, true));
         }
-        let speed = crate::quantity::to_f64(&two_gh)
+        let speed = crate::values::quantity::to_f64(&two_gh)
             .map(f64::sqrt)
             .ok_or_else(|| {
                 NumberError::Overflow(format!(
                     "sqrt(2 g h) for h = {} m, g = {} m/s^2",
-                    crate::quantity::significant(&num_traits::Signed::abs(&h), 15),
-                    crate::quantity::significant(g, 15)
+                    crate::values::quantity::significant(&num_traits::Signed::abs(&h), 15),
+                    crate::values::quantity::significant(g, 15)
                 ))
             })?;
         let speed = if negative { -speed } else { speed };
@@ -386,19 +388,19 @@ impl HeightScale {
             .and_then(|n| lookup(n, Dimension::Velocity).ok());
         HeightScale {
             g,
-            velocity_si: unit.map_or_else(|| crate::rational::int(1), Unit::si),
+            velocity_si: unit.map_or_else(|| crate::values::rational::int(1), Unit::si),
             assumed: unit.is_none(),
         }
     }
     /// `v^2 / 2g` in metres, exact.
     pub fn height(&self, v: &Q) -> Q {
         let v = v * &self.velocity_si;
-        &v * &v / (crate::rational::int(2) * &self.g)
+        &v * &v / (crate::values::rational::int(2) * &self.g)
     }
     /// `g` as a decimal.
     pub fn g_text(&self) -> String {
-        crate::quantity::terminating_decimal(&self.g, usize::MAX)
-            .unwrap_or_else(|| crate::quantity::fraction(&self.g))
+        crate::values::quantity::terminating_decimal(&self.g, usize::MAX)
+            .unwrap_or_else(|| crate::values::quantity::fraction(&self.g))
     }
 }
 
@@ -411,12 +413,14 @@ fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
     let rest = rest.strip_prefix("height")?;
     Some((|| {
         let q = parse(rest, Dimension::Length)?;
-        let unit = q.unit.map_or_else(|| crate::rational::int(1), Unit::si);
+        let unit = q
+            .unit
+            .map_or_else(|| crate::values::rational::int(1), Unit::si);
         let metres = q.number.exact() * unit;
         if metres < Q::ZERO {
             return Err(QuantityError::NegativeHeight(t.to_string()));
         }
-        let text = format!("{sign}{}", crate::quantity::fraction(&metres));
+        let text = format!("{sign}{}", crate::values::quantity::fraction(&metres));
         Ok(Quantity {
             number: text.parse()?,
             unit: None,
@@ -593,7 +597,7 @@ impl Units {
         let unit = self.energy_as?;
         let si = |name: Option<&str>, d: Dimension| {
             name.and_then(|n| lookup(n, d).ok())
-                .map_or_else(|| crate::rational::int(1), Unit::si)
+                .map_or_else(|| crate::values::rational::int(1), Unit::si)
         };
         let m = si(self.mass, Dimension::Mass);
         let v = si(self.velocity, Dimension::Velocity);
@@ -724,9 +728,9 @@ pub fn resolve(
                     let si = q.number.exact()
                         * q.unit
                             .map(Unit::si)
-                            .unwrap_or_else(|| crate::rational::int(1));
+                            .unwrap_or_else(|| crate::values::rational::int(1));
                     // A decimal when the converted value has one (10 g is 0.01 kg, not 1/100).
-                    Ok(Given::Known(crate::quantity::number_of(&si)?))
+                    Ok(Given::Known(crate::values::quantity::number_of(&si)?))
                 }
                 Given::Known(q) => Ok(Given::Known(q.number.clone())),
             })

@@ -6,13 +6,13 @@
 //! `(1 - e^2)` of it; the wall's kinetic energy and the centre of mass mean nothing, and are
 //! left out. Everything is exact from the typed values, rounded once when printed.
 
-use crate::rational::{Q, half};
+use crate::values::rational::{Q, half};
 use num_traits::{One, Signed};
 
-use crate::number::Number;
-use crate::restitution::Restitution;
-use crate::units::Units;
-use crate::unknowns::{UnknownError, Var};
+use crate::line::restitution::Restitution;
+use crate::line::unknowns::{UnknownError, Var};
+use crate::values::number::Number;
+use crate::values::units::Units;
 
 /// A ball against a wall.
 #[derive(Clone, Debug, PartialEq)]
@@ -99,8 +99,8 @@ pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
         (Some(a), Some(b)) if a != b => {
             return Err(UnknownError::Unphysical(format!(
                 "a wall does not move: its final velocity {} must be its initial {}",
-                crate::quantity::fraction(&b),
-                crate::quantity::fraction(&a)
+                crate::values::quantity::fraction(&b),
+                crate::values::quantity::fraction(&a)
             )));
         }
         (Some(a), _) | (None, Some(a)) => a,
@@ -159,7 +159,7 @@ pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
     if e.is_negative() {
         return Err(UnknownError::Unphysical(format!(
             "e = {} < 0: the ball would pass through the wall",
-            crate::quantity::fraction(&e)
+            crate::values::quantity::fraction(&e)
         )));
     }
     // A value solved from FIN (the ball's IN velocity, or e) must describe a bounce: the ball
@@ -175,19 +175,19 @@ pub fn solve(p: WallProblem) -> Result<WallSolution, UnknownError> {
         } else {
             ("v1", "right")
         };
-        let v_text = crate::quantity::fraction(&v);
+        let v_text = crate::values::quantity::fraction(&v);
         let solved = if unknown[0] == "v" {
             format!("{name} = {v_text}")
         } else {
             format!(
                 "e = {} with {name} = {v_text}",
-                crate::quantity::fraction(&e)
+                crate::values::quantity::fraction(&e)
             )
         };
         return Err(UnknownError::Unphysical(format!(
             "{solved}: the ball moves away from the wall (on the {side}, at {}), so they never \
              meet and nothing bounces; check the signs of the velocities",
-            crate::quantity::fraction(&w)
+            crate::values::quantity::fraction(&w)
         )));
     }
     Ok(WallSolution {

@@ -420,11 +420,11 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
 }
 
 /// Writes a diagnostic to stderr, cut to [`MESSAGE_CHARS`] characters and wrapped to the
-/// terminal's width ([`crate::terminal::width`]; a wrapped line goes on indented by two spaces);
+/// terminal's width ([`crate::values::terminal::width`]; a wrapped line goes on indented by two spaces);
 /// a closed or full stderr is ignored, never a panic (`eprintln!` panics there).
 pub fn diagnostic(line: std::fmt::Arguments) {
     let line = line.to_string();
-    let text = crate::terminal::wrap(&cut(&line), crate::terminal::width(), "  ");
+    let text = crate::values::terminal::wrap(&cut(&line), crate::values::terminal::width(), "  ");
     let _ = io::stderr().lock().write_all(text.as_bytes());
 }
 

@@ -1,0 +1,22 @@
+//! The rail (lecture Secs. 1-4): two bodies on a line, the momentum line meeting the energy
+//! ellipse with an explicit inertia tensor `M`.
+//!
+//! Physics first (`inertia`, `restitution`, `collision`, `ellipse`, `changes`, `separation`,
+//! `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `frame`). The plane and
+//! space (`crate::space`) build on this layer: the normal parts of a smooth contact collide by its
+//! 1D rule.
+
+// The physics of two bodies on a rail.
+pub mod changes;
+pub mod collision;
+pub mod ellipse;
+pub mod inertia;
+pub mod restitution;
+pub mod separation;
+pub mod wall;
+
+// What the user asked.
+pub mod case;
+pub mod frame;
+pub mod problem;
+pub mod unknowns;

@@ -1,0 +1,12 @@
+//! Values, the bottom layer: exact rationals (`Q`), numbers as typed (with `Given<T>` for `?`),
+//! units with exact factors to SI, exact and approximate scalars (`Quantity`), double-double
+//! arithmetic, atomic file output and the width text fits. Nothing here knows any physics.
+
+pub mod compensated;
+pub mod number;
+#[cfg(feature = "cli")]
+pub mod output;
+pub mod quantity;
+pub mod rational;
+pub mod terminal;
+pub mod units;
