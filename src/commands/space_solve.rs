@@ -89,7 +89,7 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
     if let Some(u) = args.case.energy_unit {
         units = units.with_energy_unit(u)?;
     }
-    let style = Style::new(args.exact, units.energy_scale());
+    let style = Style::new(args.exact, units.energy_scale()).with_bearings(posed.bearings);
     let views: Vec<report::frames::FrameView> = seen
         .iter()
         .map(|(name, w, o)| report::frames::FrameView {

@@ -57,6 +57,11 @@ impl Angle {
         }
     }
 
+    /// Whether it was typed as a compass bearing (`N30E`, `SW`).
+    pub fn is_bearing(&self) -> bool {
+        self.typed.starts_with(['N', 'S', 'E', 'W'])
+    }
+
     /// The angle in degrees, exact when it is (typed in degrees or as a bearing).
     pub fn exact_degrees(&self) -> Option<&Q> {
         match &self.value {
@@ -214,6 +219,29 @@ impl std::str::FromStr for Angle {
     }
 }
 
+/// The compass bearing of the direction `a` degrees from +x (counterclockwise), the way it is
+/// typed: `N30E` for 60, `S20W` for 250 - 360 = -110, `NE` for 45, `W` for 180. The turn from N or
+/// S is written by `show`; a turn that `show` writes as 0, 45 or 90 is a compass point.
+pub fn compass(a: f64, show: impl Fn(f64) -> String) -> String {
+    // Clockwise from north.
+    let t = (90.0 - a).rem_euclid(360.0);
+    let (from, turn, to) = if t <= 90.0 {
+        ('N', t, 'E')
+    } else if t <= 180.0 {
+        ('S', 180.0 - t, 'E')
+    } else if t <= 270.0 {
+        ('S', t - 180.0, 'W')
+    } else {
+        ('N', 360.0 - t, 'W')
+    };
+    match show(turn).as_str() {
+        "0" => from.to_string(),
+        "90" => to.to_string(),
+        "45" => format!("{from}{to}"),
+        turn => format!("{from}{turn}{to}"),
+    }
+}
+
 /// A compass bearing in degrees from +x (east), counterclockwise.
 fn bearing(t: &str) -> Result<Q, AngleError> {
     let bad = || AngleError::Bearing(t.to_string());
@@ -265,6 +293,27 @@ fn bearing(t: &str) -> Result<Q, AngleError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn compass_bearings_read_back_as_typed() {
+        let show = |x: f64| crate::values::number::num(x);
+        // Each bearing, parsed to degrees from +x and written back.
+        for t in [
+            "N", "NE", "E", "SE", "S", "SW", "W", "NW", "N30E", "S20W", "S10E", "N80W", "N12.5E",
+        ] {
+            let a = to_f64(t.parse::<Angle>().unwrap().exact_degrees().unwrap()).unwrap();
+            assert_eq!(compass(a, show), t, "{t} = {a} degrees");
+        }
+        // E10N is N80E typed the other way round: it reads back from north.
+        assert_eq!(compass(10.0, show), "N80E");
+        // Angles from atan2 a few ulps off a compass point still name it.
+        assert_eq!(compass(60.000000000000014, show), "N30E");
+        assert_eq!(compass(-179.99999999999997, show), "W");
+        assert_eq!(compass(-90.0, show), "S");
+        assert!(Angle::degrees(int(30)).typed == "30deg");
+        assert!("N30E".parse::<Angle>().unwrap().is_bearing());
+        assert!(!"30deg".parse::<Angle>().unwrap().is_bearing());
+    }
 
     fn deg(t: &str) -> f64 {
         to_f64(t.parse::<Angle>().unwrap().exact_degrees().unwrap()).unwrap()

@@ -126,6 +126,9 @@ pub struct Posed {
     pub units: Units,
     /// Values are the typed ones (exact, or solved from them).
     pub typed_values: bool,
+    /// Some velocity was typed as a compass bearing (`15 m/s @ N30E`): directions are printed
+    /// as bearings too.
+    pub bearings: bool,
 }
 
 /// How a typed number enters the laws: its typed value or its binary64 value.
@@ -149,6 +152,16 @@ impl Input {
             || self.masses.iter().any(Given::is_unknown)
             || self.v_in.iter().any(unknown)
             || self.e.as_ref().is_some_and(Given::is_unknown)
+    }
+
+    /// Whether some velocity was typed as a compass bearing (`@ N30E`).
+    fn bearings(&self) -> bool {
+        let bearing =
+            |t: &Typed| matches!(t, Typed::Polar { angle: Given::Known(a), .. } if a.is_bearing());
+        self.v_in
+            .iter()
+            .chain(self.fin.iter().flatten())
+            .any(bearing)
     }
 
     /// The statement of the laws.
@@ -268,6 +281,7 @@ impl Input {
             },
             units,
             typed_values: typed,
+            bearings: self.bearings(),
         })
     }
 

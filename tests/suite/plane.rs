@@ -830,3 +830,60 @@ fn planar_scene_errors_name_file_and_line() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn directions_typed_as_bearings_print_as_bearings_too() {
+    // Car 25 m/s @ E and van 20 m/s @ N stick (physics.md section 7, with masses 3 and 5):
+    // V = (3 (25, 0) + 5 (0, 20)) / 8 = (75/8, 25/2) = (9.375, 12.5), so tan(angle from north)
+    // = 9.375 / 12.5 = 3/4: the bearing N(atan(3/4) in degrees)E = N36.869897645844E.
+    let typed = stdout(&["solve", "-m", "3,5", "-v", "25 @ E,20 @ N", "-e", "0"]);
+    let from_north = (3.0f64 / 4.0).atan().to_degrees();
+    let bearing = format!("N{}E", collide::values::number::num(from_north));
+    assert_eq!(bearing, "N36.869897645844E");
+    for row in ["v1     (25, 0)", "v2     (0, 20)", "v1'", "v2'", "V_COM"] {
+        let line = typed
+            .lines()
+            .find(|l| l.trim_start().starts_with(row))
+            .unwrap();
+        let want = match row {
+            "v1     (25, 0)" => "25 @ 0° (E)",
+            "v2     (0, 20)" => "20 @ 90° (N)",
+            _ => &format!(
+                "15.625 @ {}° ({bearing})",
+                collide::values::number::num(90.0 - from_north)
+            ),
+        };
+        assert!(
+            line.ends_with(want),
+            "{line:?} should end with {want:?}\n{typed}"
+        );
+    }
+    // Typed as degrees, the same case prints no bearing, and otherwise the same bytes.
+    let degrees = stdout(&[
+        "solve",
+        "-m",
+        "3,5",
+        "-v",
+        "25 @ 0deg,20 @ 90deg",
+        "-e",
+        "0",
+    ]);
+    assert!(!degrees.contains("(N"), "{degrees}");
+    let strip = |t: &str| {
+        t.lines()
+            .map(|l| l.split(" (").next().unwrap().trim_end().to_string())
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(strip(&typed), strip(&degrees));
+    // A bearing in each quadrant reads back as typed (the IN row of body 1).
+    for (b, a) in [
+        ("N30E", "60"),
+        ("S20E", "-70"),
+        ("S20W", "-110"),
+        ("N80W", "170"),
+    ] {
+        let t = stdout(&["solve", "-m", "1,1", "-v", &format!("2 @ {b},0"), "-e", "0"]);
+        let want = format!("2 @ {a}° ({b})");
+        assert!(t.lines().any(|l| l.ends_with(&want)), "{want}\n{t}");
+    }
+}

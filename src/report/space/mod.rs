@@ -16,6 +16,7 @@ use std::fmt::Write;
 use num_traits::Signed;
 use serde_json::{Map, Value, json};
 
+use crate::space::angle::compass;
 use crate::space::outcome::{Outcome, angle_between, dot, polar};
 use crate::values::number::num;
 use crate::values::quantity::{Exact, Scalar};
@@ -79,6 +80,9 @@ pub struct Style {
     pub exact: bool,
     /// Energies in another unit: the exact factor from the case's (`--energy-unit`).
     pub energy_scale: Option<Q>,
+    /// Directions in the plane also as compass bearings (`@ 60° (N30E)`): when the problem
+    /// typed one.
+    pub bearings: bool,
     /// Set when a value is beyond binary64 (the report is then refused).
     overflow: Cell<bool>,
 }
@@ -96,8 +100,14 @@ impl Style {
         Style {
             exact,
             energy_scale,
+            bearings: false,
             overflow: Cell::new(false),
         }
+    }
+
+    /// The style that also writes directions as compass bearings when `bearings` is set.
+    pub fn with_bearings(self, bearings: bool) -> Style {
+        Style { bearings, ..self }
     }
 
     /// The binary64 nearest `q`. Beyond binary64's range is an error (set aside, and the
@@ -175,10 +185,14 @@ pub(crate) fn vector(style: &Style, v: &[Q], approx: bool) -> String {
     }
 }
 
-/// `4 @ 30°`: a vector's speed and direction (in the plane), or its speed (in space).
-pub(crate) fn speed_angle(v: &[Q]) -> String {
+/// `4 @ 30°`: a vector's speed and direction (in the plane), or its speed (in space); with
+/// bearings, `4 @ 60° (N30E)`.
+pub(crate) fn speed_angle(style: &Style, v: &[Q]) -> String {
     let (speed, angle) = polar(v);
     match angle {
+        Some(a) if v.len() == 2 && style.bearings => {
+            format!("{} @ {}° ({})", num(speed), num(a), compass(a, num))
+        }
         Some(a) if v.len() == 2 => format!("{} @ {}°", num(speed), num(a)),
         _ if v.len() == 1 => String::new(),
         _ if speed == 0.0 => "0".into(),
@@ -248,7 +262,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
                 b.row(
                     name(i, fin),
                     format!("{}{unit}", vector(style, v, a)),
-                    speed_angle(v),
+                    speed_angle(style, v),
                 );
             }
         }
@@ -256,7 +270,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         b.row(
             "V_COM",
             format!("{}{unit}", vector(style, &com, a)),
-            speed_angle(&com),
+            speed_angle(style, &com),
         );
         if o.bodies() == 2 {
             let j = o.impulse(1);

@@ -42,7 +42,7 @@ pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
                 }
                 seen.push((i, fin));
                 let v = if fin { &o.fin[i] } else { &o.v_in[i] };
-                let polar = speed_angle(v);
+                let polar = speed_angle(style, v);
                 let polar = if polar.is_empty() {
                     String::new()
                 } else {
@@ -186,7 +186,7 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     if let Some(u) = opts.energy_unit {
         units = units.with_energy_unit(u)?;
     }
-    let style = Style::new(opts.exact, units.energy_scale());
+    let style = Style::new(opts.exact, units.energy_scale()).with_bearings(posed.bearings);
     let all = outcomes(posed, solved);
     if all.is_empty() {
         return Err(RenderError::NoSolution);
