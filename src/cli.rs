@@ -120,7 +120,7 @@ pub enum Command {
     Sweep(SweepArgs),
     /// A table of collisions read from CSV or JSON Lines, one row each
     #[command(
-        after_help = "Examples:\n  collide batch scenarios/cases.csv --columns m1,m2,e,fin1,fin2,lost --skip-bad\n  collide batch scenarios/cases.csv --skip-bad --format jsonl -o cases.jsonl"
+        after_help = "Examples:\n  collide batch scenarios/cases.csv --columns m1,m2,e,fin1,fin2,lost --skip-bad\n  collide batch scenarios/cases.csv --skip-bad --format jsonl -o cases.jsonl\n  collide batch scenarios/plane-cases.csv --columns nx,ny,fin1x,fin1y,between_deg,error"
     )]
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
@@ -520,7 +520,9 @@ pub struct SweepArgs {
 
 #[derive(Args, Debug)]
 pub struct BatchArgs {
-    /// CSV or JSON Lines file of cases; '-' or nothing for stdin
+    /// CSV or JSON Lines file of cases; '-' or nothing for stdin. On a line: m1, m2, v1, v2,
+    /// optionally e (or m11, m12, m22). In the plane: m1, m2, v1x, v1y, v2x, v2y, optionally
+    /// e, and normal_deg, or nx, ny, or b, r1, r2
     #[arg(value_name = "FILE")]
     pub input: Option<PathBuf>,
 

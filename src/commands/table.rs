@@ -141,11 +141,14 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
 }
 
 pub fn batch(args: BatchArgs) -> Result<Outcome> {
-    let input = batch::open(
+    let mut input = batch::open(
         args.input.as_deref(),
         args.input_format,
         args.restitution.value(),
     )?;
+    if let Some((kind, params)) = input.plane.take() {
+        return plane_batch(input, &kind, &params, &args.table);
+    }
     let mut out = open(&args.table)?;
     let writer = writer(
         columns(&args.table.columns, input.general)?,
@@ -155,6 +158,34 @@ pub fn batch(args: BatchArgs) -> Result<Outcome> {
     let mut progress = Progress::new(None);
     let result = write_batch(input, &writer, args.table.skip_bad, &mut out, &mut progress);
     finish(result, out, &progress, &args.table)
+}
+
+/// `collide batch` in the plane: each row gives the parameters of a sweep in the plane
+/// (`table::runs::plane`); the columns are those of `collide sweep` in the plane, after the
+/// inputs.
+fn plane_batch(
+    input: batch::Batch,
+    kind: &collide::table::runs::plane::PlaneSweep,
+    params: &[runs::Knob],
+    table: &TableArgs,
+) -> Result<Outcome> {
+    let (cells, names) =
+        runs::cells(kind, params, &table.columns).map_err(|e| anyhow::anyhow!("--columns: {e}"))?;
+    let mut out = open(table)?;
+    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(table, &out)?)
+        .with_header(header(table, &out));
+    writer.check().map_err(anyhow::Error::msg)?;
+    let mut progress = Progress::new(None);
+    let result = runs::write_points(
+        kind,
+        input.in_the_plane(),
+        &cells,
+        &writer,
+        table.skip_bad,
+        &mut out,
+        &mut progress,
+    );
+    finish(result, out, &progress, table)
 }
 
 fn columns(chosen: &[String], general: bool) -> Result<Vec<&'static Column>> {
@@ -326,7 +357,8 @@ pub fn run_table<K: Kind>(
         }
     }
     let grid = Grid::new(vary, args.max_rows)?;
-    let (cells, names) = runs::cells(kind, &grid, &args.columns).map_err(anyhow::Error::msg)?;
+    let params: Vec<runs::Knob> = grid.vary.iter().map(|v| v.param).collect();
+    let (cells, names) = runs::cells(kind, &params, &args.columns).map_err(anyhow::Error::msg)?;
     let table = TableArgs {
         columns: Vec::new(),
         format: match format {

@@ -1,5 +1,8 @@
 //! Cases for `collide batch`: CSV with a header naming `m1,m2,v1,v2` and optionally `e` (or
-//! `m11,m12,m22` for a general tensor), or JSON Lines with the same keys. Read as a stream, one
+//! `m11,m12,m22` for a general tensor), or JSON Lines with the same keys. In the plane, two
+//! bodies with velocity components `v1x,v1y,v2x,v2y` and a line of impact: `normal_deg`, or
+//! `nx,ny`, or disks `b,r1,r2` (the parameters of a sweep in the plane, `table::runs::plane`).
+//! Read as a stream, one
 //! row at a time: memory stays constant whatever the input size. A line is at most
 //! [`MAX_LINE_BYTES`] (`/dev/zero` is refused at once); a read error (a directory,
 //! `/proc/self/mem`) ends the run; an empty input is a table of no rows; a UTF-8 byte-order mark
@@ -10,6 +13,8 @@ use std::io::{self, BufRead, BufReader, Read};
 use std::path::Path;
 
 use super::row::{LayoutError, RowCase, RowError, RowProblem, ValueProblem};
+use super::runs::plane::{Line, PlaneSweep};
+use super::runs::{Kind, Knob};
 use crate::line::inertia::Mass;
 use crate::line::restitution::Restitution;
 use crate::values::number::Number;
@@ -74,22 +79,209 @@ pub enum BatchError {
     },
 }
 
+/// One case of a batch: on a line, or in the plane (the values of the parameters of
+/// [`Batch::plane`]'s sweep, in the order of [`Batch::params`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Case {
+    Line(RowCase),
+    Plane(Vec<(Knob, f64)>),
+}
+
 /// Which columns hold what.
 #[derive(Clone, Debug)]
-struct Layout {
+enum Layout {
+    Line(LineLayout),
+    Plane(PlaneLayout),
+}
+
+/// The columns of a case on a line.
+#[derive(Clone, Debug)]
+struct LineLayout {
     general: bool,
     /// Field index of m11 (m1), m12, m22 (m2), v1, v2, e.
     at: [Option<usize>; 6],
 }
 
+/// How a batch in the plane gives its line of impact.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LineColumns {
+    Degrees,
+    Components,
+    Disks,
+}
+
+impl LineColumns {
+    fn names(self) -> &'static [&'static str] {
+        match self {
+            LineColumns::Degrees => &["normal_deg"],
+            LineColumns::Components => &["nx", "ny"],
+            LineColumns::Disks => &["b", "r1", "r2"],
+        }
+    }
+}
+
+/// The columns of a case in the plane: the parameters, in a fixed order (whatever the order of
+/// the header or of an object's keys), and the field each is read from (`None`: `e` not given,
+/// the default).
+#[derive(Clone, Debug)]
+struct PlaneLayout {
+    line: LineColumns,
+    params: Vec<(Knob, &'static str, Option<usize>)>,
+}
+
+/// The columns of the plane that a case on a line does not have.
+const PLANE_ONLY: [&str; 10] = [
+    "v1x",
+    "v1y",
+    "v2x",
+    "v2y",
+    "normal_deg",
+    "nx",
+    "ny",
+    "b",
+    "r1",
+    "r2",
+];
+
+/// Refuses a name given twice.
+fn once(names: &[String]) -> Result<(), LayoutError> {
+    for (i, n) in names.iter().enumerate() {
+        if names[..i].contains(n) {
+            return Err(LayoutError::Twice(n.clone()));
+        }
+    }
+    Ok(())
+}
+
 impl Layout {
     fn of(names: &[String]) -> Result<Layout, LayoutError> {
+        once(names)?;
+        if names.iter().any(|n| PLANE_ONLY.contains(&n.as_str())) {
+            PlaneLayout::of(names).map(Layout::Plane)
+        } else {
+            LineLayout::of(names).map(Layout::Line)
+        }
+    }
+
+    /// Whether two layouts read the same kind of case (JSON Lines objects must agree).
+    fn same_kind(&self, other: &Layout) -> bool {
+        match (self, other) {
+            (Layout::Line(a), Layout::Line(b)) => a.general == b.general,
+            (Layout::Plane(a), Layout::Plane(b)) => a.line == b.line,
+            _ => false,
+        }
+    }
+
+    fn case<'a>(
+        &self,
+        get: impl Fn(usize) -> Option<&'a str>,
+        line: u64,
+        default_e: f64,
+    ) -> Result<(u64, Case), RowError> {
+        match self {
+            Layout::Line(l) => l
+                .case(get, line, default_e)
+                .map(|(l, c)| (l, Case::Line(c))),
+            Layout::Plane(p) => p.case(get, line, default_e),
+        }
+    }
+}
+
+impl PlaneLayout {
+    fn of(names: &[String]) -> Result<PlaneLayout, LayoutError> {
         let find = |n: &str| names.iter().position(|h| h == n);
-        for (i, n) in names.iter().enumerate() {
-            if names[..i].contains(n) {
-                return Err(LayoutError::Twice(n.clone()));
+        let known = ["m1", "m2", "v1x", "v1y", "v2x", "v2y", "e"];
+        let given: Vec<LineColumns> = [
+            LineColumns::Degrees,
+            LineColumns::Components,
+            LineColumns::Disks,
+        ]
+        .into_iter()
+        .filter(|l| l.names().iter().any(|n| find(n).is_some()))
+        .collect();
+        let line = match given[..] {
+            [l] => l,
+            [] => return Err(LayoutError::PlaneLine),
+            _ => return Err(LayoutError::PlaneLines),
+        };
+        for n in names {
+            if !known.contains(&n.as_str()) && !line.names().contains(&n.as_str()) {
+                return Err(LayoutError::UnknownInPlane(n.clone()));
             }
         }
+        let mut params = Vec::new();
+        for n in known.iter().chain(line.names()) {
+            let at = find(n);
+            if at.is_none() && *n != "e" {
+                return Err(LayoutError::MissingInPlane(n));
+            }
+            let knob = match *n {
+                "m1" => Knob::Mass(0),
+                "m2" => Knob::Mass(1),
+                other => Knob::Named(other),
+            };
+            params.push((knob, *n, at));
+        }
+        Ok(PlaneLayout { line, params })
+    }
+
+    /// The sweep whose parameters a row gives (every value of it is the row's).
+    fn base(&self) -> PlaneSweep {
+        PlaneSweep {
+            m: [1.0, 1.0],
+            v: [[0.0, 0.0], [0.0, 0.0]],
+            line: match self.line {
+                LineColumns::Disks => Line::Geometry {
+                    r: [1.0, 1.0],
+                    b: 0.0,
+                },
+                _ => Line::Normal([1.0, 0.0]),
+            },
+            e: 1.0,
+        }
+    }
+
+    fn case<'a>(
+        &self,
+        get: impl Fn(usize) -> Option<&'a str>,
+        line: u64,
+        default_e: f64,
+    ) -> Result<(u64, Case), RowError> {
+        let base = self.base();
+        let mut point = Vec::with_capacity(self.params.len());
+        for &(knob, field, at) in &self.params {
+            let bad = |problem: ValueProblem| RowError {
+                place: format!("line {line}"),
+                problem: RowProblem::Field { field, problem },
+            };
+            let Some(i) = at else {
+                point.push((knob, default_e));
+                continue;
+            };
+            let text = get(i).ok_or_else(|| bad(ValueProblem::Missing))?;
+            let n: Number = text.parse().map_err(|e| bad(plane_number(text, e)))?;
+            base.check(knob, &n).map_err(bad)?;
+            point.push((knob, n.value()));
+        }
+        Ok((line, Case::Plane(point)))
+    }
+}
+
+/// A number that does not parse; a vector gets a hint (a batch takes components).
+fn plane_number(text: &str, e: crate::values::number::NumberError) -> ValueProblem {
+    if text.trim_start().starts_with('(') {
+        ValueProblem::Range(format!(
+            "'{text}' is a vector: a batch in the plane gives each component in its own column \
+             (v1x, v1y, v2x, v2y; nx, ny)"
+        ))
+    } else {
+        ValueProblem::Number(e)
+    }
+}
+
+impl LineLayout {
+    fn of(names: &[String]) -> Result<LineLayout, LayoutError> {
+        let find = |n: &str| names.iter().position(|h| h == n);
         for n in names {
             if !DIAGONAL.contains(&n.as_str()) && !GENERAL.contains(&n.as_str()) && n != "e" {
                 return Err(LayoutError::Unknown(n.clone()));
@@ -122,7 +314,7 @@ impl Layout {
                 find("e"),
             ]
         };
-        Ok(Layout { general, at })
+        Ok(LineLayout { general, at })
     }
 
     /// A row from its fields (`get(i)` is field `i` as text).
@@ -146,7 +338,7 @@ impl Layout {
                 problem: RowProblem::Field { field, problem },
             };
             let text = get(i).ok_or_else(|| bad(ValueProblem::Missing))?;
-            let n: Number = text.parse().map_err(|e| bad(ValueProblem::Number(e)))?;
+            let n: Number = text.parse().map_err(|e| bad(line_number(text, e)))?;
             *slot = n.value();
             // Each value is validated by the type that holds it.
             match field {
@@ -168,17 +360,79 @@ impl Layout {
     }
 }
 
+/// A number on a line that does not parse; a vector gets a hint (the plane needs a line of
+/// impact).
+fn line_number(text: &str, e: crate::values::number::NumberError) -> ValueProblem {
+    if text.trim_start().starts_with('(') {
+        ValueProblem::Range(format!(
+            "'{text}' is a vector: a batch in the plane gives the components in columns v1x, \
+             v1y, v2x, v2y and the line of impact in normal_deg, or nx, ny, or b, r1, r2"
+        ))
+    } else {
+        ValueProblem::Number(e)
+    }
+}
+
 /// A stream of cases.
 pub struct Batch {
     /// Whether the input gives a general tensor (so the default columns are m11, m12, m22).
     pub general: bool,
-    rows: Box<dyn Iterator<Item = Result<(u64, RowCase), RowError>>>,
+    /// In the plane: the sweep whose parameters each row gives, and those parameters in the
+    /// order each row holds them.
+    pub plane: Option<(PlaneSweep, Vec<Knob>)>,
+    rows: Box<dyn Iterator<Item = Result<(u64, Case), RowError>>>,
     /// An error ended the input.
     ended: bool,
 }
 
+impl Batch {
+    fn new(
+        layout: Option<&Layout>,
+        rows: Box<dyn Iterator<Item = Result<(u64, Case), RowError>>>,
+    ) -> Batch {
+        Batch {
+            general: matches!(layout, Some(Layout::Line(l)) if l.general),
+            plane: match layout {
+                Some(Layout::Plane(p)) => {
+                    Some((p.base(), p.params.iter().map(|(k, _, _)| *k).collect()))
+                }
+                _ => None,
+            },
+            rows,
+            ended: false,
+        }
+    }
+
+    /// The cases on a line (a case in the plane, which a batch on a line never holds, is an
+    /// error row).
+    pub fn on_a_line(self) -> impl Iterator<Item = Result<(u64, RowCase), RowError>> {
+        self.map(|r| {
+            r.and_then(|(line, case)| match case {
+                Case::Line(c) => Ok((line, c)),
+                Case::Plane(_) => Err(RowError {
+                    place: format!("line {line}"),
+                    problem: RowProblem::OtherLayout,
+                }),
+            })
+        })
+    }
+
+    /// The cases in the plane, as the parameters of a sweep's point.
+    pub fn in_the_plane(self) -> impl Iterator<Item = super::runs::Point> {
+        self.map(|r| {
+            r.and_then(|(line, case)| match case {
+                Case::Plane(p) => Ok((line, p)),
+                Case::Line(_) => Err(RowError {
+                    place: format!("line {line}"),
+                    problem: RowProblem::OtherLayout,
+                }),
+            })
+        })
+    }
+}
+
 impl Iterator for Batch {
-    type Item = Result<(u64, RowCase), RowError>;
+    type Item = Result<(u64, Case), RowError>;
     /// The next row; nothing more after an error that ends the input ([`RowProblem::Read`]).
     fn next(&mut self) -> Option<Self::Item> {
         if self.ended {
@@ -266,18 +520,14 @@ fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<B
         .collect();
     // An empty input (no header, no rows): a table of no rows, as an empty JSON Lines input.
     if header.is_empty() {
-        return Ok(Batch {
-            general: false,
-            rows: Box::new(std::iter::empty()),
-            ended: false,
-        });
+        return Ok(Batch::new(None, Box::new(std::iter::empty())));
     }
     let layout = Layout::of(&header).map_err(|e| BatchError::Layout {
         name: name.to_string(),
         place: "line 1 (header)".into(),
         problem: e.into(),
     })?;
-    let general = layout.general;
+    let shell = Batch::new(Some(&layout), Box::new(std::iter::empty()));
     let rows = r.into_records().map(move |rec| {
         let rec = rec.map_err(|e| RowError {
             place: format!("line {}", e.position().map_or(0, |p| p.line())),
@@ -300,9 +550,8 @@ fn csv_rows(reader: impl Read + 'static, name: &str, default_e: f64) -> Result<B
         layout.case(|i| rec.get(i), line, default_e)
     });
     Ok(Batch {
-        general,
         rows: Box::new(rows),
-        ended: false,
+        ..shell
     })
 }
 
@@ -331,7 +580,6 @@ fn jsonl_rows(
     });
     // The first readable object decides the layout; every object must have the same keys.
     let mut layout: Option<Layout> = None;
-    let mut general = false;
     let mut head = Vec::new();
     for (i, l) in lines.by_ref() {
         let at = |problem: RowProblem| BatchError::Layout {
@@ -350,11 +598,10 @@ fn jsonl_rows(
         let keys = object(&first)
             .map(|o| o.into_iter().map(|(k, _)| k).collect::<Vec<_>>())
             .map_err(at)?;
-        let l = Layout::of(&keys).map_err(|e| at(e.into()))?;
-        general = l.general;
-        layout = Some(l);
+        layout = Some(Layout::of(&keys).map_err(|e| at(e.into()))?);
         break;
     }
+    let shell = Batch::new(layout.as_ref(), Box::new(std::iter::empty()));
     let lines = head.into_iter().chain(lines);
     let rows = lines.filter_map(move |(i, l)| {
         let line = i as u64 + 1;
@@ -374,16 +621,15 @@ fn jsonl_rows(
             let (keys, values): (Vec<String>, Vec<String>) =
                 object(&l).map_err(err)?.into_iter().unzip();
             let this = Layout::of(&keys).map_err(|e| err(e.into()))?;
-            if this.general != layout.general {
+            if !this.same_kind(layout) {
                 return Err(err(RowProblem::OtherLayout));
             }
             this.case(|k| values.get(k).map(String::as_str), line, default_e)
         })())
     });
     Ok(Batch {
-        general,
         rows: Box::new(rows),
-        ended: false,
+        ..shell
     })
 }
 
@@ -469,7 +715,10 @@ mod tests {
         let n = N.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
         let path = std::env::temp_dir().join(format!("collide-batch-{}-{n}", std::process::id()));
         std::fs::write(&path, text).unwrap();
-        let rows: Vec<_> = open(Some(&path), Some(format), 1.0).unwrap().collect();
+        let rows: Vec<_> = open(Some(&path), Some(format), 1.0)
+            .unwrap()
+            .on_a_line()
+            .collect();
         std::fs::remove_file(&path).ok();
         rows
     }

@@ -232,7 +232,7 @@ pub fn write_batch(
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
     let mut sink = Sink::open(writer, 1, out)?;
-    let mut input = input.peekable();
+    let mut input = input.on_a_line().peekable();
     let chunks = std::iter::from_fn(move || {
         input.peek()?;
         Some(input.by_ref().take(CHUNK_ROWS).collect::<Vec<_>>())

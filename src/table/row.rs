@@ -73,7 +73,7 @@ pub enum RowProblem {
     NotNumber(String, String),
     #[error(transparent)]
     Layout(#[from] LayoutError),
-    #[error("this object gives the tensor differently from the first line")]
+    #[error("this object gives the tensor or the line of impact differently from the first line")]
     OtherLayout,
     #[error(transparent)]
     Number(#[from] NumberError),
@@ -125,7 +125,19 @@ pub enum LayoutError {
     Both,
     #[error("column '{0}' is given twice: give each column once")]
     Twice(String),
+    #[error("unknown column '{0}' in the plane: expected {KNOWN_PLANE}")]
+    UnknownInPlane(String),
+    #[error("missing column '{0}' in the plane: expected {KNOWN_PLANE}")]
+    MissingInPlane(&'static str),
+    #[error("a batch in the plane needs the line of impact: expected {KNOWN_PLANE}")]
+    PlaneLine,
+    #[error("give the line of impact one way: normal_deg, or nx, ny, or b, r1, r2")]
+    PlaneLines,
 }
+
+/// The columns an input in the plane may have.
+pub const KNOWN_PLANE: &str = "m1, m2, v1x, v1y, v2x, v2y, optionally e, and the line of impact: \
+    normal_deg (degrees from +x), or nx, ny, or b, r1, r2 (disks)";
 
 /// The columns an input may have.
 pub const KNOWN: &str = "m1, m2, v1, v2 and optionally e (or m11, m12, m22 for a general tensor)";

@@ -128,3 +128,12 @@ pub fn stdout(args: &[&str]) -> String {
     );
     String::from_utf8(out.stdout).unwrap()
 }
+
+/// A folder of this test run's own (under Cargo's temporary folder for tests), made if missing.
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("scratch")
+        .join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}

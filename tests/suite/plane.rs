@@ -30,7 +30,7 @@ pub(crate) fn vecs(v: &Value) -> Vec<Vec<f64>> {
 
 /// The smooth impact by hand, exactly: `J = (1+e) mu (n.(v1-v2)) / n.n`,
 /// `v1' = v1 - J/m1 n`, `v2' = v2 + J/m2 n`.
-fn impact(m: [Q; 2], v: [Vec<Q>; 2], n: &[Q], e: &Q) -> [Vec<Q>; 2] {
+pub(crate) fn impact(m: [Q; 2], v: [Vec<Q>; 2], n: &[Q], e: &Q) -> [Vec<Q>; 2] {
     let dot = |a: &[Q], b: &[Q]| a.iter().zip(b).fold(Q::ZERO, |s, (x, y)| s + x * y);
     let rel: Vec<Q> = v[0].iter().zip(&v[1]).map(|(a, b)| a - b).collect();
     let mu = &m[0] * &m[1] / (&m[0] + &m[1]);

@@ -303,3 +303,207 @@ fn a_sweep_in_the_plane_is_the_same_in_shards_threads_and_formats() {
         assert_eq!(j["fin1x"].is_null(), b.abs() > 2.0, "{line}");
     }
 }
+
+/// `collide batch` of the CSV `csv` with `args`, as rows of named numbers (empty cells: NaN).
+fn batch_table(csv: &str, args: &[&str]) -> Vec<std::collections::HashMap<String, f64>> {
+    static N: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = N.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let path = crate::common::scratch("plane-batch").join(format!("cases-{n}.csv"));
+    std::fs::write(&path, csv).unwrap();
+    let mut a = vec!["batch", path.to_str().unwrap()];
+    a.extend_from_slice(args);
+    let out = stdout(&a);
+    let mut r = csv::Reader::from_reader(out.as_bytes());
+    let names: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    r.records()
+        .map(|rec| {
+            let rec = rec.unwrap();
+            names
+                .iter()
+                .zip(rec.iter())
+                .map(|(n, v)| (n.clone(), v.parse().unwrap_or(f64::NAN)))
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_batch_in_the_plane_is_the_sweep_row_by_row_and_the_exact_impact() {
+    // The same cases as a sweep over the angle of the line of impact and e (each of whose rows
+    // is `collide solve`, above) and as a batch listing them: every column bit for bit (the
+    // angles are printed shortest round-trip, so the batch reads the sweep's binary64 values).
+    let cols = "fin1x,fin1y,fin2x,fin2y,nx,ny,crunch,lost,ke_in,ke_fin,turned1_deg,between_deg";
+    let base = ["-m", "1,2", "-v", "(3,1),(-1,2)", "--normal", "(1,1)"];
+    let mut args = base.to_vec();
+    let columns = format!("normal_deg,e,{cols}");
+    args.extend(["--vary", "normal_deg=0:60:5", "--vary", "e=0,0.3,1"]);
+    args.extend(["--columns", &columns]);
+    let swept = plane_table(&args);
+    let mut csv = String::from("m1,m2,v1x,v1y,v2x,v2y,e,normal_deg\n");
+    for r in &swept {
+        csv += &format!("1,2,3,1,-1,2,{:?},{:?}\n", r["e"], r["normal_deg"]);
+    }
+    let batched = batch_table(&csv, &["--columns", &columns]);
+    assert_eq!(batched.len(), swept.len());
+    for (b, s) in batched.iter().zip(&swept) {
+        for c in columns.split(',') {
+            assert_eq!(b[c].to_bits(), s[c].to_bits(), "{c}: {} vs {}", b[c], s[c]);
+        }
+    }
+    // Disks: the batch's b, r1, r2 rows against the sweep's --vary b.
+    let swept = plane_table(&[
+        "-m",
+        "1,1",
+        "-v",
+        "(1,0),0",
+        "--radii",
+        "1,1",
+        "--impact-parameter",
+        "0",
+        "--vary",
+        "b=0:1.9:20",
+        "--columns",
+        "b,fin1x,fin1y,fin2x,fin2y,between_deg",
+    ]);
+    let mut csv = String::from("b,r1,r2,m1,m2,v1x,v1y,v2x,v2y\n");
+    for r in &swept {
+        csv += &format!("{:?},1,1,1,1,1,0,0,0\n", r["b"]);
+    }
+    let batched = batch_table(
+        &csv,
+        &["--columns", "b,fin1x,fin1y,fin2x,fin2y,between_deg"],
+    );
+    assert_eq!(batched.len(), 20);
+    for (b, s) in batched.iter().zip(&swept) {
+        for (k, v) in s {
+            assert_eq!(b[k].to_bits(), v.to_bits(), "b = {}: {k}", s["b"]);
+        }
+    }
+    // Rational lines of impact as components: FIN is the exact impulse form of the row's
+    // binary64 inputs (e = 2/3 is read as the binary64 nearest it), correctly rounded
+    // (physics.md section 7, done here in exact arithmetic by `plane::impact`).
+    use collide::values::rational::{Q, from_f64, to_f64};
+    // Masses, velocities, line of impact, e as a fraction.
+    type Case = ([i64; 2], [[i64; 2]; 2], [i64; 2], (i64, i64));
+    let cases: [Case; 4] = [
+        ([1, 1], [[4, 0], [0, 0]], [1, 1], (1, 1)),
+        ([3, 5], [[7, -2], [-1, 3]], [2, -1], (2, 3)),
+        ([1, 1000000], [[1, 1], [0, 0]], [3, 4], (1, 2)),
+        ([7, 2], [[-1, 5], [2, -3]], [-1, 3], (0, 1)),
+    ];
+    let mut csv = String::from("m1,m2,v1x,v1y,v2x,v2y,e,nx,ny\n");
+    for (m, v, n, e) in &cases {
+        csv += &format!(
+            "{},{},{},{},{},{},{}/{},{},{}\n",
+            m[0], m[1], v[0][0], v[0][1], v[1][0], v[1][1], e.0, e.1, n[0], n[1]
+        );
+    }
+    let rows = batch_table(&csv, &["--columns", "fin1x,fin1y,fin2x,fin2y"]);
+    for ((m, v, n, e), r) in cases.iter().zip(&rows) {
+        let q = |x: i64| Q::from(x);
+        let fin = crate::plane::impact(
+            [q(m[0]), q(m[1])],
+            [vec![q(v[0][0]), q(v[0][1])], vec![q(v[1][0]), q(v[1][1])]],
+            &[q(n[0]), q(n[1])],
+            &from_f64(e.0 as f64 / e.1 as f64),
+        );
+        let got = [r["fin1x"], r["fin1y"], r["fin2x"], r["fin2y"]];
+        let want: Vec<f64> = fin.iter().flatten().map(|x| to_f64(x).unwrap()).collect();
+        assert_eq!(got.to_vec(), want, "m {m:?} v {v:?} n {n:?} e {e:?}");
+    }
+}
+
+#[test]
+fn a_batch_in_the_plane_refuses_what_it_cannot_read() {
+    let dir = crate::common::scratch("plane-batch-bad");
+    let try_csv = |name: &str, csv: &str, extra: &[&str]| {
+        let path = dir.join(name);
+        std::fs::write(&path, csv).unwrap();
+        let mut a = vec!["batch", path.to_str().unwrap()];
+        a.extend_from_slice(extra);
+        run(&a)
+    };
+    let head = "m1,m2,v1x,v1y,v2x,v2y";
+    // Header errors: nothing on stdout, exit 2, the column named.
+    for (csv, says) in [
+        (format!("{head}\n1,1,1,0,0,0\n"), "needs the line of impact"),
+        (
+            format!("{head},normal_deg,nx,ny\n"),
+            "give the line of impact one way",
+        ),
+        (format!("{head},nx\n"), "missing column 'ny' in the plane"),
+        (
+            format!("{head},v3x,nx,ny\n"),
+            "unknown column 'v3x' in the plane",
+        ),
+        (
+            "m1,m2,v1x,v2x,v2y,nx,ny\n".to_string(),
+            "missing column 'v1y' in the plane",
+        ),
+    ] {
+        let (code, out, err) = try_csv("h.csv", &csv, &[]);
+        assert_eq!((code, out.as_str()), (2, ""), "{csv}: {err}");
+        assert!(err.contains(says), "{csv}: {err}");
+    }
+    // A bad value: the rows before it, then the line and the field.
+    let (code, out, err) = try_csv(
+        "v.csv",
+        &format!("{head},e,nx,ny\n1,1,1,0,0,0,1,1,0\n1,-2,1,0,0,0,1,1,0\n"),
+        &["--columns", "fin2x"],
+    );
+    assert_eq!((code, out.as_str()), (2, "fin2x\n1.0\n"), "{err}");
+    assert!(err.contains("line 3: field 'm2'"), "{err}");
+    let (_, _, err) = try_csv(
+        "e.csv",
+        &format!("{head},e,nx,ny\n1,1,1,0,0,0,-0.5,1,0\n"),
+        &[],
+    );
+    assert!(err.contains("line 2: field 'e'"), "{err}");
+    let (_, _, err) = try_csv(
+        "r.csv",
+        &format!("{head},b,r1,r2\n1,1,1,0,0,0,0,0,1\n"),
+        &[],
+    );
+    assert!(err.contains("field 'r1': a radius must be > 0"), "{err}");
+    // A vector typed in a batch on a line: a hint, not only "not a number".
+    let (code, _, err) = try_csv("vec.csv", "m1,m2,v1,v2\n1,1,\"(1,0)\",0\n", &[]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains(
+            "'(1,0)' is a vector: a batch in the plane gives the components in columns v1x"
+        ),
+        "{err}"
+    );
+    // Columns of the line are not columns of the plane.
+    let (code, _, err) = try_csv(
+        "c.csv",
+        &format!("{head},nx,ny\n1,1,1,0,0,0,1,0\n"),
+        &["--columns", "fin1"],
+    );
+    assert_eq!(code, 2);
+    assert!(err.contains("--columns: 'fin1' is not a column"), "{err}");
+    // JSON Lines: a line that gives the line of impact another way than the first.
+    let path = dir.join("mixed.jsonl");
+    std::fs::write(
+        &path,
+        "{\"m1\":1,\"m2\":1,\"v1x\":1,\"v1y\":0,\"v2x\":0,\"v2y\":0,\"nx\":1,\"ny\":0}\n\
+         {\"m1\":1,\"m2\":1,\"v1x\":1,\"v1y\":0,\"v2x\":0,\"v2y\":0,\"normal_deg\":0}\n",
+    )
+    .unwrap();
+    let (code, out, err) = run(&["batch", path.to_str().unwrap(), "--columns", "fin2x"]);
+    assert_eq!((code, out.as_str()), (2, "fin2x\n1.0\n"), "{err}");
+    assert!(
+        err.contains("line 2: this object gives the tensor or the line of impact differently"),
+        "{err}"
+    );
+    // A pair that does not approach along n: an error row, or with --skip-bad left out.
+    let csv = format!("{head},nx,ny\n1,1,1,0,0,0,-1,0\n1,1,1,0,0,0,1,0\n");
+    let rows = batch_table(&csv, &["--columns", "nx,fin2x,error"]);
+    assert!(rows[0]["fin2x"].is_nan() && rows[1]["fin2x"] == 1.0);
+    let (code, out, err) = try_csv("s.csv", &csv, &["--columns", "fin2x", "--skip-bad"]);
+    assert_eq!((code, out.as_str()), (0, "fin2x\n1.0\n"), "{err}");
+    assert!(
+        err.contains("skipped line 2: they do not approach along the line of impact"),
+        "{err}"
+    );
+}

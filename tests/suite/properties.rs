@@ -617,7 +617,7 @@ proptest! {
         }
         std::fs::write(&csv, &bytes).unwrap();
         if let Ok(batch) = collide::table::batch::open(Some(&csv), None, 1.0) {
-            for (_, case) in batch.flatten() {
+            for (_, case) in batch.on_a_line().flatten() {
                 prop_assert!(case.v.iter().all(|v| v.is_finite()));
             }
         }

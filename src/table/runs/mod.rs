@@ -134,55 +134,141 @@ fn write_cheap<K: Kind>(
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
     use super::engine::{ChunkOut, write_chunks};
-    use super::writer::Sealed;
     use std::sync::atomic::{AtomicU64, Ordering};
     let errors = AtomicU64::new(0);
-    let with_error = error_at(cells).is_some();
     let solve = |start: u64| -> ChunkOut {
         let end = (start + CHUNK_ROWS as u64).min(rows.end);
-        let mut buf = writer.buffer(CHUNK_ROWS);
-        let mut fields = FieldCache::new(cells.len());
-        let mut values = vec![0.0; cells.len()];
+        let mut rows = start..end;
         let mut point = vec![(Knob::Named(""), 0.0); grid.vary.len()];
-        let mut out = ChunkOut {
-            body: Ok(Sealed::Bytes(Vec::new())),
-            rows: 0,
-            skipped: Vec::new(),
-            stop: None,
+        let next = |point: &mut Vec<(Knob, f64)>| {
+            let r = rows.next()?;
+            grid.row(r, point);
+            Some(Ok(r))
         };
-        for r in start..end {
-            grid.row(r, &mut point);
-            let result = kind
-                .run(&point)
-                .and_then(|o| fill(kind, cells, &point, &o, &mut values));
-            match result {
-                Ok(()) => writer.row_of_run(&values, None, &mut buf, &mut fields),
-                Err(why) if with_error => {
-                    fill_failed(cells, &point, &mut values);
-                    writer.row_of_run(&values, Some(&why), &mut buf, &mut fields);
-                    errors.fetch_add(1, Ordering::Relaxed);
-                }
-                Err(why) => {
-                    let e = RowError {
-                        place: format!("run {} ({})", r + 1, describe(&point)),
-                        problem: RowProblem::Run(why),
-                    };
-                    if skip_bad {
-                        out.skipped.push(e);
-                        continue;
-                    }
-                    out.stop = Some(e);
-                    break;
-                }
-            }
-            out.rows += 1;
-        }
-        out.body = writer.seal(buf);
-        out
+        let place = |r: u64, point: &[(Knob, f64)]| format!("run {} ({})", r + 1, describe(point));
+        cheap_chunk(
+            kind, &mut point, next, place, cells, writer, skip_bad, &errors,
+        )
     };
     let starts = (rows.start..rows.end).step_by(CHUNK_ROWS);
     let mut summary = write_chunks(starts, solve, sink, progress)?;
     summary.errors = errors.load(Ordering::Relaxed);
+    Ok(summary)
+}
+
+/// The rows of a chunk of cheap runs (`kind.cheap()`): `next` puts each point's parameters in
+/// `point` and gives its number (or an input row that could not be read, which stops the chunk
+/// or is skipped); `place` names a point in a message (only a failed one: formatting costs).
+#[allow(clippy::too_many_arguments)]
+fn cheap_chunk<K: Kind>(
+    kind: &K,
+    point: &mut Vec<(Knob, f64)>,
+    mut next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
+    place: impl Fn(u64, &[(Knob, f64)]) -> String,
+    cells: &[Cell<K::Col>],
+    writer: &RowWriter,
+    skip_bad: bool,
+    errors: &std::sync::atomic::AtomicU64,
+) -> super::engine::ChunkOut {
+    use super::engine::ChunkOut;
+    use super::writer::Sealed;
+    use std::sync::atomic::Ordering;
+    let with_error = error_at(cells).is_some();
+    let mut buf = writer.buffer(CHUNK_ROWS);
+    let mut fields = FieldCache::new(cells.len());
+    let mut values = vec![0.0; cells.len()];
+    let mut out = ChunkOut {
+        body: Ok(Sealed::Bytes(Vec::new())),
+        rows: 0,
+        skipped: Vec::new(),
+        stop: None,
+    };
+    while let Some(item) = next(point) {
+        let failed = match item {
+            Err(e) => Some(e),
+            Ok(r) => {
+                let result = kind
+                    .run(point)
+                    .and_then(|o| fill(kind, cells, point, &o, &mut values));
+                match result {
+                    Ok(()) => {
+                        writer.row_of_run(&values, None, &mut buf, &mut fields);
+                        None
+                    }
+                    Err(why) if with_error => {
+                        fill_failed(cells, point, &mut values);
+                        writer.row_of_run(&values, Some(&why), &mut buf, &mut fields);
+                        errors.fetch_add(1, Ordering::Relaxed);
+                        None
+                    }
+                    Err(why) => Some(RowError {
+                        place: place(r, point),
+                        problem: RowProblem::Run(why),
+                    }),
+                }
+            }
+        };
+        if let Some(e) = failed {
+            // A run refused, or a row of the input that is not one: skipped, or the end.
+            if skip_bad && !e.problem.ends_input() {
+                out.skipped.push(e);
+                continue;
+            }
+            out.stop = Some(e);
+            break;
+        }
+        out.rows += 1;
+    }
+    out.body = writer.seal(buf);
+    out
+}
+
+/// Runs every point of `input` (a batch's rows: line numbers and parameters, in the order of
+/// the parameters `cells` names) and writes their rows to `out`, in input order: `collide
+/// batch` in the plane. The input is read a batch of chunks at a time, so memory stays bounded
+/// whatever its size. A row that cannot be read stops the table (after every row before it) or,
+/// with `skip_bad`, is reported and left out; a run that fails is a row with its error when
+/// that column is shown.
+pub fn write_points<K: Kind>(
+    kind: &K,
+    input: impl Iterator<Item = Point>,
+    cells: &[Cell<K::Col>],
+    writer: &RowWriter,
+    skip_bad: bool,
+    out: &mut dyn Write,
+    progress: &mut Progress,
+) -> Result<Summary, RowsError> {
+    use super::engine::write_chunks;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    let mut sink = Sink::open(writer, 1, out)?;
+    let errors = AtomicU64::new(0);
+    let mut input = input.peekable();
+    let chunks = std::iter::from_fn(move || {
+        input.peek()?;
+        Some(input.by_ref().take(CHUNK_ROWS).collect::<Vec<_>>())
+    });
+    let solve = |items: Vec<Point>| {
+        let mut items = items.into_iter();
+        let next = |point: &mut Vec<(Knob, f64)>| {
+            Some(items.next()?.map(|(line, p)| {
+                *point = p;
+                line
+            }))
+        };
+        cheap_chunk(
+            kind,
+            &mut Vec::new(),
+            next,
+            |line, _| format!("line {line}"),
+            cells,
+            writer,
+            skip_bad,
+            &errors,
+        )
+    };
+    let mut summary = write_chunks(chunks, solve, &mut sink, progress)?;
+    summary.errors = errors.load(Ordering::Relaxed);
+    sink.finish()?;
     Ok(summary)
 }
 
@@ -238,17 +324,21 @@ pub const ERROR: &str = "error";
 /// A table's columns and their names.
 pub type Cells<C> = (Vec<Cell<C>>, Vec<String>);
 
+/// A row of a batch: its line and its parameters, or why it could not be read.
+pub type Point = Result<(u64, Vec<(Knob, f64)>), RowError>;
+
 /// A run done: its row, its parameters, what it gave.
 type Done<O> = (u64, Vec<(Knob, f64)>, Result<O, String>);
 
-/// The columns: `chosen`, or the varied parameters, the kind's defaults and `error`.
+/// The columns: `chosen`, or the parameters (those a grid varies, or a batch's inputs), the
+/// kind's defaults and `error`.
 pub fn cells<K: Kind>(
     kind: &K,
-    grid: &Grid<Knob>,
+    params: &[Knob],
     chosen: &[String],
 ) -> Result<Cells<K::Col>, String> {
     let names: Vec<String> = if chosen.is_empty() {
-        let mut n: Vec<String> = grid.vary.iter().map(|v| v.param.name()).collect();
+        let mut n: Vec<String> = params.iter().map(Named::name).collect();
         n.extend(kind.defaults());
         n.push(ERROR.into());
         n
@@ -264,16 +354,16 @@ pub fn cells<K: Kind>(
         }
         let cell = if name == ERROR {
             Cell::Error
-        } else if let Some(p) = grid.vary.iter().position(|v| v.param.name() == *name) {
+        } else if let Some(p) = params.iter().position(|k| k.name() == *name) {
             Cell::Param(p)
         } else if let Some(c) = kind.column(name) {
             Cell::Of(c)
         } else {
             return Err(format!(
-                "'{name}' is not a column: expected a varied parameter ({}), {}, or {ERROR}",
-                grid.vary
+                "'{name}' is not a column: expected a parameter ({}), {}, or {ERROR}",
+                params
                     .iter()
-                    .map(|v| v.param.name())
+                    .map(Named::name)
                     .collect::<Vec<_>>()
                     .join(", "),
                 kind.column_forms()
@@ -435,7 +525,8 @@ mod tests {
     fn table(vary: &str, chosen: &[&str], skip_bad: bool) -> (Result<Summary, String>, String) {
         let grid = Grid::new(vec![super::vary(&Double, vary).unwrap()], 100).unwrap();
         let chosen: Vec<String> = chosen.iter().map(|s| s.to_string()).collect();
-        let (cells, names) = cells(&Double, &grid, &chosen).unwrap();
+        let params: Vec<Knob> = grid.vary.iter().map(|v| v.param).collect();
+        let (cells, names) = cells(&Double, &params, &chosen).unwrap();
         let w = RowWriter::runs(
             names,
             error_at(&cells),

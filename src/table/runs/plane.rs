@@ -77,6 +77,8 @@ const SCALARS: &[&str] = &[
     "v2x",
     "v2y",
     "normal_deg",
+    "nx",
+    "ny",
     "b",
     "r1",
     "r2",
@@ -266,11 +268,17 @@ impl Kind for PlaneSweep {
                 range(false, "b, r1 and r2 need --radii and --impact-parameter")?
             }
             Knob::Named("r1" | "r2") => range(v > 0.0, "a radius must be > 0")?,
-            Knob::Named("normal_deg") if matches!(self.line, Line::Geometry { .. }) => range(
-                false,
-                "normal_deg sets the line of impact, which --radii and --impact-parameter give \
-                 here: vary b",
-            )?,
+            Knob::Named(name @ ("normal_deg" | "nx" | "ny"))
+                if matches!(self.line, Line::Geometry { .. }) =>
+            {
+                range(
+                    false,
+                    &format!(
+                        "{name} sets the line of impact, which --radii and --impact-parameter \
+                         give here: vary b"
+                    ),
+                )?
+            }
             _ => {}
         }
         Ok(())
@@ -296,6 +304,11 @@ impl Kind for PlaneSweep {
                 Knob::Named("v2x") => s.v[1][0] = x,
                 Knob::Named("v2y") => s.v[1][1] = x,
                 Knob::Named("normal_deg") => s.line = Line::Normal(normal_at(x)),
+                Knob::Named(name @ ("nx" | "ny")) => {
+                    if let Line::Normal(n) = &mut s.line {
+                        n[usize::from(name == "ny")] = x;
+                    }
+                }
                 Knob::Named(name @ ("b" | "r1" | "r2")) => {
                     if let Line::Geometry { r, b } = &mut s.line {
                         match name {
