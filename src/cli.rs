@@ -57,8 +57,8 @@ pub const WORDS: [(&str, &str); 3] = [
 #[command(
     name = "collide",
     version,
-    about = "Two-body collisions on a rail, solved and printed in the notation of Harter's \
-             'Classical Mechanics with a BANG!', Lecture 1",
+    about = "Collisions on a rail, in the plane and in space, solved and printed in the notation \
+             of Harter's 'Classical Mechanics with a BANG!', Lecture 1",
     after_help = EXIT_STATUS
 )]
 pub struct Cli {

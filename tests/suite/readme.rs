@@ -524,13 +524,14 @@ fn prose_lines_fit_100_columns() {
 
 #[test]
 fn the_readme_stays_a_short_tour() {
-    // Issue 28: the README had grown to 1,372 lines; the rest belongs in the guide.
+    // Issue 28: the README had grown to 1,372 lines; the rest belongs in the guide. (250 until
+    // the plane, rigid bodies and the page joined the tour: a planar example and three rows.)
     let lines = std::fs::read_to_string("README.md")
         .unwrap()
         .lines()
         .count();
     assert!(
-        lines < 250,
+        lines < 300,
         "README.md has {lines} lines: move the detail to docs/"
     );
 }
