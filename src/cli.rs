@@ -19,7 +19,7 @@ use collide::table::columns::{COLUMNS, Column};
 use collide::table::sweep::{DEFAULT_MAX_ROWS, Shard, Vary, VaryError};
 use collide::table::writer::{Header, RowFormat};
 use collide::values::number::{Given, Number, NumberList};
-use collide::values::units::Dimension;
+use collide::values::units::{Dimension, Quantity};
 
 /// The exit statuses, for `collide --help` and the man page: the same words as the guide's table
 /// (docs/cli.md, "Exit status"), which `tests/suite/shell.rs` compares with both.
@@ -687,19 +687,21 @@ pub struct CaseArgs {
           value_parser = |s: &str| s.parse::<collide::space::pose::NormalGiven>())]
     pub normal: Option<collide::space::pose::NormalGiven>,
 
-    /// Radii of two smooth disks (with --impact-parameter): the line of impact from the geometry
+    /// Radii of two smooth disks (with --impact-parameter): the line of impact from the
+    /// geometry; numbers, or lengths with a unit ('2.5 cm,2.5 cm') like the impact parameter
     #[arg(long, value_name = "R1,R2", requires = "impact_parameter",
-          value_parser = |s: &str| -> Result<[Number; 2], String> {
+          value_parser = |s: &str| -> Result<[Quantity; 2], String> {
               let [a, b] = collide::values::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
-              Ok([a.parse().map_err(|e: collide::values::number::NumberError| e.to_string())?,
-                  b.parse().map_err(|e: collide::values::number::NumberError| e.to_string())?])
+              let length = |t: &str| collide::values::units::parse(t, Dimension::Length).map_err(|e| e.to_string());
+              Ok([length(a)?, length(b)?])
           })]
-    pub radii: Option<[Number; 2]>,
+    pub radii: Option<[Quantity; 2]>,
 
     /// Distance from body 2's centre to the line of body 1's relative motion (positive: to its
     /// left): sin(phi) = B / (R1 + R2), the line of impact at phi from the relative velocity
-    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "radii")]
-    pub impact_parameter: Option<Number>,
+    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "radii",
+          value_parser = |s: &str| collide::values::units::parse(s, Dimension::Length).map_err(|e| e.to_string()))]
+    pub impact_parameter: Option<Quantity>,
 
     /// Coefficient of restitution e >= 0: 'elastic' (1), 'inelastic' (0), above 1 superelastic (energy released), or '?' (solve)
     /// [default: elastic; unknown when --fin is given]

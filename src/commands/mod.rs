@@ -98,6 +98,23 @@ impl CaseArgs {
         })
     }
 
+    /// `--radii` and `--impact-parameter` as numbers (lengths with units in metres).
+    pub fn geometry(
+        &self,
+    ) -> Result<
+        Option<(
+            [collide::values::number::Number; 2],
+            collide::values::number::Number,
+        )>,
+    > {
+        match (&self.radii, &self.impact_parameter) {
+            (Some([r1, r2]), Some(b)) => space::pose::geometry([r1, r2], b)
+                .map(Some)
+                .map_err(|e| anyhow::anyhow!("--radii, --impact-parameter: {e}")),
+            _ => Ok(None),
+        }
+    }
+
     /// The typed problem in the plane or in space (or N bodies on a line).
     pub fn space_input(&self, fin: Option<&Listed>, exact: bool) -> Result<space::pose::Input> {
         use collide::space::typed::{parse_list, parse_masses};
@@ -110,12 +127,9 @@ impl CaseArgs {
             Some(m) => parse_masses(&m.text)?,
             None => anyhow::bail!("give --masses M1,M2,..."),
         };
-        let normal = match (&self.normal, &self.radii, &self.impact_parameter) {
-            (Some(n), _, _) => Some(n.clone()),
-            (None, Some(radii), Some(b)) => Some(space::pose::NormalGiven::Geometry {
-                radii: radii.clone(),
-                b: b.clone(),
-            }),
+        let normal = match (&self.normal, self.geometry()?) {
+            (Some(n), _) => Some(n.clone()),
+            (None, Some((radii, b))) => Some(space::pose::NormalGiven::Geometry { radii, b }),
             _ => None,
         };
         Ok(space::pose::Input {

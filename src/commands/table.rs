@@ -69,12 +69,12 @@ fn plane_sweep(args: SweepArgs) -> Result<Outcome> {
             .map(f)
             .ok_or_else(|| anyhow::anyhow!("a sweep takes a known e, not '?'"))?,
     };
-    let line = match (&args.case.radii, &args.case.impact_parameter, &st.normal) {
-        (Some(r), Some(b), _) => Line::Geometry {
+    let line = match (args.case.geometry()?, &st.normal) {
+        (Some((r, b)), _) => Line::Geometry {
             r: [r[0].value(), r[1].value()],
             b: b.value(),
         },
-        (_, _, Some(n)) => Line::Normal([f(&n[0]), f(&n[1])]),
+        (_, Some(n)) => Line::Normal([f(&n[0]), f(&n[1])]),
         _ => anyhow::bail!(
             "a sweep in the plane needs the line of impact: --normal, or --radii with \
              --impact-parameter"

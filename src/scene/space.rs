@@ -25,7 +25,8 @@ use crate::report::Section;
 use crate::report::space::Show;
 use crate::space::pose::{Input, NormalGiven};
 use crate::space::typed::parse_masses;
-use crate::values::number::{Given, Number};
+use crate::values::number::Given;
+use crate::values::units::{Dimension, Quantity, parse as parse_quantity};
 
 /// The file as written.
 #[derive(Deserialize)]
@@ -162,12 +163,6 @@ impl SpaceScene {
             .as_ref()
             .map(|f| velocities(f, "fin"))
             .transpose()?;
-        let number = |v: &Spanned<Value>, key: &str| -> Result<Number, SceneError> {
-            v.get_ref()
-                .text()
-                .parse::<Number>()
-                .map_err(|e| err(Some(v.span()), format!("{key}: {e}")))
-        };
         let normal = match (&file.normal, &file.radii, &file.impact_parameter) {
             (Some(n), None, None) => Some(
                 n.get_ref()
@@ -176,25 +171,25 @@ impl SpaceScene {
                     .map_err(|e| err(Some(n.span()), format!("normal: {e}")))?,
             ),
             (None, Some(r), Some(b)) => {
-                let radii: Vec<Number> = r
+                let length = |x: &Value, span, key: &str| {
+                    parse_quantity(&x.text(), Dimension::Length)
+                        .map_err(|e| err(Some(span), format!("{key}: {e}")))
+                };
+                let radii: Vec<Quantity> = r
                     .get_ref()
                     .iter()
-                    .map(|x| {
-                        x.text()
-                            .parse::<Number>()
-                            .map_err(|e| err(Some(r.span()), format!("radii: {e}")))
-                    })
+                    .map(|x| length(x, r.span(), "radii"))
                     .collect::<Result<_, _>>()?;
-                let radii: [Number; 2] = radii.try_into().map_err(|r: Vec<Number>| {
+                let [r1, r2]: [Quantity; 2] = radii.try_into().map_err(|r: Vec<Quantity>| {
                     err(
                         Some(file.radii.as_ref().map(Spanned::span).unwrap_or_default()),
                         format!("radii: expected 2 values (R1, R2), got {}", r.len()),
                     )
                 })?;
-                Some(NormalGiven::Geometry {
-                    radii,
-                    b: number(b, "impact_parameter")?,
-                })
+                let bq = length(b.get_ref(), b.span(), "impact_parameter")?;
+                let (radii, b) = crate::space::pose::geometry([&r1, &r2], &bq)
+                    .map_err(|e| err(Some(r.span()), e))?;
+                Some(NormalGiven::Geometry { radii, b })
             }
             (None, None, None) => None,
             _ => {

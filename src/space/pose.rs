@@ -30,6 +30,32 @@ pub enum NormalGiven {
     Geometry { radii: [Number; 2], b: Number },
 }
 
+/// Radii and an impact parameter as typed, each a number or a length with its unit (`2.5 cm`).
+/// Only their ratio enters (`sin(phi) = b / (R1 + R2)`), so lengths with units are converted to
+/// metres exactly and plain numbers are kept as typed; a mix of the two is refused.
+pub fn geometry(radii: [&Quantity; 2], b: &Quantity) -> Result<([Number; 2], Number), String> {
+    let all = [radii[0], radii[1], b];
+    let with_unit = all.iter().filter(|q| q.unit.is_some()).count();
+    if with_unit == 0 {
+        return Ok((
+            [radii[0].number.clone(), radii[1].number.clone()],
+            b.number.clone(),
+        ));
+    }
+    if with_unit < all.len() {
+        return Err(
+            "give the radii and the impact parameter all with a length unit (2.5 cm) or all \
+             without"
+                .into(),
+        );
+    }
+    let metres = |q: &Quantity| -> Result<Number, String> {
+        let si = q.number.exact() * q.unit.map(|u| u.si()).unwrap_or(Q::ONE);
+        crate::values::quantity::number_of(&si).map_err(|e| e.to_string())
+    };
+    Ok(([metres(radii[0])?, metres(radii[1])?], metres(b)?))
+}
+
 impl std::str::FromStr for NormalGiven {
     type Err = TypedError;
     fn from_str(s: &str) -> Result<NormalGiven, TypedError> {

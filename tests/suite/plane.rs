@@ -887,3 +887,75 @@ fn directions_typed_as_bearings_print_as_bearings_too() {
         assert!(t.lines().any(|l| l.ends_with(&want)), "{want}\n{t}");
     }
 }
+
+#[test]
+fn radii_and_impact_parameter_take_lengths_with_units() {
+    // Only b / (R1 + R2) enters: disks of 2.5 cm, b = 2.5 cm is b / (R1 + R2) = 1/2, the same
+    // line of impact (30 degrees off the relative velocity) as radii 1, 1 and b = 1, and the
+    // same FIN, bit for bit: body 1 leaves at (1, -sqrt 3), body 2 at (3, sqrt 3).
+    let plain = json(&[
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),0",
+        "--radii",
+        "1,1",
+        "--impact-parameter",
+        "1",
+    ]);
+    for (radii, b) in [("2.5 cm,2.5 cm", "2.5 cm"), ("25 mm,0.025 m", "1 in")] {
+        let j = json(&[
+            "-m",
+            "1,1",
+            "-v",
+            "(4,0),0",
+            "--radii",
+            radii,
+            "--impact-parameter",
+            b,
+        ]);
+        if b == "1 in" {
+            // 1 in = 2.54 cm against R1 + R2 = 5 cm: sin(phi) = 0.508, another line.
+            let sin = 0.0254 / 0.05;
+            let cos = (1.0f64 - sin * sin).sqrt();
+            // Equal masses, elastic: body 2 leaves along n with speed 4 cos(phi).
+            let v2 = vecs(&j["fin"])[1].clone();
+            assert!((v2[0].hypot(v2[1]) - 4.0 * cos).abs() < 1e-14, "{v2:?}");
+            continue;
+        }
+        assert_eq!(j["fin"], plain["fin"], "{radii} {b}");
+        assert_eq!(j["angle_between_deg"], plain["angle_between_deg"]);
+    }
+    let (code, out, err) = run(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),0",
+        "--radii",
+        "2.5 cm,2.5",
+        "--impact-parameter",
+        "1",
+    ]);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(
+        err.contains("all with a length unit (2.5 cm) or all without"),
+        "{err}"
+    );
+    let (code, _, err) = run(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),0",
+        "--radii",
+        "2.5 kg,1",
+        "--impact-parameter",
+        "1",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("'kg' is a unit of mass, not of length"),
+        "{err}"
+    );
+}
