@@ -564,16 +564,23 @@ impl TypedValueParser for ColumnParser {
             .try_map(|s| match s.parse::<&'static Column>() {
                 Ok(c) => Ok(c.name.to_string()),
                 Err(_) if collide::table::runs::plane::is_plane_name(&s) => Ok(s),
-                Err(e) => Err(e),
+                Err(e) => Err(format!(
+                    "{e}; in the plane: {}",
+                    collide::table::runs::plane::plane_column_names()
+                )),
             })
             .parse_ref(cmd, arg, value)
     }
 
     fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        let plane = collide::table::runs::plane::PLANE_HELP
+            .iter()
+            .map(|(name, help)| PossibleValue::new(*name).help(*help));
         Some(Box::new(
             COLUMNS
                 .iter()
-                .map(|c| PossibleValue::new(c.name).help(c.help)),
+                .map(|c| PossibleValue::new(c.name).help(c.help))
+                .chain(plane),
         ))
     }
 }

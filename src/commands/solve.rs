@@ -19,7 +19,9 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     if args.rigid.active() {
         return super::rigid_solve::run(&args);
     }
-    if args.case.spatial() {
+    // Final velocities given as vectors make the case one in the plane too (`-v 0,0 --fin
+    // '(2,0),(-1,0)'`: a bare 0 is the zero vector of any dimension).
+    if args.case.spatial() || args.fin.as_ref().is_some_and(|f| f.pair.is_none()) {
         return super::space_solve::run(&args);
     }
     args.frame.on_line()?;

@@ -19,10 +19,11 @@ pub fn text(s: &Solved, exact: bool, units: &Units) -> String {
 /// ...` lines.
 pub fn lines(s: &Solved, exact: bool, units: &Units) -> String {
     let show = |q: &Q| {
-        if exact {
-            Exact::Rational(q.clone()).show()
-        } else {
-            num(to_f64(q).unwrap_or(f64::NAN))
+        match crate::values::rational::to_f64(q) {
+            _ if exact => Exact::Rational(q.clone()).show(),
+            Some(x) => num(x),
+            // Beyond binary64 (a residual of 2e308): its value to 20 digits, never inf or NaN.
+            None => Exact::Approx(q.clone()).show(),
         }
     };
     let unit = |v: Var| {

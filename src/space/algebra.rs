@@ -286,6 +286,106 @@ pub fn sign_change_roots(c: &[Q], digits: usize) -> Vec<Q> {
     out
 }
 
+/// Every real root of the polynomial `c` (coefficients from the constant up), each once, and
+/// whether it is exact: the roots of its square-free part `c / gcd(c, c')` (exact polynomial
+/// arithmetic), whose every root is simple, so a double root of `c` (a tangency: two bodies
+/// that leave together) is a sign change there and is found; each root found to `digits`
+/// digits is then tried against the rationals of small denominator near it (the convergents of
+/// its continued fraction), and one that is a root exactly is kept exact.
+pub fn real_roots(c: &[Q], digits: usize) -> Vec<(Q, bool)> {
+    let p = trim(c.to_vec());
+    if p.len() <= 1 {
+        return Vec::new();
+    }
+    let g = gcd(&p, &derivative(&p));
+    let free = if g.len() > 1 { divide(&p, &g) } else { p };
+    sign_change_roots(&free, digits)
+        .into_iter()
+        .map(|r| match snap(&free, &r) {
+            Some(q) => (q, true),
+            None => (r, false),
+        })
+        .collect()
+}
+
+/// `p` without zero coefficients at the top.
+fn trim(mut p: Vec<Q>) -> Vec<Q> {
+    while p.last().is_some_and(Zero::is_zero) {
+        p.pop();
+    }
+    p
+}
+
+fn derivative(p: &[Q]) -> Vec<Q> {
+    p.iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, c)| c * Q::from(k as i64))
+        .collect()
+}
+
+/// The quotient and remainder of `a / b` (`b` not zero).
+fn div_rem(a: &[Q], b: &[Q]) -> (Vec<Q>, Vec<Q>) {
+    let b = trim(b.to_vec());
+    let mut r = trim(a.to_vec());
+    let lead = b.last().cloned().unwrap_or(Q::ONE);
+    let mut q = vec![Q::ZERO; r.len().saturating_sub(b.len()) + 1];
+    while r.len() >= b.len() && !r.is_empty() {
+        let shift = r.len() - b.len();
+        let f = r.last().cloned().unwrap_or_default() / &lead;
+        for (k, bk) in b.iter().enumerate() {
+            r[shift + k] -= &f * bk;
+        }
+        q[shift] = f;
+        r.pop();
+        r = trim(r);
+    }
+    (trim(q), r)
+}
+
+fn divide(a: &[Q], b: &[Q]) -> Vec<Q> {
+    div_rem(a, b).0
+}
+
+/// The greatest common divisor of two polynomials (Euclid's algorithm, exactly).
+fn gcd(a: &[Q], b: &[Q]) -> Vec<Q> {
+    let (mut a, mut b) = (trim(a.to_vec()), trim(b.to_vec()));
+    while !b.is_empty() {
+        let r = div_rem(&a, &b).1;
+        a = b;
+        b = r;
+    }
+    a
+}
+
+/// A rational of small denominator within the root's bracket that is a root of `p` exactly:
+/// the convergents of the continued fraction of `r`, denominators up to 10^12.
+fn snap(p: &[Q], r: &Q) -> Option<Q> {
+    use dashu_int::IBig;
+    let (mut h0, mut h1) = (IBig::ZERO, IBig::ONE);
+    let (mut k0, mut k1) = (IBig::ONE, IBig::ZERO);
+    let mut x = r.clone();
+    let limit = IBig::from(10u8).pow(12);
+    for _ in 0..64 {
+        let a = x.floor();
+        let (h, k) = (&a * &h1 + &h0, &a * &k1 + &k0);
+        if k > limit {
+            return None;
+        }
+        let candidate = Q::from_parts_signed(h.clone(), k.clone());
+        if horner(p, &candidate).is_zero() {
+            return Some(candidate);
+        }
+        (h0, h1, k0, k1) = (h1, h, k1, k);
+        let frac = &x - Q::from(a);
+        if frac.is_zero() {
+            return None;
+        }
+        x = Q::ONE / frac;
+    }
+    None
+}
+
 /// Exact bisection of `f` on `[lo, hi]` (`f(lo) < 0` when `lo_negative`) to a width of
 /// `10^-digits` times the bracket's size (and at least 1e-300 absolute).
 fn bisect(f: &impl Fn(&Q) -> Q, mut lo: Q, mut hi: Q, lo_negative: bool, digits: usize) -> Q {

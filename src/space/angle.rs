@@ -219,21 +219,15 @@ impl std::str::FromStr for Angle {
     }
 }
 
-/// The compass bearing of the direction `a` degrees from +x (counterclockwise), the way it is
-/// typed: `N30E` for 60, `S20W` for 250 - 360 = -110, `NE` for 45, `W` for 180. The turn from N or
-/// S is written by `show`; a turn that `show` writes as 0, 45 or 90 is a compass point.
-pub fn compass(a: f64, show: impl Fn(f64) -> String) -> String {
-    // Clockwise from north.
-    let t = (90.0 - a).rem_euclid(360.0);
-    let (from, turn, to) = if t <= 90.0 {
-        ('N', t, 'E')
-    } else if t <= 180.0 {
-        ('S', 180.0 - t, 'E')
-    } else if t <= 270.0 {
-        ('S', t - 180.0, 'W')
-    } else {
-        ('N', 360.0 - t, 'W')
-    };
+/// The compass bearing of the direction `(x, y)` (east, north; any size), the way it is typed:
+/// `N30E` for 60 degrees from +x, `S20W` for -110, `NE` for 45, `W` for 180. The turn from N or
+/// S toward E or W is `atan2(|x|, |y|)`, from the components themselves (not `90 - angle`, which
+/// cancels near north and south), and is written by `show`; a turn that `show` writes as 0, 45
+/// or 90 is a compass point.
+pub fn compass(x: f64, y: f64, show: impl Fn(f64) -> String) -> String {
+    let from = if y >= 0.0 { 'N' } else { 'S' };
+    let to = if x >= 0.0 { 'E' } else { 'W' };
+    let turn = x.abs().atan2(y.abs()).to_degrees();
     match show(turn).as_str() {
         "0" => from.to_string(),
         "90" => to.to_string(),
@@ -298,18 +292,27 @@ mod tests {
     fn compass_bearings_read_back_as_typed() {
         let show = |x: f64| crate::values::number::num(x);
         // Each bearing, parsed to degrees from +x and written back.
+        let of = |a: f64| {
+            let (c, s, _) = Angle::degrees(crate::values::rational::from_f64(a)).unit();
+            compass(c, s, show)
+        };
         for t in [
             "N", "NE", "E", "SE", "S", "SW", "W", "NW", "N30E", "S20W", "S10E", "N80W", "N12.5E",
         ] {
-            let a = to_f64(t.parse::<Angle>().unwrap().exact_degrees().unwrap()).unwrap();
-            assert_eq!(compass(a, show), t, "{t} = {a} degrees");
+            let (c, s, _) = t.parse::<Angle>().unwrap().unit();
+            assert_eq!(compass(c, s, show), t, "{t}");
         }
         // E10N is N80E typed the other way round: it reads back from north.
-        assert_eq!(compass(10.0, show), "N80E");
-        // Angles from atan2 a few ulps off a compass point still name it.
-        assert_eq!(compass(60.000000000000014, show), "N30E");
-        assert_eq!(compass(-179.99999999999997, show), "W");
-        assert_eq!(compass(-90.0, show), "S");
+        assert_eq!(of(10.0), "N80E");
+        // Directions a few ulps off a compass point still name it.
+        assert_eq!(of(60.000000000000014), "N30E");
+        assert_eq!(of(-179.99999999999997), "W");
+        assert_eq!(of(-90.0), "S");
+        assert_eq!(compass(6e-17, -1.0, show), "S3.43774677078494e-15E");
+        // Near north the turn keeps its digits: (1e-15, 1) is atan(1e-15) east of north,
+        // 5.72957795130823e-14 degrees (90 - its angle from +x would cancel to 5.68e-14).
+        assert_eq!(compass(1e-15, 1.0, show), "N5.72957795130823e-14E");
+        assert_eq!(compass(-1e-10, -1.0, show), "S5.72957795130823e-9W");
         assert!(Angle::degrees(int(30)).typed == "30deg");
         assert!("N30E".parse::<Angle>().unwrap().is_bearing());
         assert!(!"30deg".parse::<Angle>().unwrap().is_bearing());

@@ -184,6 +184,17 @@ pub fn by_normal_parts<const D: usize>(
     out
 }
 
+/// The line of impact of two smooth disks (physics.md section 7), as the two weights of
+/// `n = c d + s d_perp` (`d` the relative velocity `v1 - v2`, `d_perp` it turned by +90
+/// degrees): `s = sin(phi) = b / (R1 + R2)` and `c = cos(phi) = sqrt((1 - |s|)(1 + |s|))`.
+/// Written with the ratio `s`, it never squares a radius, so disks of 1e200 or 1e-200 give the
+/// same line as disks of 1; `c` has no cancellation near a grazing contact. `None` when the
+/// disks miss (`|b| > R1 + R2`); `c = 0` at a grazing contact, where they do not approach.
+pub fn disks(s: f64) -> Option<(f64, f64)> {
+    let a = s.abs();
+    (a <= 1.0).then(|| (((1.0 - a) * (1.0 + a)).sqrt(), s))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

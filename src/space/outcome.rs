@@ -10,7 +10,7 @@ use num_traits::{Signed, Zero};
 
 use crate::line::frame::Frame;
 use crate::values::quantity::Exact;
-use crate::values::rational::{Q, half, to_f64};
+use crate::values::rational::{Q, direction, half, scaled, to_f64};
 
 /// N bodies, before and after, in `dim` dimensions.
 #[derive(Clone, Debug, PartialEq)]
@@ -215,7 +215,11 @@ impl Outcome {
         let n = self.impulse_line()?;
         let before = dot(&n, &sub(&self.v_in[0], &self.v_in[1]));
         let after = dot(&n, &sub(&self.fin[0], &self.fin[1]));
-        Some(before.is_positive() && !after.is_positive())
+        // They approach and then do not; or they start together and are pushed apart.
+        Some(
+            (before.is_positive() && !after.is_positive())
+                || (before.is_zero() && after.is_negative()),
+        )
     }
 
     /// The line of impact, or where none was given, the direction of the impulse on body 2
@@ -263,33 +267,38 @@ pub struct NormalParts {
 }
 
 /// `|v|` and the angle from +x in degrees (counterclockwise, in (-180, 180]), in binary64:
-/// `hypot` of the rounded components, `atan2` in degrees; `None` for the zero vector's angle.
+/// `hypot` of the rounded components, `atan2` in degrees of the direction (scaled by a power of
+/// two, so that no size of vector loses it); `None` for the zero vector's angle.
 pub fn polar(v: &[Q]) -> (f64, Option<f64>) {
     let f: Vec<f64> = v.iter().map(|x| to_f64(x).unwrap_or(f64::NAN)).collect();
     let speed = f.iter().fold(0.0f64, |s, x| s.hypot(*x));
-    let angle = (v.len() == 2 && !(v[0].is_zero() && v[1].is_zero()))
-        .then(|| f[1].atan2(f[0]).to_degrees());
+    let angle = (v.len() == 2 && !(v[0].is_zero() && v[1].is_zero())).then(|| {
+        let d = direction(v);
+        d[1].atan2(d[0]).to_degrees()
+    });
     (speed, angle)
 }
 
-/// The angle between two vectors, in degrees (`None` if either is zero).
+/// The angle between two vectors, in degrees (`None` if either is zero): `atan2(|a x b|, a.b)`
+/// (accurate at every angle, where acos is not near 0 and 180) of their directions, each scaled
+/// by a power of two so that neither the products of vectors of 1e-170 nor of 1e155 leave
+/// binary64. The dot and cross products are exact, then rounded once.
 pub fn angle_between(a: &[Q], b: &[Q]) -> Option<f64> {
     if a.iter().all(Zero::is_zero) || b.iter().all(Zero::is_zero) {
         return None;
     }
-    // atan2(|a x b|, a.b) is accurate at every angle (acos is not near 0 and 180).
-    let ab = to_f64(&dot(a, b))?;
-    let f = |v: &[Q]| -> Vec<f64> { v.iter().map(|x| to_f64(x).unwrap_or(0.0)).collect() };
-    let (fa, fb) = (f(a), f(b));
+    let (qa, qb) = (scaled(a), scaled(b));
+    let ab = to_f64(&dot(&qa, &qb))?;
     let cross = match a.len() {
-        2 => to_f64(&(&a[0] * &b[1] - &a[1] * &b[0]))?.abs(),
+        2 => to_f64(&(&qa[0] * &qb[1] - &qa[1] * &qb[0]))?.abs(),
         3 => {
             let c = [
-                fa[1] * fb[2] - fa[2] * fb[1],
-                fa[2] * fb[0] - fa[0] * fb[2],
-                fa[0] * fb[1] - fa[1] * fb[0],
+                &qa[1] * &qb[2] - &qa[2] * &qb[1],
+                &qa[2] * &qb[0] - &qa[0] * &qb[2],
+                &qa[0] * &qb[1] - &qa[1] * &qb[0],
             ];
-            c.iter().fold(0.0f64, |s, x| s.hypot(*x))
+            c.iter()
+                .fold(0.0f64, |s, x| s.hypot(to_f64(x).unwrap_or(0.0)))
         }
         _ => 0.0,
     };

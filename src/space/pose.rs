@@ -9,7 +9,7 @@
 
 use num_traits::{Signed, Zero};
 
-use crate::values::number::{Given, Number};
+use crate::values::number::{Given, Number, num};
 use crate::values::rational::{Q, from_f64};
 use crate::values::units::{Quantity, ResolveError, Units, resolve};
 
@@ -134,7 +134,9 @@ pub enum PoseError {
          from the relative velocity), and they must differ"
     )]
     GeometryVelocities,
-    #[error("impact parameter {b} is larger than R1 + R2 = {sum}: the bodies miss each other")]
+    #[error(
+        "impact parameter |b| = {b} is larger than R1 + R2 = {sum}: the bodies miss each other"
+    )]
     Miss { b: String, sum: String },
     #[error("radius {0} must be a number > 0")]
     Radius(String),
@@ -359,10 +361,19 @@ impl Input {
                 let sum = &r[0] + &r[1];
                 let b_q = q_of(b, typed);
                 if b_q.abs() > sum {
-                    return Err(PoseError::Miss {
-                        b: b.to_string(),
-                        sum: crate::values::quantity::fraction(&sum),
-                    });
+                    // As people read them; to every digit where that shows the difference
+                    // (the binary64 values of 0.7 + 0.4 and of 1.1 differ).
+                    let f = |q: &Q| crate::values::rational::to_f64(q).unwrap_or(f64::INFINITY);
+                    let (b, s) = (num(f(&b_q.abs())), num(f(&sum)));
+                    let sum = if b == s {
+                        format!(
+                            "{s} (by {} in binary64; --exact reads the values as typed)",
+                            num(f(&(b_q.abs() - &sum)))
+                        )
+                    } else {
+                        s
+                    };
+                    return Err(PoseError::Miss { b, sum });
                 }
                 let (Some(v1), Some(v2)) = (v_in[0].value(), v_in[1].value()) else {
                     return Err(PoseError::GeometryVelocities);
@@ -371,10 +382,13 @@ impl Input {
                 if d.iter().all(Zero::is_zero) {
                     return Err(PoseError::GeometryVelocities);
                 }
-                // n = cos(phi) d/|d| + sin(phi) d_perp/|d|, along sqrt(R^2 - b^2) d + b d_perp.
-                let c2 = &sum * &sum - &b_q * &b_q;
+                // n = cos(phi) d + sin(phi) d_perp with sin(phi) = s = b / (R1 + R2): from the
+                // ratio, so no radius is squared (`impact::disks`), times R1 + R2 where that is
+                // exact (n = sqrt((R1 + R2)^2 - b^2) d + b d_perp, as typed radii read).
+                let s = &b_q / &sum;
+                let c2 = (Q::ONE - s.abs()) * (Q::ONE + s.abs());
                 let (c, rounded) = match crate::values::rational::sqrt_exact(&c2) {
-                    Some(c) => (c, false),
+                    Some(c) => (c * &sum, false),
                     None if self.exact => {
                         return Err(PoseError::Irrational {
                             what: "the line of impact".into(),
@@ -382,13 +396,15 @@ impl Input {
                             hint: "--normal '(3,4)'",
                         });
                     }
+                    // c: the square root of (1 - s^2) rounded once, within an ulp.
                     None => (
                         from_f64(crate::values::rational::to_f64(&c2).unwrap_or(0.0).sqrt()),
                         true,
                     ),
                 };
+                let (c, sin) = if rounded { (c, s) } else { (c, b_q.clone()) };
                 let perp = [-d[1].clone(), d[0].clone()];
-                let v = vec![&c * &d[0] + &b_q * &perp[0], &c * &d[1] + &b_q * &perp[1]];
+                let v = vec![&c * &d[0] + &sin * &perp[0], &c * &d[1] + &sin * &perp[1]];
                 (v, rounded)
             }
         };

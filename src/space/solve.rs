@@ -176,6 +176,12 @@ pub enum SolveError {
     NeedsNormal(String),
     #[error("these unknowns are not fixed by the laws in a way collide can solve: {0}")]
     Unsupported(&'static str),
+    #[error(
+        "a line of impact (--normal, --radii) is a contact between two bodies, and this case has \
+         {0}: give two bodies with it; {0} bodies that stick take -e 0, and bodies pushed apart \
+         their final velocities"
+    )]
+    NormalOfTwo(usize),
 }
 
 impl From<TooNonlinear> for SolveError {
@@ -284,18 +290,24 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
     let fin: Vec<Vec<Poly>> = (0..n)
         .map(|i| b.vector(&given.fin[i], i, true, dim))
         .collect();
-    let e = match &given.e {
+    let fin_given = given
+        .fin
+        .iter()
+        .any(|f| !matches!(f, Velocity::Components(c) if c.iter().all(Given::is_unknown)));
+    // `-e ?` beside final velocities and no line of impact asks what leaving e out asks: e
+    // follows from the final velocities along the impulse (`impulse_restitution`), no law.
+    let given_e = match &given.e {
+        Some(Given::Unknown) if given.normal.is_none() && fin_given => None,
+        e => e.clone(),
+    };
+    let e = match &given_e {
         Some(Given::Known(q)) => Some(Poly::constant(q.clone())),
         Some(_) => Some(b.var(Unknown::Restitution)),
         None => None,
     };
     let together = given.v_in.iter().all(|v| v.value().is_some())
         && given.v_in.windows(2).all(|w| w[0].value() == w[1].value());
-    let fin_given = given
-        .fin
-        .iter()
-        .any(|f| !matches!(f, Velocity::Components(c) if c.iter().all(Given::is_unknown)));
-    let separation = together && n >= 2 && given.e.is_none() && fin_given;
+    let separation = together && n >= 2 && given_e.is_none() && fin_given;
 
     let mut eqs: Vec<(Law, Poly)> = Vec::new();
     for k in 0..dim {
@@ -305,15 +317,13 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
         }
         eqs.push((Law::Momentum(k), p));
     }
-    let e_value = given.e.as_ref().and_then(|g| g.known().cloned());
+    let e_value = given_e.as_ref().and_then(|g| g.known().cloned());
     let mut e_used = e.clone();
     if separation {
         // Momentum alone: e means nothing for bodies pushed apart.
     } else if let Some(nrm) = &given.normal {
         if n != 2 {
-            return Err(SolveError::Unsupported(
-                "a line of impact is between two bodies: give two bodies with --normal",
-            ));
+            return Err(SolveError::NormalOfTwo(n));
         }
         // e given, or unknown: `?`, or not given beside final velocities (else elastic).
         let e = match (&e, fin_given) {
@@ -527,14 +537,20 @@ fn solve_system(
             if in_t.len() < 2 {
                 return Err(too_few(in_t.len()));
             }
-            let roots = match unit_circle(&in_t) {
+            let roots: Vec<(Vec<Q>, bool)> = match unit_circle(&in_t) {
                 Some(k) => on_unit_circle(&in_t[1 - k.min(1)].1)
                     .into_iter()
-                    .map(|t| t.to_vec())
+                    .map(|(t, exact)| (t.to_vec(), exact))
                     .collect(),
-                None => two_parameters(&in_t[0].1, &in_t[1].1)?,
+                None => two_parameters(&in_t[0].1, &in_t[1].1)?
+                    .into_iter()
+                    .map(|t| (t, false))
+                    .collect(),
             };
-            Ok(roots.into_iter().map(|t| (point(&t), true)).collect())
+            Ok(roots
+                .into_iter()
+                .map(|(t, exact)| (point(&t), !exact))
+                .collect())
         }
         _ => Err(too_few(in_t.len().min(free))),
     }
@@ -553,11 +569,12 @@ fn unit_circle(in_t: &[(Law, Poly)]) -> Option<usize> {
     })
 }
 
-/// The points of the unit circle where the conic `q(t0, t1) = 0`, from its rational points
-/// `((1 - s^2)/(1 + s^2), 2s/(1 + s^2))`: `(1 + s^2)^2 q` is a quartic in `s` with rational
-/// coefficients, its roots narrowed exactly to 40 digits (the points lie on the circle
-/// exactly); `s = infinity` is the point `(-1, 0)`.
-fn on_unit_circle(q: &Poly) -> Vec<[Q; 2]> {
+/// The points of the unit circle where the conic `q(t0, t1) = 0`, and whether each is exact,
+/// from its rational points `((1 - s^2)/(1 + s^2), 2s/(1 + s^2))`: `(1 + s^2)^2 q` is a quartic
+/// in `s` with rational coefficients, its roots (double ones too: a tangency) narrowed exactly
+/// to 40 digits or found exactly when rational (the points lie on the circle exactly);
+/// `s = infinity` is the point `(-1, 0)`.
+fn on_unit_circle(q: &Poly) -> Vec<([Q; 2], bool)> {
     let c = |k: (usize, usize)| q.quad.get(&k).cloned().unwrap_or_default();
     let l = |k: usize| q.lin.get(&k).cloned().unwrap_or_default();
     let (a, b, cc, d, e, f) = (c((0, 0)), c((0, 1)), c((1, 1)), l(0), l(1), q.c.clone());
@@ -570,15 +587,15 @@ fn on_unit_circle(q: &Poly) -> Vec<[Q; 2]> {
         &two * (&e - &b),
         &a - &d + &f,
     ];
-    let mut points: Vec<[Q; 2]> = algebra::sign_change_roots(&coeffs, algebra::ROOT_DIGITS)
+    let mut points: Vec<([Q; 2], bool)> = algebra::real_roots(&coeffs, algebra::ROOT_DIGITS)
         .into_iter()
-        .map(|s| {
+        .map(|(s, exact)| {
             let den = Q::ONE + &s * &s;
-            [(Q::ONE - &s * &s) / &den, &two * &s / &den]
+            ([(Q::ONE - &s * &s) / &den, &two * &s / &den], exact)
         })
         .collect();
     if coeffs[4].is_zero() {
-        points.push([-Q::ONE, Q::ZERO]);
+        points.push(([-Q::ONE, Q::ZERO], true));
     }
     points
 }

@@ -436,7 +436,7 @@ pub fn round_significant(x: f64, digits: u8) -> f64 {
         // decimal anyone typed or reads as one (3.4641016151377548 is shortest
         // 3.464101615137755, yet to 15 digits it is ...775): the default 15 digits are
         // unchanged.
-        return format!("{:.*e}", n - 1, x).parse().unwrap_or(x);
+        return finite_or(format!("{:.*e}", n - 1, x).parse().unwrap_or(x), x);
     }
     let mut kept = all[..n].to_vec();
     if all[n] >= b'5' {
@@ -460,9 +460,18 @@ pub fn round_significant(x: f64, digits: u8) -> f64 {
     }
     let sign = if x < 0.0 { "-" } else { "" };
     let rest = std::str::from_utf8(&kept[1..]).unwrap_or("0");
-    format!("{sign}{}.{rest}0e{exponent}", char::from(kept[0]))
-        .parse()
-        .unwrap_or(x)
+    finite_or(
+        format!("{sign}{}.{rest}0e{exponent}", char::from(kept[0]))
+            .parse()
+            .unwrap_or(x),
+        x,
+    )
+}
+
+/// `rounded`, unless rounding carried it past binary64's largest value (1.7976931348623157e308
+/// to 15 digits is 1.79769313486232e308, which reads as infinity): then `x` as it is.
+fn finite_or(rounded: f64, x: f64) -> f64 {
+    if rounded.is_finite() { rounded } else { x }
 }
 
 /// A value a problem gives, or `?` for one it asks for, or (for a mass) a wall.
@@ -629,6 +638,10 @@ mod tests {
             assert_eq!(round_significant(x, d), want, "{x} to {d}");
         }
         assert_eq!(round_significant(0.1 + 0.2, 0), 0.1 + 0.2);
+        // Rounding up past the largest binary64 would read as infinity: the value stays.
+        assert_eq!(round_significant(f64::MAX, 15), f64::MAX);
+        assert_eq!(super::num(-f64::MAX), "-1.7976931348623157e308");
+        assert_eq!(round_significant(1.7e308, 15), 1.7e308);
     }
 
     fn num(s: &str) -> f64 {

@@ -38,6 +38,36 @@ pub fn from_f64(x: f64) -> Q {
     Q::try_from(x).unwrap_or_default()
 }
 
+/// The binary64 components of `v` scaled by one power of two (exact) so that the largest is
+/// about 1: the direction of `v` in binary64 whatever its size. Angles need only directions,
+/// and a vector of 1e-170 or 1e155 has products (dot, cross, hypot) that underflow or overflow
+/// in binary64 unscaled. A component below 2^-1074 of the largest rounds to 0; the zero vector
+/// stays zero.
+pub fn direction(v: &[Q]) -> Vec<f64> {
+    scaled(v).iter().map(|x| to_f64(x).unwrap_or(0.0)).collect()
+}
+
+/// `v` times the power of two that makes its largest component about 1, exactly (see
+/// [`direction`]); the zero vector as it is.
+pub fn scaled(v: &[Q]) -> Vec<Q> {
+    use dashu_int::ops::{BitTest, UnsignedAbs};
+    // log2 of a rational to within one: bits of the numerator less bits of the denominator.
+    let log2 = |q: &Q| -> Option<isize> {
+        (q.numerator() != &IBig::ZERO).then(|| {
+            q.numerator().unsigned_abs().bit_len() as isize - q.denominator().bit_len() as isize
+        })
+    };
+    let Some(k) = v.iter().filter_map(log2).max() else {
+        return v.to_vec();
+    };
+    let scale = if k >= 0 {
+        Q::from_parts(IBig::ONE, UBig::ONE << k as usize)
+    } else {
+        Q::from(IBig::ONE << (-k) as usize)
+    };
+    v.iter().map(|x| x * &scale).collect()
+}
+
 /// `sqrt(q)` when it is rational (`q >= 0` in lowest terms with a square numerator and
 /// denominator), else `None`.
 pub fn sqrt_exact(q: &Q) -> Option<Q> {
@@ -69,6 +99,22 @@ mod tests {
         assert_eq!(to_f64(&(tiny / int(2))), Some(0.0));
         assert_eq!(to_f64(&Q::from(IBig::from(10u8).pow(309))), None);
         assert_eq!(pow10(3), UBig::from(1000u16));
+    }
+
+    #[test]
+    fn directions_are_scaled_by_a_power_of_two() {
+        let big = Q::from(IBig::from(10u8).pow(400));
+        let tiny = Q::from_parts(IBig::ONE, UBig::from(10u8).pow(400));
+        for s in [big, tiny, int(1), ratio(-3, 7)] {
+            let v = [&s * int(3), &s * int(-4)];
+            // Exactly v times a power of two: the ratio of the components is kept exactly.
+            let q = scaled(&v);
+            assert_eq!(&q[0] / &q[1], ratio(-3, 4));
+            assert_eq!(&q[0] / &v[0], &q[1] / &v[1]);
+            let d = direction(&v);
+            assert!(d[0].abs().max(d[1].abs()) >= 0.5 && d[0].abs().max(d[1].abs()) <= 8.0);
+        }
+        assert_eq!(direction(&[int(0), int(0)]), vec![0.0, 0.0]);
     }
 
     #[test]

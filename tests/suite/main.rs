@@ -14,6 +14,7 @@ mod invariants;
 mod lecture;
 mod metamorphic;
 mod plane;
+mod plane_edges;
 mod plane_sweeps;
 mod plot;
 mod problems;

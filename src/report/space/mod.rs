@@ -134,7 +134,16 @@ impl Style {
                 Exact::Rational(q.clone()).show()
             }
         } else {
-            num(self.f(q))
+            match to_f64(q) {
+                Some(x) => num(x + 0.0),
+                // Beyond binary64: the report is refused (`checked`), but a line printed
+                // before that (a solved value beside a failed check) shows the value itself,
+                // never the 0 `f` stands in with.
+                None => {
+                    self.overflow.set(true);
+                    Exact::Approx(q.clone()).show()
+                }
+            }
         }
     }
 
@@ -191,7 +200,13 @@ pub(crate) fn speed_angle(style: &Style, v: &[Q]) -> String {
     let (speed, angle) = polar(v);
     match angle {
         Some(a) if v.len() == 2 && style.bearings => {
-            format!("{} @ {}° ({})", num(speed), num(a), compass(a, num))
+            let d = crate::values::rational::direction(v);
+            format!(
+                "{} @ {}° ({})",
+                num(speed),
+                num(a),
+                compass(d[0], d[1], num)
+            )
         }
         Some(a) if v.len() == 2 => format!("{} @ {}°", num(speed), num(a)),
         _ if v.len() == 1 => String::new(),
@@ -226,6 +241,8 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
             "elastic: ka-bong"
         } else if *e > Q::ONE {
             "superelastic: energy released"
+        } else if e.is_negative() {
+            "negative: no collision"
         } else {
             "ka-whump"
         };

@@ -3,6 +3,7 @@
 
 use std::fmt::Write;
 
+use num_traits::Signed;
 use serde_json::{Map, Value, json};
 
 use crate::line::frame::Frame;
@@ -112,6 +113,11 @@ pub enum RenderError {
          equation has no real root); check them"
     )]
     NoSolution,
+    #[error(
+        "e = {0} < 0: along the line of impact the bodies would pass through each other (the \
+         final velocities given approach, or stay, where a collision separates them); check them"
+    )]
+    NegativeRestitution(String),
 }
 
 /// Why a solution is left out when another one is physical.
@@ -191,23 +197,32 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     if all.is_empty() {
         return Err(RenderError::NoSolution);
     }
-    let mut judged: Vec<(Outcome, Vec<Check>, Verdict)> = Vec::new();
+    // Each solution as the observer sees it, with the observer's velocity.
+    let mut judged: Vec<(Outcome, Vec<Check>, Verdict, Vec<Q>)> = Vec::new();
     for (o, c) in all {
         let v = Verdict::of(&o, &posed.statement);
         let w = o.observer(opts.frame, posed.typed_values)?;
-        judged.push((o.boost(&w), c, v));
+        judged.push((o.boost(&w), c, v, w));
     }
-    let keep: Vec<&(Outcome, Vec<Check>, Verdict)> =
-        if judged.iter().any(|(_, _, v)| *v == Verdict::Physical) {
+    let keep: Vec<&(Outcome, Vec<Check>, Verdict, Vec<Q>)> =
+        if judged.iter().any(|(_, _, v, _)| *v == Verdict::Physical) {
             judged
                 .iter()
-                .filter(|(_, _, v)| *v == Verdict::Physical)
+                .filter(|(_, _, v, _)| *v == Verdict::Physical)
                 .collect()
         } else {
             judged.iter().collect()
         };
-    let inconsistent = keep.iter().all(|(_, c, _)| c.iter().any(|c| !c.ok));
-    if let [(o, _, Verdict::Unphysical)] = keep.as_slice()
+    let inconsistent = keep.iter().all(|(_, c, _, _)| c.iter().any(|c| !c.ok));
+    // A restitution solved below zero is no collision (the rail refuses it the same way): the
+    // bodies would pass through each other.
+    if !inconsistent
+        && let [(o, _, Verdict::Unphysical, _)] = keep.as_slice()
+        && let Some(e) = o.e.as_ref().filter(|e| e.is_negative())
+    {
+        return Err(RenderError::NegativeRestitution(style.show(e, o.approx)));
+    }
+    if let [(o, _, Verdict::Unphysical, _)] = keep.as_slice()
         && asked.is_empty()
         && let Some(n) = &o.normal
     {
@@ -223,7 +238,7 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     let many = keep.len() > 1;
     let mut text = String::new();
     let mut list = Vec::new();
-    for (k, (o, checks, v)) in keep.iter().enumerate() {
+    for (k, (o, checks, v, w)) in keep.iter().enumerate() {
         if many {
             let _ = writeln!(
                 text,
@@ -261,6 +276,13 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
             super::json(o, opts.show, &style)?
         };
         let m = j.as_object_mut().expect("a report is an object");
+        if *opts.frame != Frame::Lab {
+            let w: Vec<Value> = w.iter().map(|x| style.json(x, o.approx)).collect();
+            m.insert(
+                "frame".into(),
+                json!({ "name": opts.frame.to_string(), "w": w }),
+            );
+        }
         if opts.reverse && !inconsistent {
             m.insert("reverse".into(), reverse_json(o, &style)?);
         }

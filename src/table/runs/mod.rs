@@ -100,7 +100,11 @@ fn fill<K: Kind>(
         *slot = match cell {
             Cell::Param(p) => point[*p].1,
             Cell::Of(c) => match kind.value(*c, out) {
-                Some(v) if !v.is_finite() => return Err(format!("a result became {v}")),
+                Some(v) if !v.is_finite() => {
+                    return Err(format!(
+                        "a result is beyond binary64 (it became {v}): rescale the units"
+                    ));
+                }
                 Some(v) => v,
                 None => f64::NAN,
             },
@@ -359,14 +363,17 @@ pub fn cells<K: Kind>(
         } else if let Some(c) = kind.column(name) {
             Cell::Of(c)
         } else {
+            let params: Vec<String> = params.iter().map(Named::name).collect();
+            // The summary columns that are not also parameters (nx, ny of a batch).
+            let forms = kind.column_forms();
+            let forms: Vec<&str> = forms
+                .split(", ")
+                .filter(|c| !params.iter().any(|p| p == c))
+                .collect();
             return Err(format!(
                 "'{name}' is not a column: expected a parameter ({}), {}, or {ERROR}",
-                params
-                    .iter()
-                    .map(Named::name)
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                kind.column_forms()
+                params.join(", "),
+                forms.join(", ")
             ));
         };
         cells.push(cell);

@@ -109,6 +109,36 @@ pub const COLUMNS: [(&str, Col); 21] = [
     ("v2", Col::Speed(1)),
 ];
 
+/// The columns only a table in the plane has, with their help (`--help`, and the message for a
+/// column neither table has).
+pub const PLANE_HELP: [(&str, &str); 17] = [
+    ("fin1x", "in the plane: FIN of body 1, x"),
+    ("fin1y", "in the plane: FIN of body 1, y"),
+    ("fin2x", "in the plane: FIN of body 2, x"),
+    ("fin2y", "in the plane: FIN of body 2, y"),
+    ("speed1", "in the plane: |v1'|"),
+    ("speed2", "in the plane: |v2'|"),
+    ("angle1_deg", "in the plane: direction of v1' from +x"),
+    ("angle2_deg", "in the plane: direction of v2' from +x"),
+    ("turned1_deg", "in the plane: angle from v1 to v1'"),
+    ("turned2_deg", "in the plane: angle from v2 to v2'"),
+    ("between_deg", "in the plane: angle between v1' and v2'"),
+    ("jx", "in the plane: impulse on body 2, x"),
+    ("jy", "in the plane: impulse on body 2, y"),
+    ("nx", "in the plane: line of impact used, x"),
+    ("ny", "in the plane: line of impact used, y"),
+    (
+        "normal_deg",
+        "in the plane: line of impact's angle (a parameter)",
+    ),
+    ("b", "in the plane: impact parameter of disks (a parameter)"),
+];
+
+/// The names of the columns only the plane has, comma-separated.
+pub fn plane_column_names() -> String {
+    PLANE_HELP.map(|(n, _)| n).join(", ")
+}
+
 /// Names a planar `--vary` or `--columns` may use (what the 1D table does not know).
 pub fn is_plane_name(name: &str) -> bool {
     let name = name.trim().replace('-', "_");
@@ -130,12 +160,20 @@ fn cross_dot(a: [f64; 2], b: [f64; 2]) -> (f64, f64) {
     (cross.value(), dot.value())
 }
 
+/// `a` times the power of two that makes its largest component about 1 (exact): its direction,
+/// whose products neither underflow (1e-300) nor overflow (1e200).
+fn direction(a: [f64; 2]) -> [f64; 2] {
+    let k = a[0].abs().max(a[1].abs()).log2().floor() as i32;
+    // In two factors, each within binary64's range (k runs from -1074 to 1023).
+    a.map(|x| x * 2f64.powi(-k / 2) * 2f64.powi(-k + k / 2))
+}
+
 /// The angle from `a` to `b` in degrees, in [0, 180]; `None` if either is zero.
 fn between(a: [f64; 2], b: [f64; 2]) -> Option<f64> {
     if a == [0.0, 0.0] || b == [0.0, 0.0] {
         return None;
     }
-    let (c, d) = cross_dot(a, b);
+    let (c, d) = cross_dot(direction(a), direction(b));
     Some(c.abs().atan2(d).to_degrees())
 }
 
@@ -160,20 +198,29 @@ impl PlaneSweep {
             Line::Normal(n) => Ok(n),
             Line::Geometry { r, b } => {
                 let sum = r[0] + r[1];
-                if b.abs() > sum {
+                // Halved where the sum of two radii near 1.8e308 would overflow.
+                let s = if sum.is_finite() {
+                    b / sum
+                } else {
+                    (0.5 * b) / (0.5 * r[0] + 0.5 * r[1])
+                };
+                let Some((c, s)) = impact::disks(s) else {
                     return Err(format!(
                         "the disks miss: |b| = {} > R1 + R2 = {}",
                         crate::values::number::num(b.abs()),
                         crate::values::number::num(sum)
                     ));
-                }
+                };
                 let d = [v[0][0] - v[1][0], v[0][1] - v[1][1]];
                 if d == [0.0, 0.0] {
                     return Err("the bodies do not move relative to each other".into());
                 }
-                // sqrt((R - b)(R + b)): no cancellation in R^2 - b^2.
-                let c = ((sum - b.abs()) * (sum + b.abs())).sqrt();
-                Ok([c * d[0] - b * d[1], c * d[1] + b * d[0]])
+                if c == 0.0 {
+                    return Err("a grazing contact: they do not approach along the line".into());
+                }
+                // The direction of d: no product leaves binary64.
+                let d = direction(d);
+                Ok([c * d[0] - s * d[1], c * d[1] + s * d[0]])
             }
         }
     }
@@ -184,14 +231,30 @@ impl Impact {
         [self.m[i] * self.v[i][0], self.m[i] * self.v[i][1]]
     }
 
-    /// `1/2 mu (n.d)^2 / n.n`, `mu = m1 (m2 / (m1 + m2))`.
+    /// The reduced mass `m1 m2 / (m1 + m2) = small / (1 + small / large)`: no product or sum of
+    /// the masses, so neither a ratio of 1e400 (`m2 / (m1 + m2)` underflows) nor masses near
+    /// the top of binary64 (their sum overflows) lose it. Within 2 ulps.
+    fn mu(&self) -> f64 {
+        let (large, small) = (self.m[0].max(self.m[1]), self.m[0].min(self.m[1]));
+        small / (1.0 + small / large)
+    }
+
+    /// `n.(v1 - v2)` and `n.n`, each rounded once (double-double sums of exact products).
+    fn closing(&self) -> (f64, f64) {
+        let n = self.n;
+        let v = self.v;
+        let nd = Dd::prod(n[0], v[0][0]) + Dd::prod(n[1], v[0][1])
+            - Dd::prod(n[0], v[1][0])
+            - Dd::prod(n[1], v[1][1]);
+        let (_, nn) = cross_dot(n, n);
+        (nd.value(), nn)
+    }
+
+    /// `1/2 mu (n.d)^2 / n.n`.
     fn crunch(&self) -> f64 {
-        let d = [self.v[0][0] - self.v[1][0], self.v[0][1] - self.v[1][1]];
-        let (_, nd) = cross_dot(self.n, d);
-        let (_, nn) = cross_dot(self.n, self.n);
-        let mu = self.m[0] * (self.m[1] / (self.m[0] + self.m[1]));
+        let (nd, nn) = self.closing();
         // (n.d)^2 / n.n from the rounded dot products, no square root: a few ulps.
-        0.5 * mu * (nd * (nd / nn))
+        0.5 * self.mu() * (nd * (nd / nn))
     }
 
     /// The energy of the relative motion after: the tangential part passes, the normal part
@@ -200,10 +263,9 @@ impl Impact {
         let d = [self.v[0][0] - self.v[1][0], self.v[0][1] - self.v[1][1]];
         let (dn_cross, dn) = cross_dot(d, self.n);
         let (_, nn) = cross_dot(self.n, self.n);
-        let mu = self.m[0] * (self.m[1] / (self.m[0] + self.m[1]));
         let e2 = self.e * self.e;
         let q = (Dd::prod(dn_cross, dn_cross) + Dd::new(e2) * Dd::prod(dn, dn)) / Dd::new(nn);
-        0.5 * mu * q.value()
+        0.5 * self.mu() * q.value()
     }
 
     /// `KE_COM = 1/2 |P|^2 / M`.
@@ -236,7 +298,12 @@ impl Impact {
             Col::KeFin => self.ke_com() + self.ke_relative_fin(),
             Col::Crunch => self.crunch(),
             Col::Lost => (1.0 - self.e) * (1.0 + self.e) * self.crunch(),
-            Col::Impulse(k) => self.m[1] * (self.fin[1][k] - self.v[1][k]),
+            // The impulse on body 2, `(1 + e) mu (n.d / n.n) n` (physics.md section 7), not
+            // `m2 (v2' - v2)`, which cancels to nothing when body 2 barely changes.
+            Col::Impulse(k) => {
+                let (nd, nn) = self.closing();
+                (1.0 + self.e) * self.mu() * (nd / nn) * self.n[k]
+            }
             Col::Normal(k) => self.n[k],
         })
     }
