@@ -43,6 +43,10 @@ use crate::values::rational::Q;
 /// Sections a stage prints unless `show` says otherwise: the vectors and the energies.
 pub const STAGE_SHOW: [Section; 2] = [Section::Vectors, Section::Energy];
 
+/// The most stages a scene holds (each is solved twice in binary64 mode, and a chain's exact
+/// fractions grow with its length).
+pub const MAX_STAGES: usize = 100;
+
 /// Top-level keys of a chain's report (`[expect]` at the top addresses them).
 pub const STAGES_KEYS: [&str; 5] = ["collide_again", "next", "after", "stages", "units"];
 
@@ -211,6 +215,12 @@ mod tests {
         assert!(e.message.contains("'A' already names a body"), "{e}");
         let e = parse(&format!("{named}[[stage]]\nbodies = [\"B\", \"floor\"]\nmasses = [1, \"wall\"]\nvelocities = [\"stage1.fin2\", 0]\n")).unwrap_err();
         assert!(e.message.contains("name it \"wall\""), "{e}");
+        let e = parse("[[stage]]\nbodies = [\"A\", \"A\"]\nmasses = [1, 1]\nvelocities = [1, 0]\n")
+            .unwrap_err();
+        assert!(
+            e.message.contains("'A' names both bodies of this stage"),
+            "{e}"
+        );
         let e = parse("title = \"no stages\"\nstage = []\n").unwrap_err();
         assert!(e.message.contains("no [[stage]]"), "{e}");
     }

@@ -10,7 +10,7 @@ use toml::Spanned;
 
 use super::super::two_body::{Two, Typed, pair, report_key, wall_key};
 use super::super::{About, ExpectTable, SceneError, among, from_toml, located};
-use super::{STAGE_SHOW, STAGES_KEYS, Stage, StagesScene, Taken};
+use super::{MAX_STAGES, STAGE_SHOW, STAGES_KEYS, Stage, StagesScene, Taken};
 use crate::line::chain::{Object, Side};
 use crate::line::problem::Problem;
 use crate::line::restitution::Restitution;
@@ -325,13 +325,21 @@ impl Reader<'_> {
                         )));
                     }
                     if let Some(old) = self.bodies.iter().position(|b| b == g) {
-                        let (k, place) = self.latest[&old];
-                        return Err(bad(format!(
-                            "'{g}' already names a body (its velocity is typed here, so this is \
-                             a new body); to go on with {g}, take its velocity \"{}.fin{}\"",
-                            self.stages[k].name,
-                            place + 1
-                        )));
+                        // The other body of this stage, or one of an earlier stage.
+                        let earlier = self
+                            .latest
+                            .get(&old)
+                            .filter(|_| !taken_bodies.contains(&Some(old)));
+                        return Err(bad(match earlier {
+                            Some(&(k, place)) => format!(
+                                "'{g}' already names a body (its velocity is typed here, so this \
+                                 is a new body); to go on with {g}, take its velocity \
+                                 \"{}.fin{}\"",
+                                self.stages[k].name,
+                                place + 1
+                            ),
+                            None => format!("'{g}' names both bodies of this stage"),
+                        }));
                     }
                 }
                 let name = self.new_name(given.as_deref());
@@ -409,6 +417,17 @@ pub(super) fn parse(path: &Path, text: &str) -> Result<StagesScene, SceneError> 
     let file: StagesFile = from_toml(path, text)?;
     if file.stage.is_empty() {
         return Err(located(path, text, None, "no [[stage]] table".into()));
+    }
+    if let Some(extra) = file.stage.get(MAX_STAGES) {
+        return Err(located(
+            path,
+            text,
+            Some(extra.span()),
+            format!(
+                "more than {MAX_STAGES} stages: a scene of stages is a problem in a few steps; \
+                 many collisions in turn are a run of `collide track`"
+            ),
+        ));
     }
     let exact = file.exact.unwrap_or(false);
     let reserved = file

@@ -11,7 +11,7 @@ use crate::line::problem::Posed;
 use crate::report::Sections;
 use crate::report::stages::object_name;
 use crate::solver::exact::ExactCollision;
-use crate::values::number::{Given, Number};
+use crate::values::number::{EXACT_MAX_CHARS, Given, Number};
 use crate::values::quantity::{fraction, from_f64, to_f64};
 use crate::values::rational::Q;
 use crate::values::units::{Dimension, Quantity, lookup};
@@ -83,6 +83,18 @@ impl StagesScene {
                 let q = &from.fin[t.body];
                 let number = if exact {
                     let f = fraction(q);
+                    let chars = f.chars().count();
+                    if self.exact && chars > EXACT_MAX_CHARS {
+                        return Err(self.at(
+                            stage,
+                            format!(
+                                "{} is a fraction of {chars} characters: exact arithmetic carries \
+                                 at most {EXACT_MAX_CHARS} (its cost grows faster than the \
+                                 length); set exact = false to carry the binary64 value printed",
+                                t.text
+                            ),
+                        ));
+                    }
                     f.parse::<Number>().or_else(|_| Number::solved(&f))
                 } else {
                     Number::from_f64(to_f64(q).unwrap_or(f64::NAN))
