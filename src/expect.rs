@@ -19,6 +19,8 @@ pub enum Expected {
     Number(Number),
     /// A word, compared exactly (`"stop.reason" = "zeno"`).
     Text(String),
+    /// A yes-or-no answer (`collide_again = true`), compared exactly.
+    Bool(bool),
     Array(Vec<Expected>),
 }
 
@@ -63,7 +65,7 @@ pub struct Check {
 /// Why an expectation is not one.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ExpectError {
-    #[error("expected a number or an array of numbers, got {0}")]
+    #[error("expected a number, a word, true or false, or an array of them, got {0}")]
     Type(&'static str),
     #[error("`{name}` must be a number >= 0, got {got}")]
     Tolerance { name: &'static str, got: String },
@@ -92,6 +94,7 @@ fn expected_of(v: toml::Value) -> Result<Expected, ExpectError> {
             Ok(n) => Expected::Number(n),
             Err(_) => Expected::Text(s),
         }),
+        toml::Value::Boolean(b) => Ok(Expected::Bool(b)),
         toml::Value::Array(a) => a
             .into_iter()
             .map(expected_of)
@@ -184,6 +187,7 @@ fn matches(e: &Expected, a: &Json, tol: Tolerance) -> bool {
             (y.exact() - &x).abs() <= bound(tol.abs) + bound(tol.rel) * x.abs()
         }),
         (Expected::Text(x), Json::String(y)) => x == y,
+        (Expected::Bool(x), Json::Bool(y)) => x == y,
         (Expected::Array(xs), Json::Array(ys)) => {
             xs.len() == ys.len() && xs.iter().zip(ys).all(|(x, y)| matches(x, y, tol))
         }
@@ -198,6 +202,7 @@ fn show_expected(e: &Expected) -> String {
             std::borrow::Cow::Owned(_) => num_full(x.value()),
         },
         Expected::Text(t) => t.clone(),
+        Expected::Bool(b) => b.to_string(),
         Expected::Array(a) => {
             format!(
                 "[{}]",
@@ -269,7 +274,13 @@ mod tests {
                 .contains("`tol`")
         );
         assert!(exp("fin", "{ abs = 2 }").unwrap_err().contains("`value`"));
-        assert!(exp("fin", "true").unwrap_err().contains("boolean"));
+        assert!(exp("fin", "1979-05-27").unwrap_err().contains("datetime"));
+        // Yes-or-no answers compare exactly, and only with a yes-or-no answer.
+        let report = serde_json::json!({"collide_again": true, "fin": [1.0, 2.0]});
+        let check = |k: &str, v: &str| exp(k, v).unwrap().check(&report).unwrap().passed;
+        assert!(check("collide_again", "true"));
+        assert!(!check("collide_again", "false"));
+        assert!(!check("fin", "true"));
         let report = serde_json::json!({"energy": {"crunch": 1.0}});
         let e = exp("energy.crunsh", "1")
             .unwrap()

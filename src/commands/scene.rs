@@ -3,11 +3,18 @@
 
 use anyhow::{Context, Result};
 use clap::ValueEnum;
+use collide::line::case::Case;
+use collide::line::frame::Frame;
+use collide::line::problem::Posed;
+use collide::line::unknowns::Solved;
 use collide::report::scene::{self as report, Checked, Listed};
+use collide::report::special::Special;
+use collide::report::stages::{Chain, StagePart};
 use collide::report::{AnyReport, contact as contact_report, json, solved, track as track_report};
 use collide::report::{Section, Sections};
 use collide::scene::{
-    About, AnyScene, ContactScene, RigidScene, Scene, SceneError, SpecialScene, TrackScene,
+    About, AnyScene, ContactScene, RigidScene, Scene, SceneError, SpecialScene, StagesScene,
+    TrackScene,
 };
 use collide::table::sweep::Shard;
 use collide::track::TrackReport;
@@ -80,6 +87,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
                 AnyScene::Space(scene) => Some(solve_space(scene)?),
                 AnyScene::Rigid(scene) => Some(solve_rigid(scene)?),
+                AnyScene::Stages(scene) => Some(solve_stages(scene)?),
             })
         };
         match one() {
@@ -146,54 +154,146 @@ fn several_json(checked: &[Checked], listed: &[Listed]) -> serde_json::Value {
 }
 
 fn solve(scene: Scene) -> Result<Checked> {
-    let mut sections = scene.sections_needed();
-    // energy_unit = "kJ": every energy in kJ, as the header says.
-    sections.energy_scale = scene.case.units.energy_scale();
-    sections.force_scale = scene.case.units.force_scale();
-    let result = AnyReport::of(&scene.case, &scene.frame, scene.exact, &sections, false)
-        .with_context(|| format!("{}", scene.about.path.display()))?;
-    let mut text = result.text(&scene.case, &scene.show, scene.solved.as_ref());
+    let (mut text, json) = render_case(
+        &scene.case,
+        &scene.frame,
+        scene.exact,
+        (&scene.show, scene.sections_needed()),
+        scene.solved.as_ref(),
+    )
+    .with_context(|| format!("{}", scene.about.path.display()))?;
     if let Some(p) = &scene.plot {
         plot::draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
         text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));
     }
-    let mut json = result.json();
-    solved::annotate(
-        &mut json,
-        &scene.case.units,
-        scene.solved.as_ref(),
-        scene.exact,
-    );
     let mut checked = check(scene.about, text, json)?;
     checked.inconsistent = scene.solved.as_ref().is_some_and(|s| s.inconsistent());
     Ok(checked)
 }
 
+/// A collision's text (the sections in `show`) and JSON (those `needed`), with what its
+/// unknowns came out as.
+fn render_case(
+    case: &Case,
+    frame: &Frame,
+    exact: bool,
+    (show, mut sections): (&Sections, Sections),
+    solved: Option<&Solved>,
+) -> Result<(String, serde_json::Value)> {
+    // energy_unit = "kJ": every energy in kJ, as the header says.
+    sections.energy_scale = case.units.energy_scale();
+    sections.force_scale = case.units.force_scale();
+    let result = AnyReport::of(case, frame, exact, &sections, false)?;
+    let text = result.text(case, show, solved);
+    let mut json = result.json();
+    solved::annotate(&mut json, &case.units, solved, exact);
+    Ok((text, json))
+}
+
 fn solve_special(scene: SpecialScene) -> Result<Checked> {
-    let at = || format!("{}", scene.about.path.display());
-    let mut compute = scene.show.clone();
+    let (text, json) = render_special(
+        scene.event.special(),
+        &scene.show,
+        scene.exact,
+        scene.solved.as_ref(),
+    )
+    .with_context(|| format!("{}", scene.about.path.display()))?;
+    let mut checked = check(scene.about, text, json)?;
+    checked.inconsistent = scene.solved.as_ref().is_some_and(|s| s.inconsistent());
+    Ok(checked)
+}
+
+/// A separation's or wall's text (the sections in `show`) and JSON (every section), under what
+/// its unknowns came out as.
+fn render_special(
+    event: Special,
+    show: &Sections,
+    exact: bool,
+    solved: Option<&Solved>,
+) -> Result<(String, serde_json::Value)> {
+    let mut compute = show.clone();
     for s in Section::EVERY.into_iter().chain([Section::Heights]) {
         compute.insert(s);
     }
-    let event = scene.event.special();
     compute.energy_scale = event.units().energy_scale();
-    let result = event
-        .render(&compute, &scene.show, scene.exact)
-        .with_context(at)?;
-    let head = scene
-        .solved
-        .as_ref()
-        .map(|s| solved::text(s, scene.exact, &event.units()))
+    let result = event.render(&compute, show, exact)?;
+    let head = solved
+        .map(|s| solved::text(s, exact, &event.units()))
         .unwrap_or_default();
     let mut json = result.json;
-    solved::annotate(
-        &mut json,
-        &event.units(),
-        scene.solved.as_ref(),
-        scene.exact,
-    );
-    let mut checked = check(scene.about, head + &result.text, json)?;
-    checked.inconsistent = scene.solved.as_ref().is_some_and(|s| s.inconsistent());
+    solved::annotate(&mut json, &event.units(), solved, exact);
+    Ok((head + &result.text, json))
+}
+
+/// A chain of stages: each stage's report in turn, each checked against its own
+/// `[stage.expect]`, then what comes next, checked against the top-level `[expect]`.
+fn solve_stages(scene: StagesScene) -> Result<Checked> {
+    let at = || format!("{}", scene.about.path.display());
+    let solved = scene.solve()?;
+    let mut parts = Vec::new();
+    let mut stage_checks = Vec::new();
+    let mut inconsistent = false;
+    for (i, (stage, run)) in scene.stages.iter().zip(&solved.runs).enumerate() {
+        let (event, (text, json)) = match &run.posed {
+            Posed::Collision(case, solved) => {
+                inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
+                let needed = stage.sections_needed(&run.show);
+                let rendered = render_case(
+                    case,
+                    &Frame::Lab,
+                    scene.exact,
+                    (&run.show, needed),
+                    solved.as_ref(),
+                );
+                ("collision", rendered.with_context(at)?)
+            }
+            Posed::Wall(wall, solved) => {
+                inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
+                let rendered =
+                    render_special(Special::Wall(wall), &run.show, scene.exact, solved.as_ref());
+                ("wall", rendered.with_context(at)?)
+            }
+            Posed::Separation(..) => unreachable!("a separation is refused when solved"),
+        };
+        for e in &stage.expect {
+            let mut c = e.check(&json).map_err(|message| SceneError {
+                path: scene.about.path.clone(),
+                at: Some((e.line, 1)),
+                message: format!("[stage.expect] of {}: {message}", stage.name),
+            })?;
+            c.key = format!("{}.{}", stage.name, c.key);
+            stage_checks.push(c);
+        }
+        parts.push(StagePart {
+            name: stage.name.clone(),
+            numbered: stage.name == format!("stage{}", i + 1),
+            event,
+            objects: stage.objects,
+            takes: stage
+                .takes
+                .iter()
+                .enumerate()
+                .filter_map(|(b, t)| t.as_ref().map(|t| (b, t.text.clone())))
+                .collect(),
+            text,
+            json,
+        });
+    }
+    let chain = Chain {
+        stages: parts,
+        bodies: &scene.bodies,
+        after: solved
+            .after
+            .iter()
+            .map(|(v, i)| (v.clone(), scene.stages[*i].name.clone()))
+            .collect(),
+        meetings: &solved.meetings,
+        velocity_unit: solved.velocity_unit,
+        exact: scene.exact,
+    };
+    let mut checked = check(scene.about, chain.text(), chain.json())?;
+    checked.checks.extend(stage_checks);
+    checked.inconsistent = inconsistent;
     Ok(checked)
 }
 

@@ -154,9 +154,10 @@ fn from_scene(setup: &mut Setup, path: &std::path::Path) -> Result<()> {
              it with collide scene",
             path.display()
         ),
-        AnyScene::Special(_) | AnyScene::Contact(_) => bail!(
+        AnyScene::Special(_) | AnyScene::Contact(_) | AnyScene::Stages(_) => bail!(
             "{}: the page draws a collision of two movable bodies or a [track]; this scene is \
-             another kind (a wall, a separation or contact forces): run it with collide scene",
+             another kind (a wall, a separation, contact forces or stages): run it with collide \
+             scene",
             path.display()
         ),
     }

@@ -2,11 +2,12 @@
 //! ellipse with an explicit inertia tensor `M`.
 //!
 //! Physics first (`inertia`, `restitution`, `collision`, `ellipse`, `changes`, `separation`,
-//! `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `frame`). The plane and
-//! space (`crate::space`) build on this layer: the normal parts of a smooth contact collide by its
-//! 1D rule.
+//! `wall`, `chain`), then what a user asks of it (`case`, `problem`, `unknowns`, `frame`). The
+//! plane and space (`crate::space`) build on this layer: the normal parts of a smooth contact
+//! collide by its 1D rule.
 
 // The physics of two bodies on a rail.
+pub mod chain;
 pub mod changes;
 pub mod collision;
 pub mod ellipse;

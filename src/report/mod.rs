@@ -18,6 +18,7 @@ pub mod separation;
 pub mod solved;
 pub mod space;
 pub mod special;
+pub mod stages;
 pub mod text;
 pub mod track;
 pub mod wall;

@@ -1,8 +1,9 @@
 //! Scene files: a case in TOML, with the sections to show and the numbers to expect. One file
 //! per kind of scene: a two-body collision, separation or wall case (`two_body`, also `[sweep]`
 //! and `[plot]`), bodies on a track (`track`, `[track]`) and contact forces (`contact`,
-//! `[contact]`) and the plane, space and N bodies (`space`); this module holds what they share: reading a file, locating a problem in it,
-//! the `[expect]` table and a layout of bodies.
+//! `[contact]`), the plane, space and N bodies (`space`), rigid bodies (`rigid`, `[[body]]`) and
+//! chains of two-body stages (`stages`, `[[stage]]`); this module holds what they share: reading
+//! a file, locating a problem in it, the `[expect]` table and a layout of bodies.
 //!
 //! ```toml
 //! title = "60 mph 4-ton SUV rear-ends 10 mph 1-ton VW"
@@ -21,6 +22,7 @@
 mod contact;
 mod rigid;
 mod space;
+mod stages;
 mod track;
 mod two_body;
 
@@ -37,6 +39,7 @@ use crate::values::number::{Number, NumberError};
 pub use contact::{CONTACT_KEYS, ContactScene};
 pub use rigid::{RIGID_KEYS, RigidScene};
 pub use space::{SPACE_KEYS, SpaceScene, show_of};
+pub use stages::{STAGE_SHOW, STAGES_KEYS, SolvedStages, Stage, StageRun, StagesScene, Taken};
 pub use track::{TRACK_KEYS, TrackScene};
 pub use two_body::{PlotTable, Scene, SceneSweep, SpecialEvent, SpecialScene};
 
@@ -218,6 +221,8 @@ pub enum AnyScene {
     Space(SpaceScene),
     /// Rigid bodies at impact.
     Rigid(RigidScene),
+    /// A chain of two-body stages (`[[stage]]`).
+    Stages(StagesScene),
 }
 
 /// A problem in a scene file, located.
@@ -251,8 +256,8 @@ pub fn line_col(text: &str, at: usize) -> (usize, usize) {
 }
 
 impl Scene {
-    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]`, a `[contact]` or
-    /// rigid bodies (`[[body]]`).
+    /// Reads a scene of any kind: a two-body case (or `[sweep]`), a `[track]`, a `[contact]`,
+    /// rigid bodies (`[[body]]`) or a chain of stages (`[[stage]]`).
     /// `path` is read once (a FIFO, `/dev/stdin`, `<(cat x.toml)`); `-` is standard input,
     /// named `<stdin>` in messages and reports.
     pub fn load_any(path: &Path) -> Result<AnyScene, SceneError> {
@@ -269,7 +274,9 @@ impl Scene {
         })?;
         // `[[body]]` by its header line, so that a rigid scene with a bad number is reported
         // by the rigid reader.
-        if text.lines().any(|l| l.trim_start().starts_with("[[body]]")) {
+        if StagesScene::is_stages(&text) {
+            StagesScene::parse(path, &text).map(AnyScene::Stages)
+        } else if text.lines().any(|l| l.trim_start().starts_with("[[body]]")) {
             RigidScene::parse(path, &text).map(AnyScene::Rigid)
         } else if has_table(&text, "contact") {
             ContactScene::parse(path, &text).map(AnyScene::Contact)
@@ -286,6 +293,18 @@ impl Scene {
 /// Whether scene text holds a table `name` (`[track]`, `[contact]`).
 pub fn has_table(text: &str, name: &str) -> bool {
     toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key(name))
+}
+
+/// Sections to compute for a two-body report: those in `show` and those `expect` reads.
+fn needed(show: &crate::report::Sections, expect: &[Expectation]) -> crate::report::Sections {
+    let mut s = show.clone();
+    for e in expect {
+        let top = e.key.split('.').next().unwrap_or_default();
+        if let Some(section) = crate::report::Section::of_json_key(top) {
+            s.insert(section);
+        }
+    }
+    s
 }
 
 /// `[expect]` keys of a report whose top-level keys are `keys`.

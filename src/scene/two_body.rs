@@ -89,7 +89,7 @@ pub struct SceneSweep {
 
 /// A value as typed in a scene: a number, a string with a unit (`"4 t"`), or `"?"`.
 #[derive(Clone, Debug)]
-struct Typed(String);
+pub(super) struct Typed(pub(super) String);
 
 impl std::str::FromStr for Typed {
     type Err = std::convert::Infallible;
@@ -107,13 +107,17 @@ impl<'de> Deserialize<'de> for Typed {
     }
 }
 
-fn pair(Two(v): &Two<Typed>, dimension: Dimension, what: &str) -> Result<Pair, PairError> {
+pub(super) fn pair(
+    Two(v): &Two<Typed>,
+    dimension: Dimension,
+    what: &str,
+) -> Result<Pair, PairError> {
     parse_pair(&format!("{},{}", v[0].0, v[1].0), dimension, what)
 }
 
 /// Exactly two values (`[60, 10]`): a longer or shorter array is an error at its line.
 #[derive(Clone, Debug)]
-struct Two<T>([T; 2]);
+pub(super) struct Two<T>(pub(super) [T; 2]);
 
 impl<'de, T: Deserialize<'de>> Deserialize<'de> for Two<T> {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Two<T>, D::Error> {
@@ -372,14 +376,7 @@ impl Scene {
 
     /// Sections to compute: the shown ones and those the expectations read.
     pub fn sections_needed(&self) -> Sections {
-        let mut s = self.show.clone();
-        for e in &self.about.expect {
-            if let Some(section) = Section::of_json_key(e.key.split('.').next().unwrap_or_default())
-            {
-                s.insert(section);
-            }
-        }
-        s
+        super::needed(&self.show, &self.about.expect)
     }
 }
 
@@ -464,7 +461,7 @@ fn one_of(top: &str, keys: &[&str], note: &str) -> Result<(), ExpectError> {
 }
 
 /// Checks that `top` names a quantity of a wall case's report.
-fn wall_key(top: &str) -> Result<(), ExpectError> {
+pub(super) fn wall_key(top: &str) -> Result<(), ExpectError> {
     let keys = [
         "wall",
         "restitution",
@@ -506,7 +503,7 @@ fn separation_key(top: &str) -> Result<(), ExpectError> {
 }
 
 /// Checks that `top`, the first part of an `[expect]` key, names a quantity of a two-body report.
-fn report_key(top: &str) -> Result<(), ExpectError> {
+pub(super) fn report_key(top: &str) -> Result<(), ExpectError> {
     let always = [
         "restitution",
         "inertia",

@@ -24,6 +24,7 @@ mod resources;
 mod rigid;
 mod rigid_symmetry;
 mod shell;
+mod stages;
 mod sweeps;
 mod tables;
 mod track;

@@ -263,7 +263,15 @@ fn scene_help_example_gives_one_json_object_per_scene() {
         }
         assert_eq!(report["scene"], name.as_str());
         assert_eq!(report["title"], scene["title"].as_str().unwrap(), "{name}");
-        let expected = scene["expect"].as_table().unwrap().len();
+        // A scene of stages checks its own [expect] and each [stage.expect].
+        let stages = scene.get("stage").and_then(toml::Value::as_array);
+        let expected = scene["expect"].as_table().unwrap().len()
+            + stages.map_or(0, |s| {
+                s.iter()
+                    .filter_map(|t| t.get("expect").and_then(toml::Value::as_table))
+                    .map(toml::map::Map::len)
+                    .sum()
+            });
         assert_eq!(report["checks"], expected, "{name}");
         assert_eq!(report["failed"], serde_json::json!([]), "{name}");
         assert!(report["report"].is_object(), "{name}");

@@ -41,6 +41,9 @@ const COMMANDS: &[&str] = &[
     "collide solve -m 1,1 -v (5,0),0 --fin '3 @ ?,?' -e 1",
     "collide frames -m 1,3 -v (1,2),0 --normal 45deg",
     "collide scene scenarios/plane-car-and-van.toml",
+    // A chain of stages: exact, and binary64 with units (long decimals).
+    "collide scene scenarios/stages-no-further.toml",
+    "collide scene scenarios/stages-three-particles.toml",
     // Rigid bodies at impact (issue 26): a rod, a hinged door in SI units, a paradox, a rough
     // floor, Garwin's superball, the bodies do not approach, a scene in space (the ODE).
     "collide solve -m 1,4 -v 3,0 --target 'rod 2' --hit-at end --show all",

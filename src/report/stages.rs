@@ -1,0 +1,205 @@
+//! The report of a chain of stages (`[[stage]]` scenes, issue 27 §4): each stage's own report
+//! under a line naming it, then each body's velocity after the last stage and the answer to
+//! "do they collide again?" ([`crate::line::chain`]).
+//!
+//! JSON: `{"event": "stages", "stages": [{"name", "event": "collision" | "wall", "bodies",
+//! "takes": {"v1" | "v2": "stage1.fin2"}, "report"}], "after": {BODY: v}, "next": [{"bodies":
+//! [LEFT, RIGHT], "closing_speed"}], "collide_again", "units": {"velocity"}}`; a wall is named
+//! `left wall` or `right wall`.
+
+use serde_json::{Map, Value, json};
+
+use super::block::{Block, paragraph};
+use crate::line::chain::{Meeting, Object};
+use crate::values::number::num;
+use crate::values::quantity::{Exact, Scalar, fraction, to_f64};
+use crate::values::rational::Q;
+
+/// A stage as the chain's report shows it: its own report, rendered, and what names it.
+pub struct StagePart {
+    pub name: String,
+    /// The name is the default `stageN`.
+    pub numbered: bool,
+    /// `collision` or `wall`.
+    pub event: &'static str,
+    pub objects: [Object; 2],
+    /// The velocities taken from earlier stages: `(body, "stage1.fin2")`.
+    pub takes: Vec<(usize, String)>,
+    pub text: String,
+    pub json: Value,
+}
+
+/// A chain solved, for the report.
+pub struct Chain<'a> {
+    pub stages: Vec<StagePart>,
+    /// Each body's name, by number.
+    pub bodies: &'a [String],
+    /// Each body's velocity after the last stage, and the stage it comes from.
+    pub after: Vec<(Q, String)>,
+    pub meetings: &'a [Meeting],
+    pub velocity_unit: Option<&'a str>,
+    /// Values as fractions (`exact = true`), or binary64.
+    pub exact: bool,
+}
+
+/// A body's name, or `the wall on the right`.
+pub fn object_name(bodies: &[String], o: Object) -> String {
+    match o {
+        Object::Body(b) => bodies[b].clone(),
+        Object::Wall(side) => format!("the wall on the {side}"),
+    }
+}
+
+/// A body's name, or `right wall` (as JSON names it).
+pub fn object_key(bodies: &[String], o: Object) -> String {
+    match o {
+        Object::Body(b) => bodies[b].clone(),
+        Object::Wall(side) => format!("{side} wall"),
+    }
+}
+
+impl Chain<'_> {
+    fn show(&self, q: &Q) -> String {
+        if self.exact {
+            Exact::Rational(q.clone()).show()
+        } else {
+            num(to_f64(q).unwrap_or(f64::NAN))
+        }
+    }
+
+    fn value(&self, q: &Q) -> Value {
+        if self.exact {
+            Value::String(fraction(q))
+        } else {
+            json!(to_f64(q))
+        }
+    }
+
+    fn name(&self, o: Object) -> String {
+        object_name(self.bodies, o)
+    }
+
+    /// Text for people.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let n = self.stages.len();
+        for (i, s) in self.stages.iter().enumerate() {
+            if i > 0 {
+                out.push('\n');
+            }
+            let named = if s.numbered {
+                String::new()
+            } else {
+                format!(" ({})", s.name)
+            };
+            let takes: Vec<String> = s
+                .takes
+                .iter()
+                .map(|(body, from)| format!("V{} = {from}", body + 1))
+                .collect();
+            let takes = if takes.is_empty() {
+                String::new()
+            } else {
+                format!("; {}", takes.join(", "))
+            };
+            out.push_str(&paragraph(&format!(
+                "Stage {} of {n}{named}: {} and {}{takes}",
+                i + 1,
+                self.name(s.objects[0]),
+                self.name(s.objects[1]),
+            )));
+            out.push_str(&s.text);
+        }
+        let unit = self
+            .velocity_unit
+            .map(|u| format!(" in {u}"))
+            .unwrap_or_default();
+        let mut b = Block::new(format!("After the last stage (velocities{unit})"));
+        for (body, (v, stage)) in self.after.iter().enumerate() {
+            b.row(&self.bodies[body], self.show(v), format!("from {stage}"));
+        }
+        b.render(&mut out);
+        out.push_str(&paragraph(&self.answer()));
+        out
+    }
+
+    /// `Another collision: yes; A catches B, closing at 5/2`, or `no; ...`.
+    fn answer(&self) -> String {
+        let one = |m: &Meeting| {
+            let closing = self.show(&m.closing);
+            match (m.left, m.right) {
+                (Object::Body(_), Object::Body(_)) => format!(
+                    "{} catches {}, closing at {closing}",
+                    self.name(m.left),
+                    self.name(m.right)
+                ),
+                (Object::Body(_), wall) | (wall, _) => {
+                    let body = if wall == m.right { m.left } else { m.right };
+                    format!(
+                        "{} moves toward {}, closing at {closing}",
+                        self.name(body),
+                        self.name(wall)
+                    )
+                }
+            }
+        };
+        match self.meetings {
+            [] => "Another collision: no; no two neighbours approach".into(),
+            [m] => format!("Another collision: yes; {}", one(m)),
+            all => format!(
+                "Another collision: yes; {}; which comes first depends on where they are",
+                all.iter().map(one).collect::<Vec<_>>().join("; ")
+            ),
+        }
+    }
+
+    /// The report as JSON (see the module docs).
+    pub fn json(&self) -> Value {
+        let key = |o: Object| Value::String(object_key(self.bodies, o));
+        let stages: Vec<Value> = self
+            .stages
+            .iter()
+            .map(|s| {
+                let takes: Map<String, Value> = s
+                    .takes
+                    .iter()
+                    .map(|(body, from)| (format!("v{}", body + 1), Value::String(from.clone())))
+                    .collect();
+                json!({
+                    "name": s.name,
+                    "event": s.event,
+                    "bodies": [key(s.objects[0]), key(s.objects[1])],
+                    "takes": takes,
+                    "report": s.json,
+                })
+            })
+            .collect();
+        let after: Map<String, Value> = self
+            .after
+            .iter()
+            .enumerate()
+            .map(|(b, (v, _))| (self.bodies[b].clone(), self.value(v)))
+            .collect();
+        let next: Vec<Value> = self
+            .meetings
+            .iter()
+            .map(|m| {
+                json!({
+                    "bodies": [key(m.left), key(m.right)],
+                    "closing_speed": self.value(&m.closing),
+                })
+            })
+            .collect();
+        let mut out = json!({
+            "event": "stages",
+            "stages": stages,
+            "after": after,
+            "next": next,
+            "collide_again": !self.meetings.is_empty(),
+        });
+        if let Some(u) = self.velocity_unit {
+            out["units"] = json!({ "velocity": u });
+        }
+        out
+    }
+}

@@ -1,0 +1,304 @@
+//! Solving a chain of stages: each stage posed with the velocities it takes, in exact
+//! arithmetic (every decision) and, unless the scene is exact, again in binary64 (what is
+//! printed).
+
+use std::collections::BTreeMap;
+
+use super::super::SceneError;
+use super::{SolvedStages, Stage, StageRun, StagesScene};
+use crate::line::chain::{Line, Object, OrderError, Side};
+use crate::line::problem::Posed;
+use crate::report::Sections;
+use crate::report::stages::object_name;
+use crate::solver::exact::ExactCollision;
+use crate::values::number::{EXACT_MAX_CHARS, Given, Number};
+use crate::values::quantity::{fraction, from_f64, to_f64};
+use crate::values::rational::Q;
+use crate::values::units::{Dimension, Quantity, lookup};
+
+impl StagesScene {
+    fn at(&self, stage: &Stage, message: String) -> SceneError {
+        SceneError {
+            path: self.about.path.clone(),
+            at: Some((stage.line, 1)),
+            message: format!("[[stage]] {}: {message}", stage.name),
+        }
+    }
+
+    /// Solves the chain: each stage with the velocities its references take, in the scene's
+    /// arithmetic, with every decision (the stage happens, the order holds, what comes next)
+    /// made on the exact chain.
+    pub fn solve(&self) -> Result<SolvedStages, SceneError> {
+        let exact = self.carry(true)?;
+        let mut line = Line::default();
+        let mut walls: BTreeMap<Side, (Q, usize)> = BTreeMap::new();
+        for (i, (stage, run)) in self.stages.iter().zip(&exact).enumerate() {
+            self.decide(i, stage, run, (&exact, &mut line, &mut walls))?;
+        }
+        let runs = if self.exact {
+            exact.clone()
+        } else {
+            self.carry(false)?
+        };
+        let latest = |runs: &[StageRun], b: usize| {
+            let (i, slot) = self.latest(b);
+            (runs[i].fin[slot].clone(), i)
+        };
+        let meetings = line.meetings(|o| match o {
+            Object::Body(b) => latest(&exact, b).0,
+            Object::Wall(side) => walls[&side].0.clone(),
+        });
+        Ok(SolvedStages {
+            after: (0..self.bodies.len()).map(|b| latest(&runs, b)).collect(),
+            meetings,
+            velocity_unit: exact.first().and_then(|r| r.posed.units().velocity),
+            runs,
+        })
+    }
+
+    /// Body `b`'s last stage and its place in it.
+    fn latest(&self, b: usize) -> (usize, usize) {
+        self.stages
+            .iter()
+            .enumerate()
+            .rev()
+            .find_map(|(i, s)| {
+                s.objects
+                    .iter()
+                    .position(|o| *o == Object::Body(b))
+                    .map(|slot| (i, slot))
+            })
+            .expect("every body is in a stage")
+    }
+
+    /// Each stage posed and solved in turn, its taken velocities the FIN of the stages they
+    /// name: exactly (`exact`), or as the binary64 values printed.
+    fn carry(&self, exact: bool) -> Result<Vec<StageRun>, SceneError> {
+        let mut runs: Vec<StageRun> = Vec::with_capacity(self.stages.len());
+        for stage in &self.stages {
+            let mut problem = stage.problem.clone();
+            for (slot, taken) in stage.takes.iter().enumerate() {
+                let Some(t) = taken else { continue };
+                let from = &runs[t.stage];
+                let q = &from.fin[t.body];
+                let number = if exact {
+                    let f = fraction(q);
+                    let chars = f.chars().count();
+                    if self.exact && chars > EXACT_MAX_CHARS {
+                        return Err(self.at(
+                            stage,
+                            format!(
+                                "{} is a fraction of {chars} characters: exact arithmetic carries \
+                                 at most {EXACT_MAX_CHARS} (its cost grows faster than the \
+                                 length); set exact = false to carry the binary64 value printed",
+                                t.text
+                            ),
+                        ));
+                    }
+                    f.parse::<Number>().or_else(|_| Number::solved(&f))
+                } else {
+                    Number::from_f64(to_f64(q).unwrap_or(f64::NAN))
+                }
+                .map_err(|e| self.at(stage, format!("{} = {}: {e}", t.text, fraction(q))))?;
+                let unit = from
+                    .posed
+                    .units()
+                    .velocity
+                    .and_then(|u| lookup(u, Dimension::Velocity).ok());
+                problem.velocities.0[slot] = Given::Known(Quantity {
+                    number,
+                    unit,
+                    height: false,
+                });
+            }
+            let posed = problem
+                .solve(None)
+                .map_err(|e| self.at(stage, format!("{e:#}")))?;
+            let fin = match &posed {
+                Posed::Collision(case, _) if exact => ExactCollision::from_case(case).v_fin_q(),
+                Posed::Collision(case, _) => {
+                    let f = case.collision.v_fin();
+                    [from_f64(f.x), from_f64(f.y)]
+                }
+                Posed::Wall(w, _) if exact => w.fin(),
+                Posed::Wall(w, _) => w.fin().map(|q| from_f64(to_f64(&q).unwrap_or(f64::NAN))),
+                Posed::Separation(..) => {
+                    return Err(self.at(
+                        stage,
+                        "the bodies start together and are pushed apart (a separation): a stage \
+                         is a collision or a bounce off a wall"
+                            .into(),
+                    ));
+                }
+            };
+            let units = posed.units().clone();
+            let mut show = Sections::new(stage.show.iter().copied());
+            show.contact_time = stage.contact_time.clone();
+            show.heights = Some(crate::values::units::HeightScale::new(
+                stage.problem.gravity.as_ref(),
+                &units,
+            ));
+            runs.push(StageRun { posed, fin, show });
+        }
+        Ok(runs)
+    }
+
+    /// The checks of stage `i` on the exact chain: it happens (body 1 catches body 2), its
+    /// bodies keep their masses, velocity unit and order, and its wall stays where it was.
+    fn decide(
+        &self,
+        i: usize,
+        stage: &Stage,
+        run: &StageRun,
+        (runs, line, walls): (&[StageRun], &mut Line, &mut BTreeMap<Side, (Q, usize)>),
+    ) -> Result<(), SceneError> {
+        let name = |o: Object| object_name(&self.bodies, o);
+        let v = velocities_in(&run.posed);
+        if v[0] <= v[1] {
+            let [a, b] = stage.objects.map(name);
+            let shown = |q: &Q| crate::values::quantity::Exact::Rational(q.clone());
+            use crate::values::quantity::Scalar;
+            return Err(self.at(
+                stage,
+                format!(
+                    "{a} (v = {}) and {b} (v = {}) do not approach, so this collision does not \
+                     happen: body 1 is on the left and must catch body 2 (V1 > V2)",
+                    shown(&v[0]).show(),
+                    shown(&v[1]).show()
+                ),
+            ));
+        }
+        let unit = run.posed.units().velocity;
+        if let Some(first) = runs.first().filter(|_| i > 0)
+            && first.posed.units().velocity != unit
+        {
+            let say =
+                |u: Option<&str>| u.map_or("without a unit".to_string(), |u| format!("in {u}"));
+            return Err(self.at(
+                stage,
+                format!(
+                    "its velocities are {}, those of {} {}: a chain keeps one velocity unit, to \
+                     compare the bodies after it",
+                    say(unit),
+                    self.stages[0].name,
+                    say(first.posed.units().velocity)
+                ),
+            ));
+        }
+        for (slot, taken) in stage.takes.iter().enumerate() {
+            let Some(t) = taken else { continue };
+            let (before, now) = (
+                mass_of(&runs[t.stage].posed, t.body),
+                mass_of(&run.posed, slot),
+            );
+            if before != now {
+                return Err(self.at(
+                    stage,
+                    format!(
+                        "body {} is {} (taken from {}), of mass {} in {} but {} here: a body \
+                         keeps its mass",
+                        slot + 1,
+                        name(stage.objects[slot]),
+                        t.text,
+                        mass_text(&runs[t.stage].posed, t.body),
+                        self.stages[t.stage].name,
+                        mass_text(&run.posed, slot),
+                    ),
+                ));
+            }
+        }
+        for (slot, o) in stage.objects.iter().enumerate() {
+            let Object::Wall(side) = *o else { continue };
+            let w = v[slot].clone();
+            match walls.get(&side) {
+                Some((before, k)) if *before != w => {
+                    return Err(self.at(
+                        stage,
+                        format!(
+                            "the wall on the {side} moves at {} here but at {} in {}: a chain \
+                             has one wall on each side",
+                            fraction(&w),
+                            fraction(before),
+                            self.stages[*k].name
+                        ),
+                    ));
+                }
+                Some(_) => {}
+                None => {
+                    walls.insert(side, (w, i));
+                }
+            }
+        }
+        line.collide(stage.objects[0], stage.objects[1], i)
+            .map_err(|e| {
+                let m = match e {
+                    OrderError::Reversed { left, right } => format!(
+                        "{} is on the right of {} since earlier stages, but body 1 is on the \
+                         left: for {} to catch {} from the left, they would pass through each \
+                         other",
+                        name(left),
+                        name(right),
+                        name(left),
+                        name(right)
+                    ),
+                    OrderError::Taken {
+                        object,
+                        side,
+                        neighbour,
+                        since,
+                    } => format!(
+                        "{}'s neighbour on the {side} is {} (they met in {}), and nothing passes \
+                         between bodies on a line: {} cannot meet {}",
+                        name(object),
+                        name(neighbour),
+                        self.stages[since].name,
+                        name(object),
+                        name(stage.objects[if side == Side::Right { 1 } else { 0 }])
+                    ),
+                };
+                self.at(stage, m)
+            })
+    }
+}
+
+/// IN of a posed stage, exactly (a wall's entry is its velocity).
+fn velocities_in(posed: &Posed) -> [Q; 2] {
+    match posed {
+        Posed::Collision(case, _) => case.velocities.each_ref().map(Number::exact),
+        Posed::Wall(w, _) => w.v(),
+        Posed::Separation(s, _) => s.velocities.each_ref().map(Number::exact),
+    }
+}
+
+/// The mass of body `slot` of a posed stage as typed, with its unit.
+fn mass_text(posed: &Posed, slot: usize) -> String {
+    let (m, unit) = match posed {
+        Posed::Collision(case, _) => (
+            case.inertia().entries()[slot][slot].clone(),
+            case.units.mass,
+        ),
+        Posed::Wall(w, _) => (w.mass.clone(), w.units.mass),
+        Posed::Separation(s, _) => (s.masses[slot].clone(), s.units.mass),
+    };
+    match unit {
+        Some(u) => format!("{} {u}", m.brief()),
+        None => m.brief(),
+    }
+}
+
+/// The mass of body `slot` of a posed stage, in kg when it has a unit (`None` for a wall).
+fn mass_of(posed: &Posed, slot: usize) -> Option<(bool, Q)> {
+    let (m, unit) = match posed {
+        Posed::Collision(case, _) => (
+            case.inertia().entries()[slot][slot].exact(),
+            case.units.mass,
+        ),
+        Posed::Wall(w, _) if w.ball() == slot => (w.m(), w.units.mass),
+        Posed::Wall(..) => return None,
+        Posed::Separation(s, _) => (s.masses[slot].exact(), s.units.mass),
+    };
+    Some(match unit.and_then(|u| lookup(u, Dimension::Mass).ok()) {
+        Some(u) => (true, m * u.si()),
+        None => (false, m),
+    })
+}
