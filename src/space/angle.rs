@@ -92,7 +92,7 @@ impl Angle {
             return (c, s, None);
         }
         let a = self.radians();
-        (a.cos(), a.sin(), None)
+        (libm::cos(a), libm::sin(a), None)
     }
 
     /// A rational vector along the angle's line (any length), for multiples of 45 degrees: a
@@ -144,8 +144,8 @@ fn sin_cos_degrees(d: &Q) -> (f64, f64) {
         let tf = to_f64(&t).unwrap_or(0.0);
         let r = crate::values::compensated::Dd::new(tf) * PI_180;
         (
-            r.hi.cos() - r.lo * r.hi.sin(),
-            r.hi.sin() + r.lo * r.hi.cos(),
+            libm::cos(r.hi) - r.lo * libm::sin(r.hi),
+            libm::sin(r.hi) + r.lo * libm::cos(r.hi),
         )
     };
     // Octant k covers [45 k, 45 (k + 1)).

@@ -266,9 +266,9 @@ pub struct NormalParts {
 /// `hypot` of the rounded components, `atan2` in degrees; `None` for the zero vector's angle.
 pub fn polar(v: &[Q]) -> (f64, Option<f64>) {
     let f: Vec<f64> = v.iter().map(|x| to_f64(x).unwrap_or(f64::NAN)).collect();
-    let speed = f.iter().fold(0.0f64, |s, x| s.hypot(*x));
+    let speed = f.iter().fold(0.0f64, |s, x| libm::hypot(s, *x));
     let angle = (v.len() == 2 && !(v[0].is_zero() && v[1].is_zero()))
-        .then(|| f[1].atan2(f[0]).to_degrees());
+        .then(|| libm::atan2(f[1], f[0]).to_degrees());
     (speed, angle)
 }
 
@@ -289,11 +289,11 @@ pub fn angle_between(a: &[Q], b: &[Q]) -> Option<f64> {
                 fa[2] * fb[0] - fa[0] * fb[2],
                 fa[0] * fb[1] - fa[1] * fb[0],
             ];
-            c.iter().fold(0.0f64, |s, x| s.hypot(*x))
+            c.iter().fold(0.0f64, |s, x| libm::hypot(s, *x))
         }
         _ => 0.0,
     };
-    Some(cross.atan2(ab).to_degrees())
+    Some(libm::atan2(cross, ab).to_degrees())
 }
 
 /// `|q|` as a binary64.

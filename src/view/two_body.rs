@@ -246,7 +246,7 @@ impl CaseInput {
 }
 
 /// The picture of `c` seen from `frame`.
-fn picture(
+pub(super) fn picture(
     c: &Collision,
     frame: &Frame,
     reverse: bool,

@@ -43,12 +43,12 @@ fn solve_args(case: &Value) -> Vec<String> {
     args
 }
 
-fn cli_json(args: &[String]) -> String {
+pub(crate) fn cli_json(args: &[String]) -> String {
     stdout(&args.iter().map(String::as_str).collect::<Vec<_>>())
 }
 
 /// The library's answer to a page request (what the WebAssembly module answers in the page).
-fn ask(request: Value) -> Value {
+pub(crate) fn ask(request: Value) -> Value {
     let text = collide::view::api::call(&request.to_string());
     serde_json::from_str(&text).unwrap()
 }
@@ -87,7 +87,7 @@ fn shell_words(line: &str) -> Vec<String> {
 }
 
 /// Runs a `collide ...` command line the page shows, with `--format json`.
-fn run_shown(command: &str) -> String {
+pub(crate) fn run_shown(command: &str) -> String {
     let words = shell_words(command);
     assert_eq!(words[0], "collide", "{command}");
     let mut args: Vec<String> = words[1..].to_vec();
@@ -96,7 +96,7 @@ fn run_shown(command: &str) -> String {
 }
 
 /// `collide scene FILE --format json`'s report for a scene the page shows.
-fn run_scene(scene: &str, tag: &str) -> Value {
+pub(crate) fn run_scene(scene: &str, tag: &str) -> Value {
     let file = scratch("scenes").join(format!("{tag}-{}.toml", std::process::id()));
     std::fs::write(&file, scene).unwrap();
     let out = stdout(&["scene", file.to_str().unwrap(), "--format", "json"]);
@@ -106,7 +106,7 @@ fn run_scene(scene: &str, tag: &str) -> Value {
 
 /// A folder of this test module's under the target directory (kept after the run: the browser's
 /// screenshots can be looked at there).
-fn scratch(name: &str) -> PathBuf {
+pub(crate) fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
         .join("view")
         .join(name);
@@ -388,7 +388,7 @@ fn the_committed_module_is_what_the_sources_build() {
 // ------------------------------------------------------------------ in a real browser
 
 /// What the browser did, once for all the browser tests; `None` when it cannot run here.
-fn browser() -> Option<&'static Value> {
+pub(crate) fn browser() -> Option<&'static Value> {
     static RUN: OnceLock<Result<Value, String>> = OnceLock::new();
     match RUN.get_or_init(drive_browser) {
         Ok(v) => Some(v),
@@ -444,6 +444,7 @@ fn drive_browser() -> Result<Value, String> {
                 {"colour": "momentum", "at": [45.0, 70.0]}, {"colour": "momentum", "at": [70.0, -30.0]}
             ]
         },
+        "plane": super::view_plane::browser_plan(&dir),
         "stack": [
             {},
             {"preset": "3"},
