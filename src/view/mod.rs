@@ -24,6 +24,16 @@ pub mod two_body;
 
 use serde::Serialize;
 
+/// The default restitution of an input: `collide solve`'s (no `-e`).
+fn elastic() -> String {
+    "elastic".into()
+}
+
+/// The default frame of an input.
+fn lab() -> String {
+    "lab".into()
+}
+
 /// A bad input, with the page's field it is in (`m1`, `v2`, `e`, `masses`, `gravity`, ...) and
 /// the message the command line would give.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -36,7 +36,7 @@ pub struct PlaneInput {
     pub m2: String,
     pub v1: String,
     pub v2: String,
-    #[serde(default = "elastic")]
+    #[serde(default = "super::elastic")]
     pub e: String,
     #[serde(default)]
     pub normal: String,
@@ -46,20 +46,12 @@ pub struct PlaneInput {
     pub r2: String,
     #[serde(default)]
     pub b: String,
-    #[serde(default = "lab")]
+    #[serde(default = "super::lab")]
     pub frame: String,
     #[serde(default)]
     pub reverse: bool,
     #[serde(default)]
     pub exact: bool,
-}
-
-fn elastic() -> String {
-    "elastic".into()
-}
-
-fn lab() -> String {
-    "lab".into()
 }
 
 /// The answer to two pucks.
@@ -161,16 +153,28 @@ impl PlaneInput {
         }))
     }
 
-    /// The fields a `?` (an unknown) may not be in: the page draws a case with every value given.
-    fn no_unknowns(&self) -> Result<(), InputError> {
-        let fields = [
+    /// The typed fields with their names.
+    fn fields(&self) -> [(&'static str, &String); 9] {
+        [
             ("m1", &self.m1),
             ("m2", &self.m2),
             ("v1", &self.v1),
             ("v2", &self.v2),
             ("e", &self.e),
-        ];
-        match fields.into_iter().find(|(_, text)| text.contains('?')) {
+            ("normal", &self.normal),
+            ("r1", &self.r1),
+            ("r2", &self.r2),
+            ("b", &self.b),
+        ]
+    }
+
+    /// The fields a `?` (an unknown) may not be in: the page draws a case with every value given.
+    fn no_unknowns(&self) -> Result<(), InputError> {
+        match self
+            .fields()
+            .into_iter()
+            .find(|(_, text)| text.contains('?'))
+        {
             Some((field, _)) => Err(InputError::new(
                 field,
                 "'?' marks an unknown, which `collide solve` solves for: the page draws a \
@@ -236,18 +240,7 @@ impl PlaneInput {
 
     /// The field whose text an error message quotes (`mass '-1' must be ...`), else `default`.
     fn quoted(&self, error: &str, default: &'static str) -> &'static str {
-        let fields = [
-            ("m1", &self.m1),
-            ("m2", &self.m2),
-            ("v1", &self.v1),
-            ("v2", &self.v2),
-            ("e", &self.e),
-            ("normal", &self.normal),
-            ("r1", &self.r1),
-            ("r2", &self.r2),
-            ("b", &self.b),
-        ];
-        fields
+        self.fields()
             .into_iter()
             .filter(|(_, text)| !t(text).is_empty())
             .find(|(_, text)| error.contains(&format!("'{}'", t(text))))

@@ -79,13 +79,20 @@ pub fn solve_command(c: &CaseInput) -> String {
         " -v {}",
         word(&format!("{},{}", c.v1.trim(), c.v2.trim()))
     ));
-    if !is_elastic(&c.e) {
-        out.push_str(&format!(" -e {}", word(c.e.trim())));
+    out.push_str(&rules(&c.e, &c.frame, c.reverse));
+    out
+}
+
+/// The flags after the bodies: `-e` unless elastic, `--frame` unless the lab, `--reverse`.
+fn rules(e: &str, frame: &str, reverse: bool) -> String {
+    let mut out = String::new();
+    if !is_elastic(e) {
+        out.push_str(&format!(" -e {}", word(e.trim())));
     }
-    if c.frame.trim() != "lab" {
-        out.push_str(&format!(" --frame {}", word(c.frame.trim())));
+    if frame.trim() != "lab" {
+        out.push_str(&format!(" --frame {}", word(frame.trim())));
     }
-    if c.reverse {
+    if reverse {
         out.push_str(" --reverse");
     }
     out
@@ -136,15 +143,7 @@ pub fn plane_command(p: &PlaneInput) -> String {
             word(p.b.trim())
         ));
     }
-    if !is_elastic(&p.e) {
-        out.push_str(&format!(" -e {}", word(p.e.trim())));
-    }
-    if p.frame.trim() != "lab" {
-        out.push_str(&format!(" --frame {}", word(p.frame.trim())));
-    }
-    if p.reverse {
-        out.push_str(" --reverse");
-    }
+    out.push_str(&rules(&p.e, &p.frame, p.reverse));
     if p.exact {
         out.push_str(" --exact");
     }

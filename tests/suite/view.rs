@@ -502,11 +502,18 @@ fn browser_loads_from_file_with_no_request_and_no_console_error() {
 fn browser_state_equals_solve_json_for_the_lecture_cases_and_edges() {
     let Some(b) = browser() else { return };
     for (case, seen) in cases().iter().zip(b["cases"].as_array().unwrap()) {
-        assert_eq!(seen["error"], "", "{case}");
-        let cli = cli_json(&solve_args(case));
-        assert_eq!(seen["state"].as_str().unwrap(), cli, "{case}");
-        assert_eq!(run_shown(seen["command"].as_str().unwrap()), cli, "{case}");
+        assert_seen_is_solve(seen, &solve_args(case), case);
     }
+}
+
+/// A case the browser typed: no error, its JSON as `collide solve args` prints it, and the
+/// command line shown prints it too.
+#[track_caller]
+pub(crate) fn assert_seen_is_solve(seen: &Value, args: &[String], case: &Value) {
+    assert_eq!(seen["error"], "", "{case}");
+    let cli = cli_json(args);
+    assert_eq!(seen["state"].as_str().unwrap(), cli, "{case}");
+    assert_eq!(run_shown(seen["command"].as_str().unwrap()), cli, "{case}");
 }
 
 #[test]
@@ -556,16 +563,21 @@ fn browser_drag_moves_fin_along_the_momentum_line_as_the_formula_says() {
             );
         }
     }
-    let timings: Vec<f64> = serde_json::from_value(d["timings"].clone()).unwrap();
-    assert!(!timings.is_empty(), "no drag update was timed");
-    let mut sorted = timings.clone();
+    drag_timings(&d["timings"], "drag");
+}
+
+/// The median of a drag's timed updates (recompute + redraw, ms), reported; there must be some.
+pub(crate) fn drag_timings(timings: &Value, what: &str) -> f64 {
+    let mut sorted: Vec<f64> = serde_json::from_value(timings.clone()).unwrap();
+    assert!(!sorted.is_empty(), "no {what} update was timed");
     sorted.sort_by(f64::total_cmp);
+    let median = sorted[sorted.len() / 2];
     eprintln!(
-        "drag: {} updates, recompute + redraw median {:.2} ms, max {:.2} ms",
+        "{what}: {} updates, recompute + redraw median {median:.2} ms, max {:.2} ms",
         sorted.len(),
-        sorted[sorted.len() / 2],
         sorted[sorted.len() - 1]
     );
+    median
 }
 
 #[test]

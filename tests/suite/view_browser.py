@@ -58,6 +58,19 @@ def near(rgb, target, tol=40):
     return all(abs(a - b) <= tol for a, b in zip(rgb, target))
 
 
+def nearest(rows, at, rgb):
+    """The distance from `at` (pixels) to the nearest pixel of colour `rgb` within 12 pixels, or None."""
+    cx, cy = at
+    h, w = len(rows), len(rows[0])
+    best = None
+    for y in range(max(0, int(cy) - 12), min(h, int(cy) + 13)):
+        for x in range(max(0, int(cx) - 12), min(w, int(cx) + 13)):
+            if near(rows[y][x], rgb):
+                dist = ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2) ** 0.5
+                best = dist if best is None else min(best, dist)
+    return best
+
+
 def drive_plane(page, plan):
     """The plane panel: cases typed, an arrow's tip dragged with the mouse, keys, a screenshot."""
     text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
@@ -126,14 +139,7 @@ def drive_plane(page, plan):
                 a = math.radians(probe["rim_deg"])
                 r = m["radii"][probe["body"]]
                 at = (c[0] + r * math.cos(a), c[1] - r * math.sin(a))
-            cx, cy = at[0] * k, at[1] * k
-            best = None
-            for y in range(max(0, int(cy) - 12), min(h, int(cy) + 13)):
-                for x in range(max(0, int(cx) - 12), min(w, int(cx) + 13)):
-                    if near(rows[y][x], sh["colours"][probe["colour"]]):
-                        dist = ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2) ** 0.5
-                        best = dist if best is None else min(best, dist)
-            probes.append(best)
+            probes.append(nearest(rows, (at[0] * k, at[1] * k), sh["colours"][probe["colour"]]))
         white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
         out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes, "white": white,
                              "map": m, "state": seen["state"], "error": seen["error"]}
@@ -232,16 +238,8 @@ def main():
             for row in rows[::3]:
                 for px in row[::3]:
                     colours.add(px)
-            probes = []
-            for probe in sh["probes"]:
-                cx, cy = (m["ox"] + m["s"] * probe["at"][0]) * k, (m["oy"] - m["s"] * probe["at"][1]) * k
-                best = None
-                for y in range(max(0, int(cy) - 12), min(h, int(cy) + 13)):
-                    for x in range(max(0, int(cx) - 12), min(w, int(cx) + 13)):
-                        if near(rows[y][x], sh["colours"][probe["colour"]]):
-                            dist = ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2) ** 0.5
-                            best = dist if best is None else min(best, dist)
-                probes.append(best)
+            probes = [nearest(rows, ((m["ox"] + m["s"] * probe["at"][0]) * k, (m["oy"] - m["s"] * probe["at"][1]) * k),
+                              sh["colours"][probe["colour"]]) for probe in sh["probes"]]
             white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
             out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes,
                                  "colours": len(colours), "white": white}

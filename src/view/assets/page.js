@@ -134,6 +134,21 @@
     return { X, Y, sx, sy };
   }
 
+  // A core's answer in the page: its error shown in the element `box`, the input of its field
+  // (`ids[field]`, else `fallback`) marked invalid, and the outputs `cleared` emptied (they would
+  // show the last good case as if it were this one); no error clears the marks.
+  function showError(answer, ids, fallback, box, cleared) {
+    for (const id of Object.values(ids)) $(id).removeAttribute("aria-invalid");
+    if (answer.ok) {
+      $(box).hidden = true;
+      return;
+    }
+    $(ids[answer.field] || fallback).setAttribute("aria-invalid", "true");
+    $(box).textContent = answer.error;
+    $(box).hidden = false;
+    for (const id of cleared) $(id).textContent = "";
+  }
+
   // ---------------------------------------------------------------- the velocity plane
   // The data box of a velocity plane (lecture Figs. 1.3, 2.3): square, around the origin, the
   // pictures' IN, COM and FIN and their energy ellipses (with `zoom`, around the points only);

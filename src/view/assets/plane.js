@@ -46,18 +46,11 @@
   }
 
   function showPlaneError(answer) {
-    for (const f of planeFields.concat(["frame", "reverse", "exact"])) $("p-" + f).removeAttribute("aria-invalid");
-    const box = $("plane-error");
-    if (answer.ok) {
-      box.hidden = true;
-      return;
-    }
-    const field = $("p-" + answer.field) ? "p-" + answer.field : "p-m1";
-    $(field).setAttribute("aria-invalid", "true");
-    box.textContent = answer.error;
-    box.hidden = false;
-    for (const id of ["plane-state", "plane-command", "plane-scene"]) $(id).textContent = "";
+    const ids = {};
+    for (const f of planeFields.concat(["frame", "reverse", "exact"])) ids[f] = "p-" + f;
+    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene"]);
   }
+
 
   function renderPlane() {
     const a = planeAnswer;

@@ -34,20 +34,11 @@
   }
 
   function showCaseError(answer) {
-    for (const f of caseFields.concat(["inertia", "reverse"])) $(f).removeAttribute("aria-invalid");
-    const box = $("case-error");
-    if (answer.ok) {
-      box.hidden = true;
-      return;
-    }
-    const field = $(answer.field) ? answer.field : "m1";
-    $(field).setAttribute("aria-invalid", "true");
-    box.textContent = answer.error;
-    box.hidden = false;
-    $("state").textContent = "";
-    $("command").textContent = "";
-    $("scene").textContent = "";
+    const ids = {};
+    for (const f of caseFields.concat(["inertia", "reverse"])) ids[f] = f;
+    showError(answer, ids, "m1", "case-error", ["state", "command", "scene"]);
   }
+
 
   function renderCase() {
     caseState = JSON.parse(caseAnswer.state);
