@@ -147,10 +147,12 @@ pub enum Command {
     )]
     Plot(PlotArgs),
     /// Write the lecture's simulators as one web page that opens from disk: the velocity plane
-    /// and space-time diagrams of a case, and a superball stack, computed by collide itself
+    /// and space-time diagrams of a case, two pucks in the plane, and a superball stack,
+    /// computed by collide itself
     #[command(after_help = "Examples:
   collide view -o case-a.html
   collide view -m 6,1 -v 3,-4 -e 2/3 --frame com -o fig-2-3.html
+  collide view -m 1,1 -v '(1,0),(0,0)' --normal 30deg -o pucks.html
   collide view scenarios/superball-3.toml -o stack.html
   collide view track -m 1,0.01 -x 1.5,2.25 -v 0,0 --sizes 1,0.5 --left-wall 0 --gravity 9.81")]
     View(ViewArgs),
@@ -240,9 +242,11 @@ pub struct ViewArgs {
     #[command(subcommand)]
     pub track: Option<ViewTrack>,
 
-    /// A scene file to open with: a two-body case, or a [track] for the stack
+    /// A scene file to open with: a two-body case, two bodies in the plane, or a [track] for
+    /// the stack
     #[arg(value_name = "SCENE.toml", value_hint = clap::ValueHint::FilePath,
-          conflicts_with_all = ["masses", "inertia", "velocities", "restitution"])]
+          conflicts_with_all = ["masses", "inertia", "velocities", "restitution", "normal",
+                                "radii", "impact_parameter"])]
     pub scene: Option<PathBuf>,
 
     /// Masses M1,M2, as for solve [default with no case: 4,1, lecture Fig. 1.3]
@@ -265,9 +269,28 @@ pub struct ViewArgs {
     )]
     pub inertia: Option<String>,
 
-    /// Initial velocities V1,V2 [default with no case: 60,10]
+    /// Initial velocities V1,V2 [default with no case: 60,10]; vectors open the plane panel:
+    /// '(1,0),(0,0)', '6 @ 30deg,0'
     #[arg(short, long, value_name = "V1,V2", allow_hyphen_values = true)]
     pub velocities: Option<String>,
+
+    /// The line of impact in the plane (from body 1 to body 2): '(1,1)', 30deg, N30E
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        conflicts_with = "radii",
+        requires = "velocities"
+    )]
+    pub normal: Option<String>,
+
+    /// Radii of two smooth disks in the plane (with --impact-parameter)
+    #[arg(long, value_name = "R1,R2", requires_all = ["impact_parameter", "velocities"])]
+    pub radii: Option<String>,
+
+    /// Distance from body 2's centre to the line of body 1's relative motion (with --radii)
+    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "radii")]
+    pub impact_parameter: Option<String>,
 
     /// Coefficient of restitution e >= 0 [default: elastic]
     #[arg(short = 'e', long, value_name = "E", allow_hyphen_values = true)]

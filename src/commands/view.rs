@@ -17,6 +17,10 @@ pub fn run(args: ViewArgs) -> Result<Outcome> {
             setup.focus = Focus::Stack;
         }
         (None, Some(path)) => from_scene(&mut setup, path)?,
+        (None, None) if planar(&args) => {
+            from_flags_in_the_plane(&mut setup, &args)?;
+            return write(&setup, &args);
+        }
         (None, None) => {
             if let Some(v) = &args.velocities {
                 let [v1, v2] = two(v, "--velocities", "V1,V2")?;
@@ -43,7 +47,73 @@ pub fn run(args: ViewArgs) -> Result<Outcome> {
         setup.case.frame = args.frame.to_string();
     }
     setup.case.reverse |= args.reverse;
-    let html = page::html(&setup).map_err(|e| anyhow::anyhow!("{}", e.error))?;
+    write(&setup, &args)
+}
+
+/// Whether the flags give a case in the plane: a line of impact, or velocities as vectors.
+fn planar(args: &ViewArgs) -> bool {
+    args.normal.is_some()
+        || args.radii.is_some()
+        || args
+            .velocities
+            .as_deref()
+            .is_some_and(collide::space::typed::is_spatial)
+}
+
+/// Two pucks in the plane from the flags: the page opens on the plane panel.
+fn from_flags_in_the_plane(setup: &mut Setup, args: &ViewArgs) -> Result<()> {
+    if args.inertia.is_some() {
+        bail!("--inertia is a two-body tensor on a line: give --masses M1,M2 for the plane");
+    }
+    let (Some(m), Some(v)) = (&args.masses, &args.velocities) else {
+        bail!(
+            "the plane needs --masses M1,M2 and --velocities V1,V2, e.g. -m 1,1 -v '(1,0),(0,0)'"
+        );
+    };
+    let [m1, m2] = two(m, "--masses", "M1,M2")?;
+    let [v1, v2] = bodies(v)?;
+    let p = &mut setup.plane;
+    (p.m1, p.m2, p.v1, p.v2) = (m1, m2, v1, v2);
+    (p.normal, p.r1, p.r2, p.b) = Default::default();
+    if let Some(n) = &args.normal {
+        p.normal = n.trim().to_string();
+    }
+    if let Some(r) = &args.radii {
+        [p.r1, p.r2] = two(r, "--radii", "R1,R2")?;
+        p.b = args
+            .impact_parameter
+            .as_deref()
+            .unwrap_or_default()
+            .trim()
+            .to_string();
+    }
+    p.e = args
+        .restitution
+        .as_deref()
+        .map_or_else(|| "elastic".to_string(), |e| e.trim().to_string());
+    p.frame = args.frame.to_string();
+    p.reverse = args.reverse;
+    setup.focus = Focus::Plane;
+    Ok(())
+}
+
+/// Two bodies' velocities, split at the commas outside parentheses.
+fn bodies(text: &str) -> Result<[String; 2]> {
+    let list = collide::space::typed::split_bodies(text)?;
+    match list[..] {
+        [a, b] => Ok([a.to_string(), b.to_string()]),
+        _ => bail!(
+            "--velocities '{}': the page's plane draws two bodies, this gives {}: run more \
+             bodies with collide solve",
+            text.trim(),
+            list.len()
+        ),
+    }
+}
+
+/// The page, written to `-o FILE` or stdout.
+fn write(setup: &Setup, args: &ViewArgs) -> Result<Outcome> {
+    let html = page::html(setup).map_err(|e| anyhow::anyhow!("{}", e.error))?;
     match &args.output {
         Some(path) => {
             write_file(path, html.as_bytes())?;
@@ -63,6 +133,61 @@ fn two(text: &str, flag: &str, what: &str) -> Result<[String; 2]> {
             text.trim()
         ),
     }
+}
+
+/// A scene in the plane opens the plane panel with its two bodies; what the panel cannot show
+/// (more bodies, space, final velocities or unknowns to solve for) is refused by name.
+fn in_the_plane(
+    setup: &mut Setup,
+    path: &std::path::Path,
+    scene: &collide::scene::SpaceScene,
+) -> Result<()> {
+    let texts = &scene.texts;
+    let why = if texts.masses.len() != 2 {
+        Some(format!("it has {} bodies", texts.masses.len()))
+    } else if scene.input.fin.is_some() {
+        Some("it gives final velocities (`fin`) to solve from".to_string())
+    } else if texts
+        .masses
+        .iter()
+        .chain(&texts.velocities)
+        .chain(&texts.restitution)
+        .any(|t| t.contains('?'))
+    {
+        Some("it has unknowns ('?') to solve for".to_string())
+    } else if scene.input.si || scene.energy_unit.is_some() {
+        Some("it converts units (`si`, `energy_unit`), which the page does not".to_string())
+    } else {
+        None
+    };
+    if let Some(why) = why {
+        bail!(
+            "{}: the page's plane draws two bodies whose masses, velocities and e are all \
+             given, and {why}: run it with collide scene",
+            path.display()
+        );
+    }
+    let p = &mut setup.plane;
+    p.m1 = texts.masses[0].clone();
+    p.m2 = texts.masses[1].clone();
+    [p.v1, p.v2] = match &texts.velocities[..] {
+        [a, b] => [a.clone(), b.clone()],
+        _ => bail!("{}: velocities: give one per body (2)", path.display()),
+    };
+    p.normal = texts.normal.clone().unwrap_or_default();
+    (p.r1, p.r2, p.b) = match (&texts.radii, &texts.impact_parameter) {
+        (Some(r), Some(b)) if r.len() == 2 => (r[0].clone(), r[1].clone(), b.clone()),
+        _ => Default::default(),
+    };
+    p.e = texts
+        .restitution
+        .clone()
+        .unwrap_or_else(|| "elastic".to_string());
+    p.frame = scene.frame.to_string();
+    p.reverse = scene.reverse;
+    p.exact = scene.input.exact;
+    setup.focus = Focus::Plane;
+    Ok(())
 }
 
 /// The layout as the page's inputs hold it.
@@ -149,11 +274,7 @@ fn from_scene(setup: &mut Setup, path: &std::path::Path) -> Result<()> {
              scene",
             path.display()
         ),
-        AnyScene::Space(_) => bail!(
-            "{}: a collision in the plane or in space: the page's panel for it is to come; run \
-             it with collide scene",
-            path.display()
-        ),
+        AnyScene::Space(scene) => in_the_plane(setup, path, &scene)?,
         AnyScene::Special(_) | AnyScene::Contact(_) | AnyScene::Stages(_) => bail!(
             "{}: the page draws a collision of two movable bodies or a [track]; this scene is \
              another kind (a wall, a separation, contact forces or stages): run it with collide \

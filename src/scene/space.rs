@@ -83,10 +83,24 @@ impl Value {
 pub struct SpaceScene {
     pub about: About,
     pub input: Input,
+    /// The values as written, in the command line's words (`[4, 0]` is `(4,0)`): what
+    /// `collide view` puts in its page's inputs.
+    pub texts: Texts,
     pub frame: Frame,
     pub show: Show,
     pub reverse: bool,
     pub energy_unit: Option<&'static crate::values::units::EnergyUnit>,
+}
+
+/// A scene's values as the command line would take them, one text per body.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Texts {
+    pub masses: Vec<String>,
+    pub velocities: Vec<String>,
+    pub normal: Option<String>,
+    pub radii: Option<Vec<String>>,
+    pub impact_parameter: Option<String>,
+    pub restitution: Option<String>,
 }
 
 /// Top-level keys of the plane's JSON report (`[expect]` addresses them).
@@ -231,8 +245,20 @@ impl SpaceScene {
             file.expect,
             among(&SPACE_KEYS),
         )?;
+        let texts = Texts {
+            masses: file.masses.get_ref().iter().map(Value::text).collect(),
+            velocities: file.velocities.get_ref().iter().map(Value::text).collect(),
+            normal: file.normal.as_ref().map(|n| n.get_ref().text()),
+            radii: file
+                .radii
+                .as_ref()
+                .map(|r| r.get_ref().iter().map(Value::text).collect()),
+            impact_parameter: file.impact_parameter.as_ref().map(|b| b.get_ref().text()),
+            restitution: file.restitution.as_ref().map(|r| r.get_ref().text()),
+        };
         Ok(SpaceScene {
             about,
+            texts,
             input: Input {
                 masses,
                 v_in,

@@ -97,7 +97,7 @@ impl Angle {
             return (c, s, None);
         }
         let a = self.radians();
-        (a.cos(), a.sin(), None)
+        (libm::cos(a), libm::sin(a), None)
     }
 
     /// A rational vector along the angle's line (any length), for multiples of 45 degrees: a
@@ -149,8 +149,8 @@ fn sin_cos_degrees(d: &Q) -> (f64, f64) {
         let tf = to_f64(&t).unwrap_or(0.0);
         let r = crate::values::compensated::Dd::new(tf) * PI_180;
         (
-            r.hi.cos() - r.lo * r.hi.sin(),
-            r.hi.sin() + r.lo * r.hi.cos(),
+            libm::cos(r.hi) - r.lo * libm::sin(r.hi),
+            libm::sin(r.hi) + r.lo * libm::cos(r.hi),
         )
     };
     // Octant k covers [45 k, 45 (k + 1)).
@@ -227,7 +227,7 @@ impl std::str::FromStr for Angle {
 pub fn compass(x: f64, y: f64, show: impl Fn(f64) -> String) -> String {
     let from = if y >= 0.0 { 'N' } else { 'S' };
     let to = if x >= 0.0 { 'E' } else { 'W' };
-    let turn = x.abs().atan2(y.abs()).to_degrees();
+    let turn = libm::atan2(x.abs(), y.abs()).to_degrees();
     match show(turn).as_str() {
         "0" => from.to_string(),
         "90" => to.to_string(),

@@ -271,10 +271,10 @@ pub struct NormalParts {
 /// two, so that no size of vector loses it); `None` for the zero vector's angle.
 pub fn polar(v: &[Q]) -> (f64, Option<f64>) {
     let f: Vec<f64> = v.iter().map(|x| to_f64(x).unwrap_or(f64::NAN)).collect();
-    let speed = f.iter().fold(0.0f64, |s, x| s.hypot(*x));
+    let speed = f.iter().fold(0.0f64, |s, x| libm::hypot(s, *x));
     let angle = (v.len() == 2 && !(v[0].is_zero() && v[1].is_zero())).then(|| {
         let d = direction(v);
-        d[1].atan2(d[0]).to_degrees()
+        libm::atan2(d[1], d[0]).to_degrees()
     });
     (speed, angle)
 }
@@ -298,11 +298,11 @@ pub fn angle_between(a: &[Q], b: &[Q]) -> Option<f64> {
                 &qa[0] * &qb[1] - &qa[1] * &qb[0],
             ];
             c.iter()
-                .fold(0.0f64, |s, x| s.hypot(to_f64(x).unwrap_or(0.0)))
+                .fold(0.0f64, |s, x| libm::hypot(s, to_f64(x).unwrap_or(0.0)))
         }
         _ => 0.0,
     };
-    Some(cross.atan2(ab).to_degrees())
+    Some(libm::atan2(cross, ab).to_degrees())
 }
 
 /// `|q|` as a binary64.

@@ -718,7 +718,7 @@ impl Ellipse {
     }
 
     fn at(&self, s: f64) -> Vec<f64> {
-        let (c, sn) = (s.cos(), s.sin());
+        let (c, sn) = (libm::cos(s), libm::sin(s));
         vec![
             self.centre[0] + self.map[0][0] * c + self.map[0][1] * sn,
             self.centre[1] + self.map[1][0] * c + self.map[1][1] * sn,

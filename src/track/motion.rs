@@ -96,7 +96,7 @@ pub fn first_contact(d0: f64, r: f64, a: f64, approach: bool) -> Option<f64> {
     let q = (std::f64::consts::SQRT_2 * a.abs().sqrt()) * d0.sqrt();
     let s = if a < 0.0 {
         // The gap's acceleration closes it: it always closes.
-        let root = r.hypot(q);
+        let root = libm::hypot(r, q);
         if r <= 0.0 {
             2.0 * d0 / (root - r)
         } else {

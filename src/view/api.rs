@@ -3,13 +3,15 @@
 //! the tests call to compare the page's answers with the command line's.
 //!
 //! Requests are tagged by `op`: `{"op": "solve", "m1": "4", "m2": "1", "v1": "60", "v2": "10",
-//! "e": "2/3", "frame": "com", "reverse": false}` (a `two_body::CaseInput`), or `{"op":
-//! "track", "masses": "1,0.01", ...}` (a `stack::TrackInput`). Answers are `{"ok": true, ...}`
+//! "e": "2/3", "frame": "com", "reverse": false}` (a `two_body::CaseInput`), `{"op": "plane",
+//! "m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(0,0)", "normal": "30deg", ...}` (a
+//! `plane::PlaneInput`), or `{"op": "track", "masses": "1,0.01", ...}` (a `stack::TrackInput`). Answers are `{"ok": true, ...}`
 //! with the result's fields, or `{"ok": false, "field": "m1", "error": "..."}`.
 
 use serde::{Deserialize, Serialize};
 
 use super::InputError;
+use super::plane::PlaneInput;
 use super::stack::TrackInput;
 use super::two_body::CaseInput;
 
@@ -19,6 +21,8 @@ use super::two_body::CaseInput;
 pub enum Request {
     /// One collision: the velocity plane and the dual panel.
     Solve(CaseInput),
+    /// Two pucks in the plane: the plane panel.
+    Plane(PlaneInput),
     /// Bodies on a track, under gravity: the superball stack.
     Track(TrackInput),
 }
@@ -36,6 +40,7 @@ pub fn call(request: &str) -> String {
 pub fn answer(request: &Request) -> serde_json::Value {
     let result = match request {
         Request::Solve(c) => c.solve().map(serde_json::to_value),
+        Request::Plane(p) => p.solve().map(serde_json::to_value),
         Request::Track(t) => t.run().map(serde_json::to_value),
     };
     match result {

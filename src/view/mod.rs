@@ -6,22 +6,33 @@
 //!   point of the WebAssembly module, and callable natively, which the tests do);
 //! - `two_body`: a collision for the velocity plane and the dual panel: the same report JSON as
 //!   `collide solve --format json`, and the geometry to draw;
+//! - `plane`: two pucks in the plane (issue 25's solver) for the third panel: the same JSON as
+//!   `collide solve --format json` with vectors and a line of impact, and the pucks, arrows,
+//!   momentum triangles and the velocity plane of the normal parts to draw;
 //! - `stack`: a track under gravity (the superball stack) for the animation: the run, its
 //!   motion sampled in time, the velocity amplification;
 //! - `shell`: the `collide` command line and the scene TOML of what is on screen;
 //! - `page` (feature `cli`): the self-contained page, with the module embedded.
-//!
-//! The plane (issue 25) will be a third kind of request beside `solve` and `track`, answered by
-//! its own module here, and a third panel of the page.
 
 pub mod api;
 #[cfg(feature = "cli")]
 pub mod page;
+pub mod plane;
 pub mod shell;
 pub mod stack;
 pub mod two_body;
 
 use serde::Serialize;
+
+/// The default restitution of an input: `collide solve`'s (no `-e`).
+fn elastic() -> String {
+    "elastic".into()
+}
+
+/// The default frame of an input.
+fn lab() -> String {
+    "lab".into()
+}
 
 /// A bad input, with the page's field it is in (`m1`, `v2`, `e`, `masses`, `gravity`, ...) and
 /// the message the command line would give.

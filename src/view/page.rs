@@ -8,12 +8,22 @@ use serde::Serialize;
 
 use super::InputError;
 use super::api::{Request, answer};
+use super::plane::PlaneInput;
 use super::stack::TrackInput;
 use super::two_body::CaseInput;
 
 const TEMPLATE: &str = include_str!("assets/page.html");
 const STYLE: &str = include_str!("assets/page.css");
-const SCRIPT: &str = include_str!("assets/page.js");
+/// The page's script, in parts by job, run in this order inside one function (they share its
+/// scope): the core and drawing helpers, the velocity plane and dual panel, the plane, the stack,
+/// and the start.
+const SCRIPTS: [&str; 5] = [
+    include_str!("assets/page.js"),
+    include_str!("assets/two_body.js"),
+    include_str!("assets/plane.js"),
+    include_str!("assets/stack.js"),
+    include_str!("assets/start.js"),
+];
 
 /// The library without its command line, compiled to `wasm32-unknown-unknown` by
 /// `wasm/build.sh` and committed; `tests/suite/view.rs` checks that rebuilding it gives these
@@ -24,8 +34,9 @@ pub const MODULE: &[u8] = include_bytes!("../../wasm/collide_view.wasm");
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Setup {
     pub case: CaseInput,
+    pub plane: PlaneInput,
     pub track: TrackInput,
-    /// The part shown first: `two-body` or `stack`.
+    /// The part shown first: `two-body`, `plane` or `stack`.
     pub focus: Focus,
 }
 
@@ -33,12 +44,15 @@ pub struct Setup {
 #[serde(rename_all = "kebab-case")]
 pub enum Focus {
     TwoBody,
+    Plane,
     Stack,
 }
 
 impl Setup {
-    /// Lecture Fig. 1.3 (a 4-ton SUV at 60 rear-ends a 1-ton VW at 10, elastic) and the
-    /// 2-ball superball stack dropped from rest 1 m above the floor.
+    /// Lecture Fig. 1.3 (a 4-ton SUV at 60 rear-ends a 1-ton VW at 10, elastic), two equal
+    /// disks of radius 1, one at rest, hit at the impact parameter 1 (the line of impact at
+    /// asin(1/2) = 30 degrees: they leave at right angles), and the 2-ball superball stack
+    /// dropped from rest 1 m above the floor.
     pub fn lecture() -> Setup {
         Setup {
             case: CaseInput {
@@ -50,6 +64,20 @@ impl Setup {
                 e: "elastic".into(),
                 frame: "lab".into(),
                 reverse: false,
+            },
+            plane: PlaneInput {
+                m1: "1".into(),
+                m2: "1".into(),
+                v1: "(1,0)".into(),
+                v2: "(0,0)".into(),
+                e: "elastic".into(),
+                normal: String::new(),
+                r1: "1".into(),
+                r2: "1".into(),
+                b: "1".into(),
+                frame: "lab".into(),
+                reverse: false,
+                exact: false,
             },
             track: TrackInput {
                 masses: "1,0.01".into(),
@@ -71,20 +99,28 @@ impl Setup {
 /// The page, or the first bad input (as the command line would name it).
 pub fn html(setup: &Setup) -> Result<String, InputError> {
     let solved = checked(answer(&Request::Solve(setup.case.clone())))?;
+    let plane = checked(answer(&Request::Plane(setup.plane.clone())))?;
     let stack = checked(answer(&Request::Track(setup.track.clone())))?;
     let text = |v: &serde_json::Value, key: &str| v[key].as_str().unwrap_or_default().to_string();
     let data = serde_json::json!({
         "setup": setup,
-        "answers": {"solve": solved, "track": stack},
+        "answers": {"solve": solved, "plane": plane, "track": stack},
     });
+    let script = format!(
+        "\"use strict\";\n(function () {{\n{}}})();\n",
+        SCRIPTS.concat()
+    );
     let fill = [
         ("{{STYLE}}", STYLE.to_string()),
-        ("{{SCRIPT}}", script_text(SCRIPT)),
+        ("{{SCRIPT}}", script_text(&script)),
         ("{{SETUP}}", script_text(&data.to_string())),
         ("{{MODULE}}", base64(&compressed(MODULE))),
         ("{{STATE}}", escape(&text(&solved, "state"))),
         ("{{COMMAND}}", escape(&text(&solved, "command"))),
         ("{{SCENE}}", escape(&text(&solved, "scene"))),
+        ("{{PLANE_STATE}}", escape(&text(&plane, "state"))),
+        ("{{PLANE_COMMAND}}", escape(&text(&plane, "command"))),
+        ("{{PLANE_SCENE}}", escape(&text(&plane, "scene"))),
         ("{{TRACK_STATE}}", escape(&text(&stack, "state"))),
         ("{{TRACK_COMMAND}}", escape(&text(&stack, "command"))),
         ("{{TRACK_SCENE}}", escape(&text(&stack, "scene"))),
@@ -125,6 +161,9 @@ fn checked(v: serde_json::Value) -> Result<serde_json::Value, InputError> {
         Some("m1" | "m2" | "inertia") => "masses",
         Some("v1" | "v2") => "velocities",
         Some("e") => "restitution",
+        Some("normal") => "normal",
+        Some("r1" | "r2") => "radii",
+        Some("b") => "impact-parameter",
         Some(_) | None => "input",
     };
     Err(InputError::new(

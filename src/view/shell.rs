@@ -2,6 +2,7 @@
 //! that a case found by playing becomes a command that reproduces it. Values go out as they were
 //! typed (`2/3` stays `2/3`), so the command computes from the same exact numbers.
 
+use super::plane::PlaneInput;
 use super::stack::TrackInput;
 use super::two_body::CaseInput;
 
@@ -78,13 +79,20 @@ pub fn solve_command(c: &CaseInput) -> String {
         " -v {}",
         word(&format!("{},{}", c.v1.trim(), c.v2.trim()))
     ));
-    if !is_elastic(&c.e) {
-        out.push_str(&format!(" -e {}", word(c.e.trim())));
+    out.push_str(&rules(&c.e, &c.frame, c.reverse));
+    out
+}
+
+/// The flags after the bodies: `-e` unless elastic, `--frame` unless the lab, `--reverse`.
+fn rules(e: &str, frame: &str, reverse: bool) -> String {
+    let mut out = String::new();
+    if !is_elastic(e) {
+        out.push_str(&format!(" -e {}", word(e.trim())));
     }
-    if c.frame.trim() != "lab" {
-        out.push_str(&format!(" --frame {}", word(c.frame.trim())));
+    if frame.trim() != "lab" {
+        out.push_str(&format!(" --frame {}", word(frame.trim())));
     }
-    if c.reverse {
+    if reverse {
         out.push_str(" --reverse");
     }
     out
@@ -115,6 +123,80 @@ pub fn solve_scene(c: &CaseInput) -> String {
     }
     if c.reverse {
         out.push_str("# The time reverse (--reverse) has no scene key: see the command line.\n");
+    }
+    out
+}
+
+/// The `collide solve` command line of two pucks in the plane.
+pub fn plane_command(p: &PlaneInput) -> String {
+    let mut out = format!(
+        "collide solve -m {} -v {}",
+        word(&format!("{},{}", p.m1.trim(), p.m2.trim())),
+        word(&format!("{},{}", p.v1.trim(), p.v2.trim()))
+    );
+    if !p.normal.trim().is_empty() {
+        out.push_str(&format!(" --normal {}", word(p.normal.trim())));
+    } else if !p.r1.trim().is_empty() || !p.r2.trim().is_empty() || !p.b.trim().is_empty() {
+        out.push_str(&format!(
+            " --radii {} --impact-parameter {}",
+            word(&format!("{},{}", p.r1.trim(), p.r2.trim())),
+            word(p.b.trim())
+        ));
+    }
+    out.push_str(&rules(&p.e, &p.frame, p.reverse));
+    if p.exact {
+        out.push_str(" --exact");
+    }
+    out
+}
+
+/// A vector as a scene writes it: `[4, 0]` when it is components the scene reads back as typed,
+/// else the command line's text as a string (`"6 m/s @ 30deg"`, `"(4,0) m/s"`) or number.
+fn toml_vector(text: &str) -> String {
+    let t = text.trim();
+    if let Some(inside) = t.strip_prefix('(').and_then(|r| r.strip_suffix(')')) {
+        let parts: Vec<String> = fields(inside).into_iter().map(toml_value).collect();
+        if parts.iter().all(|v| !v.starts_with('"')) {
+            return format!("[{}]", parts.join(", "));
+        }
+    }
+    toml_value(t)
+}
+
+/// The scene file of two pucks in the plane (`collide scene FILE.toml`).
+pub fn plane_scene(p: &PlaneInput) -> String {
+    let mut out = String::from("# From collide view; run with: collide scene FILE.toml\n");
+    out.push_str(&format!(
+        "masses = [{}, {}]\n",
+        toml_value(&p.m1),
+        toml_value(&p.m2)
+    ));
+    out.push_str(&format!(
+        "velocities = [{}, {}]\n",
+        toml_vector(&p.v1),
+        toml_vector(&p.v2)
+    ));
+    if !p.normal.trim().is_empty() {
+        out.push_str(&format!("normal = {}\n", toml_vector(&p.normal)));
+    } else if !p.r1.trim().is_empty() || !p.r2.trim().is_empty() || !p.b.trim().is_empty() {
+        out.push_str(&format!(
+            "radii = [{}, {}]\nimpact_parameter = {}\n",
+            toml_value(&p.r1),
+            toml_value(&p.r2),
+            toml_value(&p.b)
+        ));
+    }
+    if !is_elastic(&p.e) {
+        out.push_str(&format!("restitution = {}\n", toml_value(&p.e)));
+    }
+    if p.frame.trim() != "lab" {
+        out.push_str(&format!("frame = {}\n", toml_value(&p.frame)));
+    }
+    if p.reverse {
+        out.push_str("reverse = true\n");
+    }
+    if p.exact {
+        out.push_str("exact = true\n");
     }
     out
 }

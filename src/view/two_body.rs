@@ -30,20 +30,12 @@ pub struct CaseInput {
     pub inertia: Option<String>,
     pub v1: String,
     pub v2: String,
-    #[serde(default = "elastic")]
+    #[serde(default = "super::elastic")]
     pub e: String,
-    #[serde(default = "lab")]
+    #[serde(default = "super::lab")]
     pub frame: String,
     #[serde(default)]
     pub reverse: bool,
-}
-
-fn elastic() -> String {
-    "elastic".into()
-}
-
-fn lab() -> String {
-    "lab".into()
 }
 
 /// The answer to a case.
@@ -246,7 +238,7 @@ impl CaseInput {
 }
 
 /// The picture of `c` seen from `frame`.
-fn picture(
+pub(super) fn picture(
     c: &Collision,
     frame: &Frame,
     reverse: bool,

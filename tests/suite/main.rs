@@ -30,4 +30,5 @@ mod tables;
 mod track;
 mod units;
 mod view;
+mod view_plane;
 mod width;

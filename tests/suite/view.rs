@@ -43,12 +43,12 @@ fn solve_args(case: &Value) -> Vec<String> {
     args
 }
 
-fn cli_json(args: &[String]) -> String {
+pub(crate) fn cli_json(args: &[String]) -> String {
     stdout(&args.iter().map(String::as_str).collect::<Vec<_>>())
 }
 
 /// The library's answer to a page request (what the WebAssembly module answers in the page).
-fn ask(request: Value) -> Value {
+pub(crate) fn ask(request: Value) -> Value {
     let text = collide::view::api::call(&request.to_string());
     serde_json::from_str(&text).unwrap()
 }
@@ -87,7 +87,7 @@ fn shell_words(line: &str) -> Vec<String> {
 }
 
 /// Runs a `collide ...` command line the page shows, with `--format json`.
-fn run_shown(command: &str) -> String {
+pub(crate) fn run_shown(command: &str) -> String {
     let words = shell_words(command);
     assert_eq!(words[0], "collide", "{command}");
     let mut args: Vec<String> = words[1..].to_vec();
@@ -96,7 +96,7 @@ fn run_shown(command: &str) -> String {
 }
 
 /// `collide scene FILE --format json`'s report for a scene the page shows.
-fn run_scene(scene: &str, tag: &str) -> Value {
+pub(crate) fn run_scene(scene: &str, tag: &str) -> Value {
     let file = scratch("scenes").join(format!("{tag}-{}.toml", std::process::id()));
     std::fs::write(&file, scene).unwrap();
     let out = stdout(&["scene", file.to_str().unwrap(), "--format", "json"]);
@@ -106,7 +106,7 @@ fn run_scene(scene: &str, tag: &str) -> Value {
 
 /// A folder of this test module's under the target directory (kept after the run: the browser's
 /// screenshots can be looked at there).
-fn scratch(name: &str) -> PathBuf {
+pub(crate) fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
         .join("view")
         .join(name);
@@ -388,7 +388,7 @@ fn the_committed_module_is_what_the_sources_build() {
 // ------------------------------------------------------------------ in a real browser
 
 /// What the browser did, once for all the browser tests; `None` when it cannot run here.
-fn browser() -> Option<&'static Value> {
+pub(crate) fn browser() -> Option<&'static Value> {
     static RUN: OnceLock<Result<Value, String>> = OnceLock::new();
     match RUN.get_or_init(drive_browser) {
         Ok(v) => Some(v),
@@ -444,6 +444,7 @@ fn drive_browser() -> Result<Value, String> {
                 {"colour": "momentum", "at": [45.0, 70.0]}, {"colour": "momentum", "at": [70.0, -30.0]}
             ]
         },
+        "plane": super::view_plane::browser_plan(&dir),
         "stack": [
             {},
             {"preset": "3"},
@@ -501,11 +502,18 @@ fn browser_loads_from_file_with_no_request_and_no_console_error() {
 fn browser_state_equals_solve_json_for_the_lecture_cases_and_edges() {
     let Some(b) = browser() else { return };
     for (case, seen) in cases().iter().zip(b["cases"].as_array().unwrap()) {
-        assert_eq!(seen["error"], "", "{case}");
-        let cli = cli_json(&solve_args(case));
-        assert_eq!(seen["state"].as_str().unwrap(), cli, "{case}");
-        assert_eq!(run_shown(seen["command"].as_str().unwrap()), cli, "{case}");
+        assert_seen_is_solve(seen, &solve_args(case), case);
     }
+}
+
+/// A case the browser typed: no error, its JSON as `collide solve args` prints it, and the
+/// command line shown prints it too.
+#[track_caller]
+pub(crate) fn assert_seen_is_solve(seen: &Value, args: &[String], case: &Value) {
+    assert_eq!(seen["error"], "", "{case}");
+    let cli = cli_json(args);
+    assert_eq!(seen["state"].as_str().unwrap(), cli, "{case}");
+    assert_eq!(run_shown(seen["command"].as_str().unwrap()), cli, "{case}");
 }
 
 #[test]
@@ -555,16 +563,21 @@ fn browser_drag_moves_fin_along_the_momentum_line_as_the_formula_says() {
             );
         }
     }
-    let timings: Vec<f64> = serde_json::from_value(d["timings"].clone()).unwrap();
-    assert!(!timings.is_empty(), "no drag update was timed");
-    let mut sorted = timings.clone();
+    drag_timings(&d["timings"], "drag");
+}
+
+/// The median of a drag's timed updates (recompute + redraw, ms), reported; there must be some.
+pub(crate) fn drag_timings(timings: &Value, what: &str) -> f64 {
+    let mut sorted: Vec<f64> = serde_json::from_value(timings.clone()).unwrap();
+    assert!(!sorted.is_empty(), "no {what} update was timed");
     sorted.sort_by(f64::total_cmp);
+    let median = sorted[sorted.len() / 2];
     eprintln!(
-        "drag: {} updates, recompute + redraw median {:.2} ms, max {:.2} ms",
+        "{what}: {} updates, recompute + redraw median {median:.2} ms, max {:.2} ms",
         sorted.len(),
-        sorted[sorted.len() / 2],
         sorted[sorted.len() - 1]
     );
+    median
 }
 
 #[test]

@@ -4,10 +4,11 @@ reports: python3 view_browser.py PAGE.html PLAN.json prints one JSON object of w
 The plan: `cases` (inputs to type: m1, m2, v1, v2, e, inertia), `drag` (a case, and a point of
 the velocity plane to drag IN to), `keys` (arrow keys pressed on the plane), `frame` (a frame
 to switch to, sampling the animation), `reverse`, `screenshot` (where to save a picture of the
-plane, and points to probe for colours), `stack` (presets and inputs of the superball stack).
+plane, and points to probe for colours), `stack` (presets and inputs of the superball stack),
+`plane` (two pucks: `cases` to type, an arrow `drag`, `keys`, a `screenshot` of the pucks).
 Needs Playwright for Python and a Chromium (COLLIDE_CHROMIUM, default /usr/bin/chromium); the
 browser is launched with a fresh profile and no network use of its own."""
-import json, os, struct, sys, tempfile, time, zlib
+import json, math, os, struct, sys, tempfile, time, zlib
 
 from playwright.sync_api import sync_playwright
 
@@ -55,6 +56,94 @@ def png_pixels(data):
 
 def near(rgb, target, tol=40):
     return all(abs(a - b) <= tol for a, b in zip(rgb, target))
+
+
+def nearest(rows, at, rgb):
+    """The distance from `at` (pixels) to the nearest pixel of colour `rgb` within 12 pixels, or None."""
+    cx, cy = at
+    h, w = len(rows), len(rows[0])
+    best = None
+    for y in range(max(0, int(cy) - 12), min(h, int(cy) + 13)):
+        for x in range(max(0, int(cx) - 12), min(w, int(cx) + 13)):
+            if near(rows[y][x], rgb):
+                dist = ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2) ** 0.5
+                best = dist if best is None else min(best, dist)
+    return best
+
+
+def drive_plane(page, plan):
+    """The plane panel: cases typed, an arrow's tip dragged with the mouse, keys, a screenshot."""
+    text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
+    out = {}
+
+    def set_case(case):
+        line = "normal" if case.get("normal") else "disks" if case.get("r1") else "none"
+        page.check('input[name="p-line"][value="%s"]' % line)
+        for field in ("m1", "m2", "v1", "v2", "e", "normal", "r1", "r2", "b"):
+            if field in case or field in ("m1", "m2", "v1", "v2", "e"):
+                page.fill("#p-" + field, case.get(field, "elastic" if field == "e" else ""))
+        page.select_option("#p-frame", case.get("frame", "lab"))
+        return {"state": text("#plane-state"), "command": text("#plane-command"), "scene": text("#plane-scene"),
+                "error": page.eval_on_selector("#plane-error", "e => e.hidden ? '' : e.textContent")}
+
+    def pucks_map():
+        return page.eval_on_selector("#pucks-svg", """s => { const r = s.getBoundingClientRect();
+            return Object.assign(JSON.parse(s.dataset.map), {left: r.left, top: r.top, width: r.width, vb: s.viewBox.baseVal.width}); }""")
+
+    def screen(m, i, v):
+        """The client point of velocity v drawn from body i's centre (v in the frame on screen)."""
+        k = m["width"] / m["vb"]
+        return m["left"] + (m["c"][i][0] + m["s"] * v[0]) * k, m["top"] + (m["c"][i][1] - m["s"] * v[1]) * k
+
+    def centred():
+        # At once: the page scrolls smoothly (CSS), and the map is read right after.
+        page.eval_on_selector("#pucks-svg", "s => s.scrollIntoView({block: 'center', behavior: 'instant'})")
+
+    out["cases"] = [set_case(c) for c in plan.get("cases", [])]
+    if "drag" in plan:
+        d = plan["drag"]
+        before = set_case(d["case"])
+        centred()
+        m = pucks_map()
+        state = json.loads(before["state"])
+        i = d["body"]
+        page.evaluate("collideView.planeTimings.length = 0")
+        page.mouse.move(*screen(m, i, state["in"][i]))
+        page.mouse.down()
+        page.mouse.move(*screen(m, i, d["to"]), steps=d.get("steps", 30))
+        page.mouse.up()
+        out["drag"] = {"before": before["state"], "after": text("#plane-state"), "command": text("#plane-command"),
+                       "map": m, "timings": page.evaluate("collideView.planeTimings")}
+    if "keys" in plan:
+        page.focus("#pucks-svg")
+        m = pucks_map()
+        for key in plan["keys"]:
+            page.keyboard.press(key)
+        out["keys"] = {"state": text("#plane-state"), "map": m}
+    if "screenshot" in plan:
+        sh = plan["screenshot"]
+        seen = set_case(sh["case"])
+        page.evaluate("document.activeElement && document.activeElement.blur()")
+        centred()
+        m = pucks_map()
+        png = page.locator("#pucks-svg").screenshot(path=sh["path"])
+        w, h, rows = png_pixels(png)
+        k = w / m["vb"]
+        counts = {name: sum(1 for row in rows for px in row if near(px, rgb)) for name, rgb in sh["colours"].items()}
+        probes = []
+        for probe in sh["probes"]:
+            c = m["c"][probe["body"]]
+            if "velocity" in probe:
+                at = (c[0] + m["s"] * probe["velocity"][0], c[1] - m["s"] * probe["velocity"][1])
+            else:
+                a = math.radians(probe["rim_deg"])
+                r = m["radii"][probe["body"]]
+                at = (c[0] + r * math.cos(a), c[1] - r * math.sin(a))
+            probes.append(nearest(rows, (at[0] * k, at[1] * k), sh["colours"][probe["colour"]]))
+        white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
+        out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes, "white": white,
+                             "map": m, "state": seen["state"], "error": seen["error"]}
+    return out
 
 
 def main():
@@ -149,16 +238,8 @@ def main():
             for row in rows[::3]:
                 for px in row[::3]:
                     colours.add(px)
-            probes = []
-            for probe in sh["probes"]:
-                cx, cy = (m["ox"] + m["s"] * probe["at"][0]) * k, (m["oy"] - m["s"] * probe["at"][1]) * k
-                best = None
-                for y in range(max(0, int(cy) - 12), min(h, int(cy) + 13)):
-                    for x in range(max(0, int(cx) - 12), min(w, int(cx) + 13)):
-                        if near(rows[y][x], sh["colours"][probe["colour"]]):
-                            dist = ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2) ** 0.5
-                            best = dist if best is None else min(best, dist)
-                probes.append(best)
+            probes = [nearest(rows, ((m["ox"] + m["s"] * probe["at"][0]) * k, (m["oy"] - m["s"] * probe["at"][1]) * k),
+                              sh["colours"][probe["colour"]]) for probe in sh["probes"]]
             white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
             out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes,
                                  "colours": len(colours), "white": white}
@@ -175,6 +256,8 @@ def main():
                                      "state": text("#track-state"), "command": text("#track-command"),
                                      "scene": text("#track-scene"), "numbers": text("#stack-numbers"),
                                      "error": page.eval_on_selector("#track-error", "e => e.hidden ? '' : e.textContent")})
+        if "plane" in plan:
+            out["plane"] = drive_plane(page, plan["plane"])
         out["seconds"] = time.time() - started
         ctx.close()
     json.dump(out, sys.stdout, allow_nan=False)

@@ -174,7 +174,7 @@ fn between(a: [f64; 2], b: [f64; 2]) -> Option<f64> {
         return None;
     }
     let (c, d) = cross_dot(direction(a), direction(b));
-    Some(c.abs().atan2(d).to_degrees())
+    Some(libm::atan2(c.abs(), d).to_degrees())
 }
 
 /// The line of impact at `deg` degrees from `+x`, as `collide solve --normal DEGdeg` takes it:
@@ -277,7 +277,7 @@ impl Impact {
     }
 
     fn value(&self, col: Col) -> Option<f64> {
-        let speed = |w: [f64; 2]| w[0].hypot(w[1]);
+        let speed = |w: [f64; 2]| libm::hypot(w[0], w[1]);
         Some(match col {
             Col::Fin(i, k) => self.fin[i][k],
             Col::Speed(i) => speed(self.fin[i]),
@@ -286,7 +286,7 @@ impl Impact {
                 if w == [0.0, 0.0] {
                     return None;
                 }
-                w[1].atan2(w[0]).to_degrees()
+                libm::atan2(w[1], w[0]).to_degrees()
             }
             Col::Turned(i) => between(self.v[i], self.fin[i]).unwrap_or(0.0),
             Col::Between => between(self.fin[0], self.fin[1])?,
@@ -358,7 +358,7 @@ impl Kind for PlaneSweep {
                 Knob::Mass(i) => s.m[i] = x,
                 Knob::Velocity(i) => {
                     let w = s.v[i];
-                    let len = w[0].hypot(w[1]);
+                    let len = libm::hypot(w[0], w[1]);
                     s.v[i] = if len > 0.0 {
                         [x * (w[0] / len), x * (w[1] / len)]
                     } else {

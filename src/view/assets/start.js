@@ -1,0 +1,40 @@
+  // ---------------------------------------------------------------- start
+  const controls = () => document.querySelectorAll("#case-form input, #plane-form input, #plane-form select, #plane input[name=\"p-key\"], #track-form input, #track-form select, #plane-svg, #pucks-svg");
+  function setEnabled(on) {
+    for (const c of controls()) {
+      if (c.tagName.toLowerCase() === "svg") c.setAttribute("aria-disabled", String(!on));
+      else c.disabled = !on;
+    }
+  }
+
+  setupCaseInputs();
+  setupDrag();
+  setupDual();
+  setupPlane();
+  setupStack();
+  setupCopy();
+  renderCase();
+  renderPlane();
+  renderStack();
+  setEnabled(false);
+  if ((data.setup.focus === "stack" || data.setup.focus === "plane") && !location.hash) $(data.setup.focus).scrollIntoView();
+
+  loadCore().then((ask) => {
+    core = ask;
+    // The core must give the very answers collide wrote into the page.
+    for (const [op, request, written] of [["solve", Object.assign({ op: "solve" }, data.setup.case), data.answers.solve],
+      ["plane", Object.assign({ op: "plane" }, data.setup.plane), data.answers.plane],
+      ["track", Object.assign({ op: "track" }, data.setup.track), data.answers.track]]) {
+      const again = core(request);
+      if (JSON.stringify(again) !== JSON.stringify(written)) {
+        console.error("collide view: the WebAssembly core and the collide binary disagree on the " + op + " request", again, written);
+      }
+    }
+    setEnabled(true);
+    view.ready = true;
+    $("status").textContent = "Ready: collide's WebAssembly core computes every change you make.";
+  }).catch((e) => {
+    $("status").textContent = "The WebAssembly core could not start (" + e.message + "): the numbers shown are the ones collide wrote; nothing can be changed.";
+    $("status").classList.add("bad");
+    console.error("collide view:", e);
+  });

@@ -1,0 +1,439 @@
+  // ---------------------------------------------------------------- the two-body case
+  const caseFields = ["m1", "m2", "v1", "v2", "e"];
+  let caseAnswer = data.answers.solve; // the last good answer
+  let caseState = null; // its JSON, parsed
+  const plane = { map: null, keep: false, dragging: null, animation: 0 };
+
+  function caseRequest(frame) {
+    const r = { op: "solve" };
+    const tensor = $("inertia").value.trim();
+    if (tensor) r.inertia = tensor;
+    for (const f of caseFields) {
+      if (tensor && (f === "m1" || f === "m2")) continue;
+      r[f] = $(f).value;
+    }
+    r.frame = frame === undefined ? currentFrame() : frame;
+    r.reverse = $("reverse").checked;
+    return r;
+  }
+  function currentFrame() {
+    const checked = document.querySelector('input[name="frame"]:checked');
+    return checked ? checked.value : "lab";
+  }
+
+  // Solves the case on screen and redraws; `keepMap` keeps the plane's scale (a drag).
+  function solveCase(keepMap) {
+    if (!core) return null;
+    const answer = core(caseRequest());
+    showCaseError(answer);
+    if (!answer.ok) return answer;
+    caseAnswer = answer;
+    plane.keep = !!keepMap;
+    renderCase();
+    return answer;
+  }
+
+  function showCaseError(answer) {
+    const ids = {};
+    for (const f of caseFields.concat(["inertia", "reverse"])) ids[f] = f;
+    showError(answer, ids, "m1", "case-error", ["state", "command", "scene"]);
+  }
+
+
+  function renderCase() {
+    caseState = JSON.parse(caseAnswer.state);
+    drawPlane(caseAnswer.picture);
+    drawNumbers(caseAnswer.picture);
+    drawDual(caseAnswer.picture);
+    $("state").textContent = caseAnswer.state;
+    $("command").textContent = caseAnswer.command;
+    $("scene").textContent = caseAnswer.scene;
+  }
+
+  // The data box the plane shows: square, around the origin and everything drawn.
+  function fitPlane(pictures) {
+    return fitVelocityPlane(pictures, $("zoom").checked, (p, add) => {
+      if (p.reverse) [p.reverse.in, p.reverse.fin].forEach(add);
+      if ($("overlay").checked) for (const f of p.frames) [f.in, f.com, f.fin].forEach(add);
+    });
+  }
+
+  function frameWords(name) {
+    const f = caseAnswer.picture.frames.find((x) => x.name === name);
+    return f ? f.label : "observer at " + name;
+  }
+
+  function drawPlane(p, frameLabel) {
+    const svg = $("plane-svg");
+    if (!plane.keep || !plane.map) plane.map = fitPlane([p]);
+    const map = plane.map;
+    clear(svg);
+    svg.setAttribute("data-origin-x", map.ox);
+    svg.setAttribute("data-origin-y", map.oy);
+    svg.setAttribute("data-scale", map.s);
+    svg.setAttribute("data-step", snapStep(map));
+    svg.setAttribute("data-w", p.w);
+    const m = p.inertia;
+    const tensor = m[0][1] === 0 && m[1][0] === 0
+      ? "diag(" + short(m[0][0]) + ", " + short(m[1][1]) + ")"
+      : "[[" + m.map((r) => r.map(short).join(", ")).join("], [") + "]]";
+    const title = "M = " + tensor + ",  e = " + (frameLabel ? short(p.e) : $("e").value.trim()) + ",  " + (frameLabel || frameWords(currentFrame())) + " frame";
+    velocityPlane(svg, p, map, { title, under: (g, X, Y) => {
+      // The other frames, faint (Fig. 2.5).
+      if ($("overlay").checked) {
+        const o = el(g, "g", { opacity: 0.45 });
+        for (const f of p.frames) {
+          if (Math.abs(f.w - p.w) <= 1e-12 * (Math.abs(f.w) + Math.abs(p.w))) continue;
+          el(o, "line", { x1: r2(X(f.in[0])), y1: r2(Y(f.in[1])), x2: r2(X(f.fin[0])), y2: r2(Y(f.fin[1])), stroke: "#6b7280", "stroke-dasharray": "3 4" });
+          for (const [v, c] of [[f.in, "var(--in)"], [f.com, "var(--com)"], [f.fin, "var(--fin)"]]) el(o, "circle", { cx: r2(X(v[0])), cy: r2(Y(v[1])), r: 3.5, fill: c });
+          el(o, "text", { x: r2(X(f.com[0]) + 7), y: r2(Y(f.com[1]) + 4), class: "tick" }, f.name);
+        }
+      }
+      // The time reverse: IN' = -FIN, FIN' = -IN.
+      if (p.reverse) {
+        const rv = p.reverse;
+        el(g, "line", { x1: r2(X(rv.in[0])), y1: r2(Y(rv.in[1])), x2: r2(X(rv.fin[0])), y2: r2(Y(rv.fin[1])), stroke: "var(--rev)", "stroke-dasharray": "4 4", "stroke-width": 1.5 });
+        for (const v of [rv.in, rv.fin]) el(g, "circle", { cx: r2(X(v[0])), cy: r2(Y(v[1])), r: 5, fill: "#fff", stroke: "var(--rev)", "stroke-width": 2 });
+      }
+    }, more: (point) => {
+      if (p.reverse) {
+        point(p.reverse.in, "var(--rev)", "IN\u2032", "point-rev-in", 0.1);
+        point(p.reverse.fin, "var(--rev)", "FIN\u2032", "point-rev-fin", 0.1);
+      }
+    } });
+  }
+
+  function drawNumbers(p) {
+    const s = caseState;
+    const box = $("case-numbers");
+    clear(box);
+    const table = (caption, head, rows) => {
+      const t = document.createElement("table");
+      const c = t.createCaption();
+      c.innerHTML = caption;
+      const h = t.createTHead().insertRow();
+      for (const x of head) { const th = document.createElement("th"); th.innerHTML = x; h.appendChild(th); }
+      const body = t.createTBody();
+      for (const r of rows) {
+        const tr = body.insertRow();
+        r.forEach((x, i) => {
+          const cell = i === 0 ? document.createElement("th") : tr.insertCell();
+          if (i === 0) { cell.innerHTML = x; cell.scope = "row"; tr.appendChild(cell); } else { cell.textContent = typeof x === "number" ? num(x) : x; }
+        });
+      }
+      box.appendChild(t);
+    };
+    table("Velocities", ["", "V<sub>1</sub>", "V<sub>2</sub>"], [
+      ['<span class="c-in">IN</span>', s.in[0], s.in[1]],
+      ['<span class="c-com">COM</span>', s.com[0], s.com[1]],
+      ['<span class="c-fin">FIN</span>', s.fin[0], s.fin[1]],
+    ]);
+    const en = s.energy;
+    const rows = [
+      ['<span class="c-in">KE<sub>IN</sub></span>', en.in],
+      ['<span class="c-com">KE<sub>COM</sub></span>', en.com],
+      ['<span class="c-fin">KE<sub>FIN</sub></span>', en.fin],
+      ["crunch = KE<sub>IN</sub> &minus; KE<sub>COM</sub>", en.crunch],
+    ];
+    if (en.lost !== undefined) rows.push(["lost = (1 &minus; e<sup>2</sup>) crunch", en.lost]);
+    if (en.released !== undefined) rows.push(["released = (e<sup>2</sup> &minus; 1) crunch", en.released]);
+    table("Energy" + (s.units ? " (" + s.units.energy + ")" : ""), ["", ""], rows);
+    const f = s.forms;
+    table("Quadratic forms", ["", ""], [
+      ["V<sub>COM</sub>&middot;M&middot;V<sub>IN</sub>", f.com_m_in],
+      ["V<sub>FIN</sub>&middot;M&middot;V<sub>IN</sub>", f.fin_m_in],
+      ["V<sub>IN</sub>&middot;M&middot;V<sub>IN</sub>", f.in_m_in],
+      ["V<sub>FIN</sub>&middot;M&middot;V<sub>FIN</sub>", f.fin_m_fin],
+    ]);
+    const [k1, k2, P] = p.line;
+    const kind = p.e === 1 ? "elastic, ka-bong" : p.e === 0 ? "totally inelastic, ka-runch" : p.e > 1 ? "superelastic" : "ka-whump";
+    const para = (html) => { const x = document.createElement("p"); x.innerHTML = html; box.appendChild(x); };
+    para('<span class="c-p">Momentum line</span> <span class="num">' + num(k1) + " V<sub>1</sub> + " + num(k2) + " V<sub>2</sub> = " + num(P) + "</span>");
+    para("V<sub>COM</sub> = <span class=\"num\">" + num(s.v_com) + "</span>; e = <span class=\"num\">" + num(s.restitution) + "</span> (" + kind + ")");
+    if (s.frame) para("Seen from the " + frameWords(s.frame.name) + " frame: observer at w = <span class=\"num\">" + num(s.frame.w) + "</span>");
+    if (!s.approaching) para("V<sub>1</sub> &le; V<sub>2</sub>: body 1 does not catch body 2 (they collide only if body 1 starts on the right).");
+    if (s.reverse) {
+      para('<span class="c-rev">Time reverse</span>: IN&prime; = (<span class="num">' + num(s.reverse.in[0]) + ", " + num(s.reverse.in[1]) +
+        "</span>), FIN&prime; = (<span class=\"num\">" + num(s.reverse.fin[0]) + ", " + num(s.reverse.fin[1]) + "</span>), e&prime; = 1/e = <span class=\"num\">" +
+        num(s.reverse.restitution) + "</span>; " + (s.reverse.equals_original ? "the same collision again" : "not the original collision"));
+    }
+  }
+
+  // Animates the 45-degree shift from the frame on screen to `name`: the core solves the case
+  // seen by observers moving at velocities between the two frames' (each a frame of its own).
+  function changeFrame(name) {
+    if (!core) return;
+    const from = caseAnswer.picture;
+    const end = core(caseRequest(name));
+    showCaseError(end);
+    if (!end.ok) return;
+    const w0 = from.w, w1 = end.picture.w;
+    cancelAnimationFrame(plane.animation);
+    if (reduceMotion || w0 === w1) {
+      caseAnswer = end; plane.keep = false; renderCase();
+      return;
+    }
+    plane.map = fitPlane([from, end.picture]);
+    plane.keep = true;
+    const duration = 700;
+    let t0 = null;
+    const step = (now) => {
+      if (t0 === null) t0 = now;
+      const u = Math.min(1, (now - t0) / duration);
+      if (u >= 1) {
+        caseAnswer = end; renderCase();
+        return;
+      }
+      const s = u < 0.5 ? 2 * u * u : 1 - 2 * (1 - u) * (1 - u);
+      const w = w0 + (w1 - w0) * s;
+      const mid = core(caseRequest(String(w)));
+      if (mid.ok) {
+        drawPlane(mid.picture, "observer at " + short(w));
+        drawDual(mid.picture);
+      }
+      plane.animation = requestAnimationFrame(step);
+    };
+    plane.animation = requestAnimationFrame(step);
+  }
+
+  // Moves IN to a point of the plane (in the frame on screen), snapped to the step.
+  function moveIn(x, y) {
+    const t0 = performance.now();
+    const map = plane.map;
+    const step = snapStep(map);
+    const w = caseAnswer.picture.w;
+    $("v1").value = snapText(x + w, step);
+    $("v2").value = snapText(y + w, step);
+    const answer = solveCase(true);
+    const ms = performance.now() - t0;
+    view.lastUpdateMs = ms;
+    view.timings.push(ms);
+    return answer;
+  }
+
+  function planePoint(ev) {
+    const svg = $("plane-svg");
+    const rect = svg.getBoundingClientRect();
+    const vb = svg.viewBox.baseVal;
+    const X = (ev.clientX - rect.left) * vb.width / rect.width;
+    const Y = (ev.clientY - rect.top) * vb.height / rect.height;
+    return [(X - plane.map.ox) / plane.map.s, (plane.map.oy - Y) / plane.map.s];
+  }
+
+  function setupDrag() {
+    const svg = $("plane-svg");
+    let pending = null, queued = false;
+    const flush = () => {
+      queued = false;
+      if (pending && plane.dragging) { const [x, y] = planePoint(pending); pending = null; moveIn(x, y); }
+    };
+    svg.addEventListener("pointerdown", (ev) => {
+      if (!core || ev.button !== 0) return;
+      cancelAnimationFrame(plane.animation);
+      plane.dragging = true;
+      svg.setPointerCapture(ev.pointerId);
+      svg.classList.add("dragging");
+      svg.focus({ preventScroll: true });
+      pending = ev;
+      flush();
+      ev.preventDefault();
+    });
+    svg.addEventListener("pointermove", (ev) => {
+      if (!plane.dragging) return;
+      pending = ev;
+      if (!queued) { queued = true; requestAnimationFrame(flush); }
+    });
+    const end = (ev) => {
+      if (!plane.dragging) return;
+      if (ev.type === "pointerup") pending = ev;
+      flush();
+      plane.dragging = false;
+      svg.classList.remove("dragging");
+    };
+    svg.addEventListener("pointerup", end);
+    svg.addEventListener("pointercancel", end);
+    svg.addEventListener("keydown", (ev) => {
+      const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowDown: [0, -1], ArrowUp: [0, 1] }[ev.key];
+      if (!d || !core) return;
+      ev.preventDefault();
+      const step = snapStep(plane.map) * (ev.shiftKey ? 10 : 1);
+      const p = caseAnswer.picture;
+      const x = p.in[0] + d[0] * step, y = p.in[1] + d[1] * step;
+      const b = plane.map.box;
+      if (x < b.x0 || x > b.x1 || y < b.y0 || y > b.y1) plane.map = fitPlane([p]);
+      moveIn(x, y);
+    });
+  }
+
+  // Sliders and typed values: the slider follows a typed value, a typed value follows the slider.
+  function setupCaseInputs() {
+    const c = data.setup.case;
+    for (const f of caseFields) $(f).value = c[f];
+    $("inertia").value = c.inertia || "";
+    $("reverse").checked = !!c.reverse;
+    buildFrames(c.frame);
+    syncSliders();
+    const typed = () => { syncSliders(); solveCase(false); };
+    for (const f of caseFields.concat(["inertia"])) $(f).addEventListener("input", typed);
+    for (const f of ["m1", "m2"]) {
+      $(f + "-range").addEventListener("input", () => {
+        $(f).value = String(Number(Math.pow(10, Number($(f + "-range").value)).toPrecision(3)));
+        solveCase(false);
+      });
+    }
+    $("e-range").addEventListener("input", () => { $("e").value = String(Number($("e-range").value)); solveCase(false); });
+    $("reverse").addEventListener("change", () => solveCase(false));
+    $("overlay").addEventListener("change", () => solveCase(false));
+    $("zoom").addEventListener("change", () => solveCase(false));
+  }
+  function syncSliders() {
+    const tensor = $("inertia").value.trim() !== "";
+    for (const f of ["m1", "m2"]) $(f).closest(".field").classList.toggle("unused", tensor);
+    for (const f of ["m1", "m2"]) {
+      const v = valueOf($(f).value);
+      if (v > 0) $(f + "-range").value = String(Math.log10(v));
+    }
+    const e = valueOf($("e").value);
+    if (e >= 0) $("e-range").value = String(e);
+  }
+  function buildFrames(selected) {
+    const box = $("frame-choices");
+    clear(box);
+    const frames = data.answers.solve.picture.frames.map((f) => [f.name, f.label]);
+    if (!frames.some((f) => f[0] === selected)) frames.push([selected, "observer at " + selected]);
+    for (const [name, label] of frames) {
+      const l = document.createElement("label");
+      const i = document.createElement("input");
+      i.type = "radio"; i.name = "frame"; i.value = name; i.checked = name === selected;
+      i.addEventListener("change", () => { if (i.checked) changeFrame(name); });
+      l.appendChild(i);
+      l.appendChild(document.createTextNode(label === "COM" ? "COM" : label));
+      box.appendChild(l);
+    }
+  }
+
+  // ---------------------------------------------------------------- the dual panel
+  const dual = { t: -1, picture: null };
+
+  function drawDual(p) {
+    dual.picture = p;
+    const v = p.in, f = p.fin;
+    const reach = Math.max(Math.abs(v[0]), Math.abs(v[1]), Math.abs(f[0]), Math.abs(f[1])) * 1.1 || 1;
+    const tBox = [-1.1, 1.1];
+    const x = (i, t) => (t < 0 ? v[i] * t : f[i] * t);
+    const colours = ["var(--body1)", "var(--body2)"];
+    const area = { x: 46, y: 16, w: 262, h: 244 };
+    // Newton: t across, x up. Minkowski: x across, t up.
+    for (const [id, newton] of [["newton-svg", true], ["minkowski-svg", false]]) {
+      const svg = $(id);
+      clear(svg);
+      const box = newton ? { x0: tBox[0], x1: tBox[1], y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: tBox[0], y1: tBox[1] };
+      const a = frameAxes(svg, area, box, newton ? ["t", "x"] : ["x", "t"]);
+      const at = (t, xx) => (newton ? [a.X(t), a.Y(xx)] : [a.X(xx), a.Y(t)]);
+      for (let i = 0; i < 2; i++) {
+        el(svg, "polyline", { points: pts([at(-1, x(i, -1)), at(0, 0), at(1, x(i, 1))]), fill: "none", stroke: colours[i], "stroke-width": 2.2 });
+      }
+      const g = el(svg, "g", { class: "cursor" });
+      g.dataset.newton = newton ? "1" : "0";
+    }
+    // Space vs Space: x2 against x1, or scaled by M^(1/2).
+    const svg = $("space-svg");
+    clear(svg);
+    const scaled = $("scaled").checked;
+    const S = p.sqrt_m;
+    const map2 = (x1, x2) => (scaled ? [S[0][0] * x1 + S[0][1] * x2, S[1][0] * x1 + S[1][1] * x2] : [x1, x2]);
+    const path = [map2(-v[0], -v[1]), [0, 0], map2(f[0], f[1])];
+    let r = 0;
+    for (const q of path) r = Math.max(r, Math.abs(q[0]), Math.abs(q[1]));
+    r = r * 1.1 || 1;
+    const sq = { x: 52, y: 16, w: 244, h: 244 };
+    const diag = p.inertia[0][1] === 0;
+    const a = frameAxes(svg, sq, { x0: -r, x1: r, y0: -r, y1: r },
+      scaled ? (diag ? ["\u221aM\u2081 x\u2081", "\u221aM\u2082 x\u2082"] : ["(M\u00bd x)\u2081", "(M\u00bd x)\u2082"]) : ["x\u2081", "x\u2082"]);
+    // The collision line x1 = x2 (through the origin along M^(1/2) (1, 1) when scaled).
+    const d = map2(1, 1);
+    const line = clipLine(d[1], -d[0], 0, { x0: -r, x1: r, y0: -r, y1: r });
+    if (line) el(svg, "line", { x1: r2(a.X(line[0][0])), y1: r2(a.Y(line[0][1])), x2: r2(a.X(line[1][0])), y2: r2(a.Y(line[1][1])), stroke: "#9ca3af", "stroke-width": 1.6, "stroke-dasharray": "6 4" });
+    el(svg, "polyline", { points: pts(path.map((q) => [a.X(q[0]), a.Y(q[1])])), fill: "none", stroke: "var(--rev)", "stroke-width": 2.2 });
+    const note = !scaled ? "on the dashed line x\u2081 = x\u2082 the bodies meet"
+      : p.e === 1 ? "e = 1: the path reflects in the dashed line" : "only e = 1 reflects the path in the line";
+    el(svg, "text", { x: sq.x + 6, y: sq.y + sq.h - 8, class: "tick", "paint-order": "stroke", stroke: "#fff", "stroke-width": 3 }, note);
+    dual.map = { reach, x, map2, space: a };
+    drawDualTime();
+  }
+
+  function drawDualTime() {
+    const p = dual.picture;
+    if (!p) return;
+    const t = dual.t;
+    const { reach, x, map2, space } = dual.map;
+    const colours = ["var(--body1)", "var(--body2)"];
+    const area = { x: 46, y: 16, w: 262, h: 244 };
+    for (const id of ["newton-svg", "minkowski-svg"]) {
+      const svg = $(id);
+      const g = svg.querySelector(".cursor");
+      const newton = g.dataset.newton === "1";
+      clear(g);
+      const bx = newton ? { x0: -1.1, x1: 1.1, y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: -1.1, y1: 1.1 };
+      const X = (u) => area.x + (u - bx.x0) * area.w / (bx.x1 - bx.x0);
+      const Y = (u) => area.y + (bx.y1 - u) * area.h / (bx.y1 - bx.y0);
+      if (newton) el(g, "line", { x1: r2(X(t)), x2: r2(X(t)), y1: area.y, y2: area.y + area.h, stroke: "#111827", "stroke-opacity": 0.35 });
+      else el(g, "line", { x1: area.x, x2: area.x + area.w, y1: r2(Y(t)), y2: r2(Y(t)), stroke: "#111827", "stroke-opacity": 0.35 });
+      for (let i = 0; i < 2; i++) {
+        const [cx, cy] = newton ? [X(t), Y(x(i, t))] : [X(x(i, t)), Y(t)];
+        el(g, "circle", { cx: r2(cx), cy: r2(cy), r: 5, fill: colours[i], stroke: "#fff", "stroke-width": 1.5 });
+      }
+    }
+    const sp = $("space-svg");
+    let dot = sp.querySelector("#space-dot");
+    const q = map2(x(0, t), x(1, t));
+    if (!dot) dot = el(sp, "circle", { id: "space-dot", r: 5.5, fill: "var(--rev)", stroke: "#fff", "stroke-width": 1.5 });
+    dot.setAttribute("cx", r2(space.X(q[0])));
+    dot.setAttribute("cy", r2(space.Y(q[1])));
+    drawRail(p, t, reach, x);
+    $("dual-time").value = String(t);
+    $("dual-time-out").textContent = "t = " + minus(t.toFixed(3));
+  }
+
+  function drawRail(p, t, reach, x) {
+    const svg = $("rail-svg");
+    clear(svg);
+    const L = 30, R = 930, car = 84;
+    const X = (u) => L + car + (u + reach) * (R - L - 2 * car) / (2 * reach);
+    el(svg, "line", { x1: L, x2: R, y1: 86, y2: 86, stroke: "#6b7280", "stroke-width": 3 });
+    for (const u of ticks(-reach, reach, 8)) {
+      el(svg, "line", { x1: r2(X(u)), x2: r2(X(u)), y1: 86, y2: 92, stroke: "#6b7280" });
+      el(svg, "text", { x: r2(X(u)), y: 105, "text-anchor": "middle", class: "tick" }, short(u));
+    }
+    const m = p.inertia;
+    const bodies = [
+      { left: X(x(0, t)) - car, colour: "var(--body1)", name: "1", mass: m[0][0], v: t < 0 ? p.in[0] : p.fin[0] },
+      { left: X(x(1, t)), colour: "var(--body2)", name: "2", mass: m[1][1], v: t < 0 ? p.in[1] : p.fin[1] },
+    ];
+    for (const b of bodies) {
+      el(svg, "rect", { x: r2(b.left), y: 46, width: car, height: 36, rx: 7, fill: b.colour, "fill-opacity": 0.88 });
+      el(svg, "circle", { cx: r2(b.left + 18), cy: 84, r: 6, fill: "#1f2937" });
+      el(svg, "circle", { cx: r2(b.left + car - 18), cy: 84, r: 6, fill: "#1f2937" });
+      el(svg, "text", { x: r2(b.left + car / 2), y: 69, "text-anchor": "middle", fill: "#fff", class: "label" }, "M" + (b.name === "1" ? "\u2081" : "\u2082") + " " + short(b.mass));
+      const dir = b.v >= 0 ? 1 : -1;
+      const cx = b.left + car / 2;
+      if (b.v !== 0) {
+        el(svg, "line", { x1: r2(cx - dir * 18), x2: r2(cx + dir * 18), y1: 30, y2: 30, stroke: b.colour, "stroke-width": 2.2 });
+        el(svg, "polygon", { points: pts([[cx + dir * 24, 30], [cx + dir * 16, 25], [cx + dir * 16, 35]]), fill: b.colour });
+      }
+      el(svg, "text", { x: r2(cx), y: 18, "text-anchor": "middle", class: "tick" }, "V = " + short(b.v));
+    }
+    el(svg, "text", { x: L, y: 16, class: "title" }, t < 0 ? "before: IN" : t > 0 ? "after: FIN" : "the collision");
+  }
+
+  function setupDual() {
+    // Two units of time (t from -1 to 1) in four seconds, round and round.
+    player($("dual-play"), (dt) => {
+      dual.t += dt / 2;
+      if (dual.t > 1) dual.t = -1;
+      drawDualTime();
+    });
+    $("dual-time").addEventListener("input", () => { dual.t = Number($("dual-time").value); drawDualTime(); });
+    $("scaled").addEventListener("change", () => drawDual(caseAnswer.picture));
+  }
+
