@@ -32,7 +32,6 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     } else {
         args.show.clone()
     });
-    sections.asked = !args.show.is_empty();
     sections.contact_time = args.contact_time.clone();
     let units = posed.units().clone();
     sections.heights = Some(collide::values::units::HeightScale::new(

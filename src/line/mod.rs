@@ -1,8 +1,8 @@
 //! The rail (lecture Secs. 1-4): two bodies on a line, the momentum line meeting the energy
 //! ellipse with an explicit inertia tensor `M`.
 //!
-//! Physics first (`inertia`, `restitution`, `collision`, `ellipse`, `changes`, `separation`,
-//! `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `frame`). The plane and
+//! Physics first (`inertia`, `restitution`, `collision`, `order`, `ellipse`, `changes`,
+//! `separation`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `frame`). The plane and
 //! space (`crate::space`) build on this layer: the normal parts of a smooth contact collide by its
 //! 1D rule.
 
@@ -11,6 +11,7 @@ pub mod changes;
 pub mod collision;
 pub mod ellipse;
 pub mod inertia;
+pub mod order;
 pub mod restitution;
 pub mod separation;
 pub mod wall;

@@ -273,19 +273,13 @@ fn starts_together(x: &[Q; 7]) -> bool {
 }
 
 /// With `V1 = V2`, whether the bodies come apart (`f1 != f2`): an explosion or recoil, where
-/// `e` is undefined; if they stay together nothing happened and `e` is not determined.
+/// `e` is undefined; if they stay together nothing happened and `e` is not determined. Either
+/// piece may end up on the right (`line::order`: the one faster in `+x`), whichever was typed
+/// first.
 fn apart(x: &[Q; 7], what: &str) -> Result<bool, UnknownError> {
     if x[Var::F1 as usize] == x[Var::F2 as usize] {
         return Err(UnknownError::Many(format!(
             "V1 = V2 and f1 = f2: the bodies never meet or push apart, so {what} is not determined"
-        )));
-    }
-    if x[Var::F1 as usize] > x[Var::F2 as usize] {
-        return Err(UnknownError::Unphysical(format!(
-            "f1 = {} > f2 = {} after starting together: body 1 (on the left) would pass through \
-             body 2",
-            crate::values::quantity::fraction(&x[Var::F1 as usize]),
-            crate::values::quantity::fraction(&x[Var::F2 as usize])
         )));
     }
     Ok(true)
@@ -384,6 +378,11 @@ mod tests {
         );
         let e = run(["4", "1", "60", "10", "55", "30", "?"]).unwrap_err();
         assert!(e.to_string().contains("pass through each other"), "{e}");
+        // A rifle (4 kg) fires a 10 g bullet from rest, the bullet typed first at +550 m/s:
+        // 0 = 0.01 * 550 + 4 f2, f2 = -5.5/4 = -11/8 (the bullet ends up on the right).
+        let s = run(["0.01", "4", "0", "0", "550", "?", "?"]).unwrap();
+        assert!(s.separation);
+        assert_eq!(show(&s, Var::F2), "-11/8");
         // e = 0 with a mass and an IN velocity unknown: restitution cannot fix the velocity.
         let e = run(["?", "1", "?", "10", "50", "50", "0"]).unwrap_err();
         assert!(matches!(e, UnknownError::Many(_)), "{e}");

@@ -81,7 +81,7 @@ impl Section {
     /// The JSON key this section's values live under (`vectors` are at the top level).
     pub fn json_keys(self) -> &'static [&'static str] {
         match self {
-            Section::Vectors => &["in", "com", "fin", "v_com", "approaching"],
+            Section::Vectors => &["in", "com", "fin", "v_com", "approaching", "left"],
             Section::Momentum => &["momentum"],
             Section::Forms => &["forms"],
             Section::Energy => &["energy"],
@@ -117,9 +117,6 @@ pub struct Sections {
     pub energy_scale: Option<Q>,
     /// The factor from the case's force unit to newtons (`Units::force_scale`).
     pub force_scale: Option<Q>,
-    /// The sections were asked for (`--show`), not the default: a pair that moves apart then
-    /// gets the FIN it would have if body 1 were on the right, not the note alone.
-    pub asked: bool,
 }
 
 impl Sections {
@@ -138,7 +135,6 @@ impl Sections {
             heights: None,
             energy_scale: None,
             force_scale: None,
-            asked: false,
         }
     }
     pub fn contains(&self, s: Section) -> bool {
@@ -211,10 +207,13 @@ pub struct Vectors<N = f64> {
     pub com: [N; 2],
     pub fin: [N; 2],
     pub v_com: N,
-    /// `V1 > V2` at IN: body 1 (on the left) catches body 2. False: they move apart, unless
-    /// body 1 is on the right (the velocities may be in the wrong order).
+    /// The bodies meet: `V1 != V2` at IN (on a rail with no positions, the body faster in `+x`
+    /// is behind it, whichever was typed first: `line::order`). False only for `V1 = V2`.
     #[serde(default)]
     pub approaching: bool,
+    /// `2` when body 2 is on the left (`V1 < V2`: it catches body 1); absent when body 1 is.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub left: Option<u8>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
@@ -569,7 +568,8 @@ impl<N: Scalar> Report<N> {
                     com: [v_com.clone(), v_com.clone()],
                     fin: fin(),
                     v_com,
-                    approaching: c.approaching(),
+                    approaching: c.order().meet(),
+                    left: c.order().left_when_body_2(),
                 }
             }),
             momentum: has(Section::Momentum).then(|| Momentum {
@@ -750,14 +750,8 @@ impl AnyReport {
     /// what the unknowns `solved` came out as and, for a case with units, the answer.
     pub fn text(&self, case: &Case, show: &Sections, solved: Option<&Solved>) -> String {
         let (head, body) = match self {
-            AnyReport::Binary64(r) => (
-                text::answer(case, r),
-                text::render(case, &r.only(show), show),
-            ),
-            AnyReport::Exact(r) => (
-                text::answer(case, r),
-                text::render(case, &r.only(show), show),
-            ),
+            AnyReport::Binary64(r) => (text::answer(case, r), text::render(case, &r.only(show))),
+            AnyReport::Exact(r) => (text::answer(case, r), text::render(case, &r.only(show))),
         };
         let exact = matches!(self, AnyReport::Exact(_));
         let mut out = solved.map_or_else(String::new, |s| solved::lines(s, exact, &case.units));

@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use super::text::{Block, changes, header_units, pair, parts, typed};
 use super::{ChangeReport, Section, Sections};
+use crate::line::order::Order;
 use crate::line::separation::Separation;
 use crate::values::quantity::Scalar;
 
@@ -21,6 +22,10 @@ pub struct SeparationReport<N> {
     pub com: [N; 2],
     pub fin: [N; 2],
     pub v_com: N,
+    /// `2` when body 2 ends up on the left (`f1 > f2`: body 1 moves off to the right of it);
+    /// absent when body 1 does (`line::order`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub left: Option<u8>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub momentum: Option<SeparationMomentum<N>>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -68,6 +73,7 @@ impl<N: Scalar> SeparationReport<N> {
             com: [v.clone(), v.clone()],
             fin: two(&s.fin),
             v_com: v,
+            left: Order::after(&s.fin[0], &s.fin[1]).left_when_body_2(),
             momentum: has(Section::Momentum).then(|| SeparationMomentum {
                 p_in: two(&s.momentum(&s.v_in())),
                 fin: two(&s.momentum(&s.fin)),
@@ -111,6 +117,9 @@ impl<N: Scalar> SeparationReport<N> {
                 format!("V_COM = {} (unchanged)", self.v_com.show()),
             );
             b.row("FIN  V_FIN", pair(&self.fin), "as given or solved");
+            if self.left == Some(2) {
+                b.row("", "", "f1 > f2: body 1 moves off to the right of body 2");
+            }
             b.render(&mut out);
         }
         let shown = |x| sections.contains(x);

@@ -491,6 +491,7 @@ fn separation_key(top: &str) -> Result<(), ExpectError> {
         "com",
         "fin",
         "v_com",
+        "left",
         "momentum.*",
         "energy.*",
         "changes.*",

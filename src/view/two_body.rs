@@ -69,7 +69,11 @@ pub struct Picture {
     pub v_in: [f64; 2],
     pub com: [f64; 2],
     pub fin: [f64; 2],
+    /// The bodies meet (`V1 != V2`; the body faster in `+x` is on the left).
     pub approaching: bool,
+    /// `2` when body 2 is on the left (`V1 < V2`); absent when body 1 is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub left: Option<u8>,
     /// The momentum line `k1 V1 + k2 V2 = P_total`, as `[k1, k2, P_total]`.
     pub line: [f64; 3],
     /// The IN, COM and FIN energy ellipses `1/2 V.M.V = KE`.
@@ -293,6 +297,7 @@ fn picture(
         com: v.com,
         fin: v.fin,
         approaching: v.approaching,
+        left: v.left,
         line: [k1, k2, m.total],
         ellipses: Ellipses {
             e_in: shape(&ell.e_in, energy.ke_in),

@@ -13,6 +13,7 @@ mod hostile;
 mod invariants;
 mod lecture;
 mod metamorphic;
+mod order;
 mod plane;
 mod plane_sweeps;
 mod plot;
