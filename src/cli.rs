@@ -760,11 +760,32 @@ pub struct SolveArgs {
     pub plot: Option<PathBuf>,
 
     #[command(flatten)]
+    pub knowns: KnownArgs,
+
+    #[command(flatten)]
     pub rigid: RigidArgs,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
+}
+
+/// What a homework problem gives beyond masses, velocities and restitution (docs/homework.md).
+#[derive(Args, Debug, Clone, Default)]
+pub struct KnownArgs {
+    /// One body passes through the other (a bullet through a block): only momentum holds, the
+    /// energy lost in the two bodies is reported, and e is no law
+    #[arg(long, conflicts_with = "restitution", help_heading = "Homework knowns")]
+    pub pass_through: bool,
+}
+
+impl KnownArgs {
+    /// The knowns as the library takes them.
+    pub fn knowns(&self) -> collide::line::problem::Knowns {
+        collide::line::problem::Knowns {
+            pass_through: self.pass_through,
+        }
+    }
 }
 
 /// Rigid bodies at impact (docs/rigid.md): a ball (body 1) hits a target or a floor; any of

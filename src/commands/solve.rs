@@ -16,6 +16,14 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
+    if let Some(flag) = args.knowns.knowns().first_flag()
+        && (args.rigid.active() || args.case.spatial())
+    {
+        anyhow::bail!(
+            "{flag} is for two bodies on a rail (not rigid bodies, the plane, space or more than \
+             two bodies)"
+        );
+    }
     if args.rigid.active() {
         return super::rigid_solve::run(&args);
     }
@@ -23,10 +31,9 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         return super::space_solve::run(&args);
     }
     args.frame.on_line()?;
-    let posed = args
-        .case
-        .problem(args.fin.as_ref(), args.exact)?
-        .solve(args.case.inertia.clone())?;
+    let mut problem = args.case.problem(args.fin.as_ref(), args.exact)?;
+    problem.knowns = args.knowns.knowns();
+    let posed = problem.solve(args.case.inertia.clone())?;
     let mut sections = Sections::new(if args.show.is_empty() {
         collide::report::Section::DEFAULT.to_vec()
     } else {
@@ -108,6 +115,9 @@ fn special(
     ];
     if let Some(flag) = extra.into_iter().flatten().next() {
         let what = match event {
+            Special::Separation(s) if s.kind == collide::line::separation::Kind::PassThrough => {
+                "one body passes through the other, and only momentum holds"
+            }
             Special::Separation(_) => {
                 "the bodies start together (V1 = V2) and are pushed apart, a separation with e \
                  undefined"

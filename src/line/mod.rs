@@ -2,7 +2,7 @@
 //! ellipse with an explicit inertia tensor `M`.
 //!
 //! Physics first (`inertia`, `restitution`, `collision`, `order`, `ellipse`, `changes`,
-//! `separation`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `frame`). The plane and
+//! `separation`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `knowns`, `frame`). The plane and
 //! space (`crate::space`) build on this layer: the normal parts of a smooth contact collide by its
 //! 1D rule.
 
@@ -19,5 +19,6 @@ pub mod wall;
 // What the user asked.
 pub mod case;
 pub mod frame;
+pub mod knowns;
 pub mod problem;
 pub mod unknowns;

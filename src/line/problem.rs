@@ -7,9 +7,10 @@ use crate::values::rational::Q;
 
 use crate::line::case::Case;
 use crate::line::inertia::{InertiaError, InertiaTensor, Mass, MassError};
+use crate::line::knowns::Laws;
 use crate::line::restitution::{Restitution, RestitutionError};
-use crate::line::separation::Separation;
-use crate::line::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
+use crate::line::separation::{Kind, Separation};
+use crate::line::unknowns::{Solved, UnknownError, Var};
 use crate::line::wall::{WallCase, WallProblem};
 use crate::values::number::{Given, Number, NumberError};
 use crate::values::units::{Pair, ResolveError, Units, resolve};
@@ -33,6 +34,22 @@ pub struct Problem {
     /// Exact arithmetic follows (`--exact`): a velocity typed as a height whose speed
     /// `sqrt(2 g h)` is irrational is refused, since no rational holds it.
     pub exact: bool,
+    /// What the problem gives beyond masses, velocities and restitution (`line::knowns`).
+    pub knowns: Knowns,
+}
+
+/// Knowns a problem may give beyond masses, velocities and restitution, as typed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Knowns {
+    /// One body passes through the other (`--pass-through`).
+    pub pass_through: bool,
+}
+
+impl Knowns {
+    /// The flag of the first known given, for errors (`None`: none given).
+    pub fn first_flag(&self) -> Option<&'static str> {
+        self.pass_through.then_some("--pass-through")
+    }
 }
 
 /// What a solved problem describes.
@@ -72,6 +89,10 @@ pub enum ProblemError {
     UnknownsOnlyInSolve,
     #[error("a wall (an immovable body) is for `collide solve` (and `collide track --left-wall`)")]
     WallOnlyInSolve,
+    #[error(
+        "{0}: one body is a wall (immovable), so momentum says nothing; {0} needs two movable bodies"
+    )]
+    KnownWithWall(&'static str),
     #[error("two walls: at most one body can be immovable")]
     TwoWalls,
     #[error("a wall needs --masses M1,wall (not --inertia)")]
@@ -180,14 +201,18 @@ impl Problem {
             if inertia.is_some() {
                 return Err(ProblemError::WallNeedsMasses);
             }
+            if let Some(flag) = self.knowns.first_flag() {
+                return Err(ProblemError::KnownWithWall(flag));
+            }
             return self.solve_wall(wall, &m, &v, units);
         }
+        let laws = self.laws(&units)?;
         let e = match &self.restitution {
             Some(r) => r.clone().map(|r| r.number().clone()),
-            None if self.fin.is_some() => Given::Unknown,
+            None if self.fin.is_some() || laws != Laws::default() => Given::Unknown,
             None => Given::Known(Restitution::elastic().number().clone()),
         };
-        if !(self.fin.is_some() || self.has_unknowns()) {
+        if !(self.fin.is_some() || self.has_unknowns() || laws != Laws::default()) {
             let case = build(&m, &v, e, inertia, units)?;
             return Ok(Posed::Collision(case, None));
         }
@@ -207,7 +232,7 @@ impl Problem {
             .chain([e])
             .collect();
         let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
-        let solved = solve_unknowns(exact)?;
+        let solved = crate::line::knowns::solve(exact, &laws)?;
         // A value as typed when it was given (the header repeats it), else its solved fraction.
         let number = |var: Var| -> Result<Given<Number>, ProblemError> {
             if let Some(n) = known[var as usize].known() {
@@ -217,7 +242,7 @@ impl Problem {
         };
         let m = vec![number(Var::M1)?, number(Var::M2)?];
         let v = vec![number(Var::V1)?, number(Var::V2)?];
-        if solved.separation {
+        if solved.separation || solved.pass_through {
             let need =
                 |x: Given<Number>| x.known().cloned().ok_or(ProblemError::UnknownsOnlyInSolve);
             let [m1, m2] = [
@@ -229,6 +254,11 @@ impl Problem {
                 velocities: [need(v[0].clone())?, need(v[1].clone())?],
                 fin: [solved.get(Var::F1).clone(), solved.get(Var::F2).clone()],
                 units,
+                kind: if solved.pass_through {
+                    Kind::PassThrough
+                } else {
+                    Kind::Apart
+                },
             };
             return Ok(Posed::Separation(separation, solved));
         }
@@ -238,6 +268,14 @@ impl Problem {
 }
 
 impl Problem {
+    /// The laws the knowns bring, in the case's units.
+    fn laws(&self, _units: &Units) -> Result<Laws, ProblemError> {
+        Ok(Laws {
+            pass_through: self.knowns.pass_through,
+            impulse: None,
+        })
+    }
+
     /// A ball against a wall (body `wall`): restitution alone, exact.
     fn solve_wall(
         &self,
@@ -321,6 +359,7 @@ impl Problem {
             checks,
             separation: false,
             wall: Some(wall),
+            pass_through: false,
         };
         Ok(Posed::Wall(case, Some(solved)))
     }

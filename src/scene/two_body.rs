@@ -250,6 +250,7 @@ impl Scene {
                 None => None,
             },
             exact: file.exact.unwrap_or(false),
+            knowns: Default::default(),
         };
         let span = file
             .masses

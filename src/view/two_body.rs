@@ -171,6 +171,7 @@ impl CaseInput {
             gravity: None,
             energy_unit: None,
             exact: false,
+            knowns: Default::default(),
         };
         if problem.has_unknowns() {
             return Err(InputError::new(

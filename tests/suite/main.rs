@@ -11,6 +11,7 @@ mod frames;
 mod homework;
 mod hostile;
 mod invariants;
+mod knowns;
 mod lecture;
 mod metamorphic;
 mod order;
