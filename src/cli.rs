@@ -777,6 +777,12 @@ pub struct KnownArgs {
     /// energy lost in the two bodies is reported, and e is no law
     #[arg(long, conflicts_with = "restitution", help_heading = "Homework knowns")]
     pub pass_through: bool,
+
+    /// The impulse on body 2 (signed; on body 1 it is -J), e.g. 12, '12 N s', '2.4 kg m/s':
+    /// a known that replaces one unknown (e is unknown unless given)
+    #[arg(long, value_name = "J", allow_hyphen_values = true, help_heading = "Homework knowns",
+          value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Impulse))]
+    pub impulse: Option<collide::values::derived::Derived>,
 }
 
 impl KnownArgs {
@@ -784,6 +790,7 @@ impl KnownArgs {
     pub fn knowns(&self) -> collide::line::problem::Knowns {
         collide::line::problem::Knowns {
             pass_through: self.pass_through,
+            impulse: self.impulse.clone(),
         }
     }
 }

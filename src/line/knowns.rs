@@ -5,9 +5,9 @@
 //!   collision is a perforation, not a contact: restitution is no law, only momentum holds, and
 //!   the relative velocity keeps its sign, `(f1 - f2)(v1 - v2) > 0`, at most as large as before
 //!   (the energy lost in the two bodies, `1/2 mu ((v1 - v2)^2 - (f1 - f2)^2)`, is not negative).
-//! - `--impulse J`, the impulse on body 2: `J = m2 (f2 - v2)`, and by momentum
-//!   `-J = m1 (f1 - v1)`. With it these two laws replace momentum (their sum), so one more
-//!   value can be unknown.
+//! - `--impulse J`, the impulse on body 2: `J = m2 (f2 - v2)` (law `impulse2`), and by
+//!   momentum `-J = m1 (f1 - v1)` (`impulse1`). With it these two laws replace momentum (their
+//!   sum), so one more value can be unknown.
 //!
 //! Every law is linear in each single value, so the unknowns are found one law at a time (a law
 //! with one unknown left gives it), then, for what remains, two laws in two unknowns by Cramer's
@@ -54,12 +54,12 @@ pub fn solve(known: [Option<Q>; 7], laws: &Laws) -> Result<Solved, UnknownError>
     let mut named: Vec<Named> = Vec::new();
     if laws.impulse.is_some() {
         named.push(Named {
-            name: "the impulse on body 1",
+            name: "impulse1",
             vars: &[Var::M1, Var::V1, Var::F1],
             law: &impulse_1,
         });
         named.push(Named {
-            name: "the impulse on body 2",
+            name: "impulse2",
             vars: &[Var::M2, Var::V2, Var::F2],
             law: &impulse_2,
         });
@@ -178,7 +178,7 @@ pub fn solve(known: [Option<Q>; 7], laws: &Laws) -> Result<Solved, UnknownError>
     })
 }
 
-/// `momentum`, or `the impulse on body 1 and the impulse on body 2 and restitution`.
+/// `momentum`, or `impulse1, impulse2 and restitution` (`impulse1`: the impulse on body 1).
 fn names_of(named: &[Named]) -> String {
     let n: Vec<&str> = named.iter().map(|n| n.name).collect();
     match n[..] {
@@ -278,13 +278,7 @@ mod tests {
         // Everything given but e: both impulses are checked, and hold.
         let s = run(["3", "1", "2", "-1", "6/5", "7/5", "?"], &j).unwrap();
         assert_eq!(show(&s, Var::E), "1/15");
-        assert_eq!(
-            s.checks,
-            vec![
-                ("the impulse on body 1", Q::ZERO),
-                ("the impulse on body 2", Q::ZERO)
-            ]
-        );
+        assert_eq!(s.checks, vec![("impulse1", Q::ZERO), ("impulse2", Q::ZERO)]);
         // An impulse of the wrong sign sends the bodies through each other: J = -1 gives
         // f2 = -2, f1 = 7/3, e = (-2 - 7/3)/3 = -13/9.
         let big = Laws {

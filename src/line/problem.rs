@@ -12,6 +12,7 @@ use crate::line::restitution::{Restitution, RestitutionError};
 use crate::line::separation::{Kind, Separation};
 use crate::line::unknowns::{Solved, UnknownError, Var};
 use crate::line::wall::{WallCase, WallProblem};
+use crate::values::derived::Derived;
 use crate::values::number::{Given, Number, NumberError};
 use crate::values::units::{Pair, ResolveError, Units, resolve};
 
@@ -43,12 +44,15 @@ pub struct Problem {
 pub struct Knowns {
     /// One body passes through the other (`--pass-through`).
     pub pass_through: bool,
+    /// The impulse on body 2 (`--impulse`).
+    pub impulse: Option<Derived>,
 }
 
 impl Knowns {
     /// The flag of the first known given, for errors (`None`: none given).
     pub fn first_flag(&self) -> Option<&'static str> {
-        self.pass_through.then_some("--pass-through")
+        let impulse = self.impulse.as_ref().map(|j| j.kind.flag());
+        self.pass_through.then_some("--pass-through").or(impulse)
     }
 }
 
@@ -116,6 +120,8 @@ pub enum ProblemError {
     },
     #[error(transparent)]
     Resolve(#[from] ResolveError),
+    #[error(transparent)]
+    Derived(#[from] crate::values::derived::DerivedError),
     #[error(transparent)]
     EnergyUnit(#[from] crate::values::units::EnergyUnitError),
     #[error(transparent)]
@@ -269,10 +275,14 @@ impl Problem {
 
 impl Problem {
     /// The laws the knowns bring, in the case's units.
-    fn laws(&self, _units: &Units) -> Result<Laws, ProblemError> {
+    fn laws(&self, units: &Units) -> Result<Laws, ProblemError> {
+        let impulse = match &self.knowns.impulse {
+            Some(j) => Some(j.in_case(units.force_scale().as_ref())?),
+            None => None,
+        };
         Ok(Laws {
             pass_through: self.knowns.pass_through,
-            impulse: None,
+            impulse,
         })
     }
 

@@ -448,23 +448,15 @@ pub enum QuantityError {
     NegativeHeight(String),
 }
 
-/// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
-pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
-    let t = text.trim();
-    if dimension == Dimension::Velocity
-        && let Some(height) = parse_height(t)
-    {
-        return height;
-    }
+/// Splits `4 t`, `60mph`, `12 N s` or `1e3` into its number and the rest (a unit name, trimmed;
+/// empty for a plain number).
+pub fn split_number(t: &str) -> Result<(Number, &str), QuantityError> {
+    let t = t.trim();
     // A whole number (or one that is out of range, or divides by zero) has no unit: its own
     // error is the one to report.
     match t.parse::<Number>() {
         Ok(number) => {
-            return Ok(Quantity {
-                number,
-                unit: None,
-                height: false,
-            });
+            return Ok((number, ""));
         }
         Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.into()),
         Err(_) => {}
@@ -497,7 +489,18 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
             .into());
     };
     let number: Number = t[..i].parse()?;
-    let rest = t[i..].trim();
+    Ok((number, t[i..].trim()))
+}
+
+/// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
+pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
+    let t = text.trim();
+    if dimension == Dimension::Velocity
+        && let Some(height) = parse_height(t)
+    {
+        return height;
+    }
+    let (number, rest) = split_number(t)?;
     let unit = if rest.is_empty() {
         None
     } else {

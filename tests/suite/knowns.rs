@@ -269,3 +269,123 @@ mod pass_through {
         );
     }
 }
+
+mod impulse {
+    use super::*;
+
+    #[test]
+    fn the_impulse_on_a_has_magnitude_12_m_u() {
+        // A-level style (units m = 1, u = 1): A (3m) at 6u hits B (2m) at rest, and the impulse
+        // on A has magnitude 12mu, so on B it is +12: f2 = 0 + 12/2 = 6, f1 = 6 - 12/3 = 2,
+        // e = (6 - 2)/(6 - 0) = 2/3. KE 54 -> 1/2 3 4 + 1/2 2 36 = 42: 12 lost
+        // (= (1 - 4/9) 21.6, the crunch 1/2 (6/5) 36).
+        let (code, j) = solve_json(&["-m", "3,2", "-v", "6,0", "--impulse", "12", "--exact"]);
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["solved"], json!({"f1": "2", "f2": "6", "e": "2/3"}));
+        assert_eq!(j["energy"]["lost"], "12");
+        let (code, j) = solve_json(&["-m", "3,2", "-v", "6,0", "--impulse", "12"]);
+        assert_eq!((code, &j["fin"]), (0, &json!([2.0, 6.0])));
+        assert_close(f(&j["restitution"]), 2.0 / 3.0, REL, "e");
+        // B typed first: the impulse on body 2 (now A) is -12; the same collision swapped.
+        let (code, j) = solve_json(&["-m", "2,3", "-v", "0,6", "--impulse", "-12", "--exact"]);
+        assert_eq!(code, 0);
+        assert_eq!(j["solved"], json!({"f1": "6", "f2": "2", "e": "2/3"}));
+        // In grams and cm/s, 12 N s is 1.2e6 g cm/s (1 g cm/s = 1e-5 N s): f = (200, 600) cm/s.
+        for j_typed in ["12 N s", "1.2e6 g cm/s", "12 kg*m/s"] {
+            let (code, j) = solve_json(&[
+                "-m",
+                "3000 g,2000 g",
+                "-v",
+                "600 cm/s,0",
+                "--impulse",
+                j_typed,
+                "--exact",
+            ]);
+            assert_eq!(code, 0, "{j_typed}");
+            assert_eq!(j["solved"], json!({"f1": "200", "f2": "600", "e": "2/3"}));
+        }
+    }
+
+    #[test]
+    fn an_impulse_with_other_knowns() {
+        // e given as well: restitution is checked and holds (f2 - f1 = 4 = 2/3 6).
+        let (code, j) = solve_json(&["-m", "3,2", "-v", "6,0", "--impulse", "12", "-e", "2/3"]);
+        assert_eq!((code, &j["check"]), (0, &json!({"restitution": 0.0})));
+        // e = 1/2 contradicts it: f2 - f1 - e (v1 - v2) = 4 - 3 = 1, exit 1.
+        let (code, j) = solve_json(&["-m", "3,2", "-v", "6,0", "--impulse", "12", "-e", "0.5"]);
+        assert_eq!((code, &j["check"]["restitution"]), (1, &json!(1.0)));
+        // A mass unknown, B's final speed given: 12 = m2 (6 - 0), m2 = 2; f1 = 2, e = 2/3.
+        let (code, j) = solve_json(&[
+            "-m",
+            "3,?",
+            "-v",
+            "6,0",
+            "--fin",
+            "?,6",
+            "--impulse",
+            "12",
+            "--exact",
+        ]);
+        assert_eq!(code, 0);
+        assert_eq!(j["solved"], json!({"m2": "2", "f1": "2", "e": "2/3"}));
+        // From rest (an explosion giving B 12 N s): f2 = 6, f1 = -12/3 = -4; released
+        // 1/2 3 16 + 1/2 2 36 = 60 (= 1/2 (6/5) 10^2).
+        let (code, j) = solve_json(&[
+            "-m",
+            "3,2",
+            "-v",
+            "0,0",
+            "--impulse",
+            "12",
+            "--show",
+            "energy",
+        ]);
+        assert_eq!(code, 0);
+        assert_eq!(
+            (&j["event"], &j["fin"]),
+            (&json!("separation"), &json!([-4.0, 6.0]))
+        );
+        assert_eq!(f(&j["energy"]["released"]), 60.0);
+        // A bullet through a block, the block's impulse given: 1.5 = 1 f2, f1 = 400 - 1.5/0.005.
+        let (code, j) = solve_json(&[
+            "-m",
+            "0.005,1",
+            "-v",
+            "400,0",
+            "--pass-through",
+            "--impulse",
+            "1.5",
+        ]);
+        assert_eq!((code, &j["fin"]), (0, &json!([100.0, 1.5])));
+        assert_eq!(j["event"], "pass-through");
+    }
+
+    #[test]
+    fn bad_impulses_are_refused() {
+        refused(
+            &["-m", "3,2", "-v", "6,0", "--impulse", "12 N"],
+            &["--impulse", "unknown unit 'N'"],
+        );
+        refused(
+            &["-m", "3,2", "-v", "6,0", "--impulse", "12 N s"],
+            &["--impulse '12 N s' has a unit"],
+        );
+        refused(
+            &["-m", "3,2", "-v", "6,0", "--impulse", "twelve"],
+            &["--impulse"],
+        );
+        // The wrong sign sends the bodies through each other: f2 = -6, f1 = 10, e = -16/6.
+        refused(
+            &["-m", "3,2", "-v", "6,0", "--impulse", "-12"],
+            &["e = -8/3 < 0", "--pass-through"],
+        );
+        refused(
+            &["-m", "wall,2", "-v", "0,-6", "--impulse", "12"],
+            &["--impulse", "wall"],
+        );
+        refused(
+            &["-m", "?,?", "-v", "6,0", "--fin", "?,6", "--impulse", "12"],
+            &["4 unknowns", "impulse1, impulse2 and restitution"],
+        );
+    }
+}
