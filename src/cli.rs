@@ -783,6 +783,14 @@ pub struct KnownArgs {
     #[arg(long, value_name = "J", allow_hyphen_values = true, help_heading = "Homework knowns",
           value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Impulse))]
     pub impulse: Option<collide::values::derived::Derived>,
+
+    /// The energy released when bodies that start together are pushed apart (an explosion),
+    /// e.g. '48 J', '7.11e8 J', or plain in the case's units: with --fin '?,?' both ways the
+    /// pieces can part are printed
+    #[arg(long, value_name = "E", help_heading = "Homework knowns", allow_hyphen_values = true,
+          conflicts_with_all = ["pass_through", "impulse", "restitution"],
+          value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Energy))]
+    pub released: Option<collide::values::derived::Derived>,
 }
 
 impl KnownArgs {
@@ -791,6 +799,7 @@ impl KnownArgs {
         collide::line::problem::Knowns {
             pass_through: self.pass_through,
             impulse: self.impulse.clone(),
+            released: self.released.clone(),
         }
     }
 }

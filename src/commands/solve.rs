@@ -70,6 +70,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         Posed::Wall(w, solved) => {
             return special(Special::Wall(w), solved.as_ref(), &sections, &args);
         }
+        Posed::Separations(pair) => return two_ways(pair, &sections, &args),
     };
     // Given data that contradict a checked law fail like a failed [expect] (exit 1), and no
     // collision is printed: one recomputed from e would differ from the given FIN.
@@ -144,6 +145,47 @@ fn special(
             solved::annotate(&mut json, &units, solved, args.exact);
             json::render(&json)
         }
+    };
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// A separation with the energy released given and both final velocities unknown: both ways
+/// the pieces can part, labelled by which is on the left (JSON `{"solutions": [...]}`).
+fn two_ways(
+    pair: &[(
+        collide::line::separation::Separation,
+        collide::line::unknowns::Solved,
+    ); 2],
+    sections: &Sections,
+    args: &SolveArgs,
+) -> Result<Outcome> {
+    let labels = [
+        "Solution 1: body 1 on the left, body 2 on the right (f1 < f2)",
+        "Solution 2: body 1 on the right, body 2 on the left (f1 > f2)",
+    ];
+    let mut text = collide::report::text::paragraph(
+        "Two solutions: the energy released fixes the relative speed |f1 - f2|, not which \
+         piece ends up on the right",
+    );
+    let mut solutions = Vec::new();
+    for ((s, solved), label) in pair.iter().zip(labels) {
+        let Outcome { stdout, status } =
+            special(Special::Separation(s), Some(solved), sections, args)?;
+        if status != 0 {
+            return Ok(Outcome { stdout, status });
+        }
+        match args.format {
+            Format::Text => {
+                text.push('\n');
+                text.push_str(&collide::report::text::paragraph(&format!("{label}:")));
+                text.push_str(&stdout);
+            }
+            Format::Json => solutions.push(serde_json::from_str::<serde_json::Value>(&stdout)?),
+        }
+    }
+    let stdout = match args.format {
+        Format::Text => text,
+        Format::Json => json::render(&serde_json::json!({ "solutions": solutions })),
     };
     Ok(Outcome { stdout, status: 0 })
 }

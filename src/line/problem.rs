@@ -46,13 +46,17 @@ pub struct Knowns {
     pub pass_through: bool,
     /// The impulse on body 2 (`--impulse`).
     pub impulse: Option<Derived>,
+    /// The energy released in a separation (`--released`).
+    pub released: Option<Derived>,
 }
 
 impl Knowns {
     /// The flag of the first known given, for errors (`None`: none given).
     pub fn first_flag(&self) -> Option<&'static str> {
-        let impulse = self.impulse.as_ref().map(|j| j.kind.flag());
-        self.pass_through.then_some("--pass-through").or(impulse)
+        let flag = |d: &Option<Derived>| d.as_ref().map(|d| d.kind.flag());
+        (self.pass_through.then_some("--pass-through"))
+            .or(flag(&self.impulse))
+            .or(flag(&self.released))
     }
 }
 
@@ -67,6 +71,10 @@ pub enum Posed {
     Separation(Separation, Solved),
     /// A body against a wall (an immovable body), with what was solved.
     Wall(WallCase, Option<Solved>),
+    /// A separation with the energy released given and both final velocities unknown: the
+    /// energy fixes the relative speed, not which piece ends up ahead, so there are two (body 1
+    /// on the left, then on the right).
+    Separations(Box<[(Separation, Solved); 2]>),
 }
 
 impl Posed {
@@ -75,6 +83,7 @@ impl Posed {
         match self {
             Posed::Collision(case, _) => &case.units,
             Posed::Separation(s, _) => &s.units,
+            Posed::Separations(pair) => &pair[0].0.units,
             Posed::Wall(w, _) => &w.units,
         }
     }
@@ -97,6 +106,17 @@ pub enum ProblemError {
         "{0}: one body is a wall (immovable), so momentum says nothing; {0} needs two movable bodies"
     )]
     KnownWithWall(&'static str),
+    #[error(
+        "--released {0}: the energy released is a known of bodies that start together (an \
+         explosion, a recoil: V1 = V2); {1}"
+    )]
+    ReleasedNeedsSeparation(String, String),
+    #[error(
+        "--released {text}: the pieces separate at the relative speed sqrt(2 E / mu) = \
+         sqrt({square}), which is irrational, and exact arithmetic (--exact) holds rationals \
+         only: compute in binary64 (within an ulp), or choose E with 2 E / mu a square"
+    )]
+    IrrationalRelease { text: String, square: String },
     #[error("two walls: at most one body can be immovable")]
     TwoWalls,
     #[error("a wall needs --masses M1,wall (not --inertia)")]
@@ -152,7 +172,9 @@ impl Problem {
         }
         match self.solve(inertia)? {
             Posed::Collision(case, _) => Ok(case),
-            Posed::Separation(..) => Err(ProblemError::UnknownsOnlyInSolve),
+            Posed::Separation(..) | Posed::Separations(..) => {
+                Err(ProblemError::UnknownsOnlyInSolve)
+            }
             Posed::Wall(..) => Err(ProblemError::WallOnlyInSolve),
         }
     }
@@ -238,6 +260,10 @@ impl Problem {
             .chain([e])
             .collect();
         let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
+        if let Some(released) = &self.knowns.released {
+            let e = released.in_case(units.energy_si().as_ref())?;
+            return self.solve_released(&known, exact, (released, e), &laws, units);
+        }
         let solved = crate::line::knowns::solve(exact, &laws)?;
         // A value as typed when it was given (the header repeats it), else its solved fraction.
         let number = |var: Var| -> Result<Given<Number>, ProblemError> {
@@ -249,23 +275,7 @@ impl Problem {
         let m = vec![number(Var::M1)?, number(Var::M2)?];
         let v = vec![number(Var::V1)?, number(Var::V2)?];
         if solved.separation || solved.pass_through {
-            let need =
-                |x: Given<Number>| x.known().cloned().ok_or(ProblemError::UnknownsOnlyInSolve);
-            let [m1, m2] = [
-                Mass::new(need(m[0].clone())?)?,
-                Mass::new(need(m[1].clone())?)?,
-            ];
-            let separation = Separation {
-                masses: [m1.number().clone(), m2.number().clone()],
-                velocities: [need(v[0].clone())?, need(v[1].clone())?],
-                fin: [solved.get(Var::F1).clone(), solved.get(Var::F2).clone()],
-                units,
-                kind: if solved.pass_through {
-                    Kind::PassThrough
-                } else {
-                    Kind::Apart
-                },
-            };
+            let separation = Problem::momentum_only(&known, &solved, units)?;
             return Ok(Posed::Separation(separation, solved));
         }
         let case = build(&m, &v, number(Var::E)?, None, units)?;
@@ -283,6 +293,94 @@ impl Problem {
         Ok(Laws {
             pass_through: self.knowns.pass_through,
             impulse,
+        })
+    }
+
+    /// A separation with the energy released `e` given: both final velocities unknown give
+    /// two solutions (`separation::split`); otherwise momentum solves one unknown and the energy
+    /// is checked.
+    fn solve_released(
+        &self,
+        known: &[Given<Number>],
+        exact: [Option<Q>; 7],
+        (typed, e): (&Derived, Q),
+        laws: &Laws,
+        units: Units,
+    ) -> Result<Posed, ProblemError> {
+        let refuse = |why: &str| {
+            Err(ProblemError::ReleasedNeedsSeparation(
+                typed.text.clone(),
+                why.to_string(),
+            ))
+        };
+        let (v1, v2) = (&exact[Var::V1 as usize], &exact[Var::V2 as usize]);
+        match (v1, v2) {
+            (Some(a), Some(b)) if a == b => {}
+            (Some(_), Some(_)) => {
+                return refuse("here V1 != V2: for a collision give -e or the final velocities");
+            }
+            _ => return refuse("give both initial velocities"),
+        }
+        let [m1, m2] = [Var::M1, Var::M2].map(|v| exact[v as usize].clone());
+        let both_unknown = exact[Var::F1 as usize].is_none() && exact[Var::F2 as usize].is_none();
+        if let (true, Some(m1), Some(m2)) = (both_unknown, m1, m2) {
+            let v = exact[Var::V1 as usize].clone().unwrap_or_default();
+            let fins = crate::line::separation::split([&m1, &m2], &v, &e, self.exact).map_err(
+                |square| ProblemError::IrrationalRelease {
+                    text: typed.text.clone(),
+                    square: crate::values::quantity::significant(&square, 15),
+                },
+            )?;
+            let solution = |fin: [Q; 2]| -> Result<(Separation, Solved), ProblemError> {
+                let mut values = exact.clone().map(Option::unwrap_or_default);
+                [values[Var::F1 as usize], values[Var::F2 as usize]] = fin;
+                let solved = Solved {
+                    values,
+                    unknowns: vec![Var::F1, Var::F2],
+                    checks: Vec::new(),
+                    separation: true,
+                    wall: None,
+                    pass_through: false,
+                };
+                Ok((
+                    Problem::momentum_only(known, &solved, units.clone())?,
+                    solved,
+                ))
+            };
+            let [a, b] = fins;
+            return Ok(Posed::Separations(Box::new([solution(a)?, solution(b)?])));
+        }
+        let mut solved = crate::line::knowns::solve(exact.clone(), laws)?;
+        if !solved.separation {
+            return refuse("the final velocities are equal, so nothing was released");
+        }
+        let separation = Problem::momentum_only(known, &solved, units)?;
+        solved.checks.push(("energy", separation.released() - &e));
+        Ok(Posed::Separation(separation, solved))
+    }
+
+    /// The separation or pass-through of solved values (a value as typed when it was given,
+    /// `known`, else its solved fraction).
+    fn momentum_only(
+        known: &[Given<Number>],
+        solved: &Solved,
+        units: Units,
+    ) -> Result<Separation, ProblemError> {
+        let number = |var: Var| match known[var as usize].known() {
+            Some(n) => Ok(n.clone()),
+            None => solved_number(var, solved.get(var)),
+        };
+        let [m1, m2] = [Mass::new(number(Var::M1)?)?, Mass::new(number(Var::M2)?)?];
+        Ok(Separation {
+            masses: [m1.number().clone(), m2.number().clone()],
+            velocities: [number(Var::V1)?, number(Var::V2)?],
+            fin: [solved.get(Var::F1).clone(), solved.get(Var::F2).clone()],
+            units,
+            kind: if solved.pass_through {
+                Kind::PassThrough
+            } else {
+                Kind::Apart
+            },
         })
     }
 

@@ -279,6 +279,14 @@ impl Scene {
         ));
         let (case, solved) = match posed {
             Posed::Collision(case, solved) => (case, solved),
+            Posed::Separations(..) => {
+                return Err(err(
+                    None,
+                    "two solutions (the energy released fixes the relative speed, not which \
+                     piece is ahead): give one final velocity"
+                        .into(),
+                ));
+            }
             Posed::Separation(..) | Posed::Wall(..) => {
                 let extra = [
                     file.sweep.as_ref().map(|_| "[sweep]"),
@@ -301,7 +309,9 @@ impl Scene {
                         (SpecialEvent::Separation(s), Some(solved), separation_key)
                     }
                     Posed::Wall(w, solved) => (SpecialEvent::Wall(w), solved, wall_key),
-                    Posed::Collision(..) => unreachable!("matched above"),
+                    Posed::Collision(..) | Posed::Separations(..) => {
+                        unreachable!("matched above")
+                    }
                 };
                 let about = About::new((path, text), file.title, file.source, file.expect, keys)?;
                 return Ok(AnyScene::Special(SpecialScene {

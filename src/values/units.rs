@@ -656,6 +656,13 @@ impl Units {
         Some(m.si() * v.si())
     }
 
+    /// The size of the case's energy unit (mass unit x velocity unit^2) in joules, when both
+    /// units are given.
+    pub fn energy_si(&self) -> Option<Q> {
+        let v = lookup(self.velocity?, Dimension::Velocity).ok()?.si();
+        Some(self.force_scale()? * v)
+    }
+
     /// "kg m/s" (momentum, impulse), or the generic description.
     pub fn impulse(&self) -> String {
         match (self.mass, self.velocity) {

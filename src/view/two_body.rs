@@ -214,7 +214,7 @@ impl CaseInput {
         let typed = self.typed()?;
         let case = match typed.problem.solve(typed.inertia) {
             Ok(Posed::Collision(case, _)) => case,
-            Ok(Posed::Separation(..)) => {
+            Ok(Posed::Separation(..) | Posed::Separations(..)) => {
                 return Err(InputError::new(
                     "v2",
                     "the bodies start together (V1 = V2) and are pushed apart: a separation, \

@@ -389,3 +389,168 @@ mod impulse {
         );
     }
 }
+
+mod released {
+    use super::*;
+
+    /// The `solutions` of a two-way separation's JSON.
+    fn solutions(args: &[&str]) -> Vec<Value> {
+        let (code, j) = solve_json(args);
+        assert_eq!(code, 0, "{args:?}: {j}");
+        j["solutions"].as_array().expect("two solutions").clone()
+    }
+
+    #[test]
+    fn rocket_stages_both_ways() {
+        // Cutnell & Johnson 7.51 read backwards: stages of 1200 kg (upper) and 2400 kg at
+        // 4900 m/s part with 5.76e8 J (the released energy of the book's answer, 1/2 800 1200^2).
+        // mu = 800, |f1 - f2| = sqrt(2 5.76e8 / 800) = 1200; the centre of mass keeps 4900, so
+        // f1 = 4900 -+ (2/3) 1200 and f2 = 4900 +- (1/3) 1200: (4100, 5300) with the upper stage
+        // behind, (5700, 4500) with it ahead (the book's 5700 and 4500 m/s).
+        let args = [
+            "-m",
+            "1200 kg,2400 kg",
+            "-v",
+            "4900 m/s,4900 m/s",
+            "--fin",
+            "?,?",
+            "--released",
+            "5.76e8 J",
+            "--show",
+            "energy",
+        ];
+        let s = solutions(&[&args[..], &["--exact"]].concat());
+        assert_eq!(s.len(), 2);
+        assert_eq!(s[0]["solved"], json!({"f1": "4100", "f2": "5300"}));
+        assert_eq!(s[1]["solved"], json!({"f1": "5700", "f2": "4500"}));
+        assert!(s[0].get("left").is_none() && s[1]["left"] == 2, "{s:?}");
+        for one in &s {
+            assert_eq!(one["energy"]["released"], "576000000");
+            assert_eq!(one["event"], "separation");
+        }
+        let (_, text, _) = run(&args);
+        for needle in [
+            "Two solutions: the energy released fixes the relative speed",
+            "Solution 1: body 1 on the left, body 2 on the right (f1 < f2):",
+            "Solution 2: body 1 on the right, body 2 on the left (f1 > f2):",
+            "Solved: f1 = 5700 m/s, f2 = 4500 m/s",
+        ] {
+            assert!(text.contains(needle), "{needle}:\n{text}");
+        }
+        // 7.11e8 J: |f1 - f2| = sqrt(1777500), irrational. In binary64 the energy comes back
+        // within a few ulps (710999999.9999999 here), momentum 3600 4900 is kept, and --sig 3
+        // prints 711000000.
+        let mut other = args;
+        other[7] = "7.11e8 J";
+        for one in solutions(&other) {
+            assert_close(f(&one["energy"]["released"]), 7.11e8, REL, "released");
+            let p = 1200.0 * f(&one["fin"][0]) + 2400.0 * f(&one["fin"][1]);
+            assert_close(p, 3600.0 * 4900.0, REL, "momentum");
+            let d = f(&one["fin"][0]) - f(&one["fin"][1]);
+            assert_close(d.abs(), 1777500f64.sqrt(), 2.0 * REL, "|f1 - f2|");
+        }
+        let text = common::stdout(&[&["--sig", "3", "solve"], &other[..]].concat());
+        assert!(
+            text.contains("released = 1/2 mu (f1 - f2)^2  711000000"),
+            "{text}"
+        );
+        refused(
+            &[&other[..], &["--exact"]].concat(),
+            &["--released 7.11e8 J", "sqrt(1777500)", "irrational"],
+        );
+    }
+
+    #[test]
+    fn the_pieces_are_given_48_j() {
+        // A 3 kg body at rest splits into 1 kg and 2 kg pieces given 48 J: mu = 2/3,
+        // |f1 - f2| = sqrt(96 / (2/3)) = 12, so (-8, 4) or (8, -4) m/s; KE 32 + 16 = 48.
+        // The same in kJ and in ft*lbf (48 J = 48 / 1.3558179483314004 ft*lbf).
+        for energy in ["48 J", "0.048 kJ"] {
+            let s = solutions(&[
+                "-m",
+                "1 kg,2 kg",
+                "-v",
+                "0,0 m/s",
+                "--fin",
+                "?,?",
+                "--released",
+                energy,
+                "--show",
+                "changes",
+                "--exact",
+            ]);
+            assert_eq!(s[0]["fin"], json!(["-8", "4"]), "{energy}");
+            assert_eq!(s[1]["fin"], json!(["8", "-4"]));
+            assert_eq!(s[1]["changes"]["ke_fin"], json!(["32", "16"]));
+        }
+        // Giancoli 7-?: one piece 1.5 times the other (2 and 3 kg), 7500 J released: the KE
+        // splits inversely to the masses, 4500 J and 3000 J, whichever piece goes right.
+        for one in solutions(&[
+            "-m",
+            "2,3",
+            "-v",
+            "0,0",
+            "--fin",
+            "?,?",
+            "--released",
+            "7500",
+            "--show",
+            "changes",
+        ]) {
+            let ke = &one["changes"]["ke_fin"];
+            assert_close(f(&ke[0]), 4500.0, REL, "KE of the 2 kg piece");
+            assert_close(f(&ke[1]), 3000.0, REL, "KE of the 3 kg piece");
+        }
+    }
+
+    #[test]
+    fn one_final_velocity_given_the_energy_is_checked() {
+        // f1 = -6 from rest with 2 and 3 kg: f2 = 4; released 1/2 2 36 + 1/2 3 16 = 60.
+        let (code, j) = solve_json(&[
+            "-m",
+            "2,3",
+            "-v",
+            "0,0",
+            "--fin",
+            "-6,?",
+            "--released",
+            "60",
+        ]);
+        assert_eq!((code, &j["check"]), (0, &json!({"energy": 0.0})));
+        assert_eq!(j["solved"]["f2"], 4.0);
+        // 50 contradicts it by 10: exit 1, no event printed.
+        let (code, j) = solve_json(&[
+            "-m",
+            "2,3",
+            "-v",
+            "0,0",
+            "--fin",
+            "-6,?",
+            "--released",
+            "50",
+        ]);
+        assert_eq!(
+            (code, &j["check"]["energy"], &j["consistent"]),
+            (1, &json!(10.0), &json!(false))
+        );
+    }
+
+    #[test]
+    fn bad_energies_are_refused() {
+        let base = ["-m", "2,3", "-v", "0,0", "--fin", "?,?"];
+        let with = |e: &'static str| [&base[..], &["--released", e]].concat();
+        refused(&with("0"), &["--released '0' must be above 0"]);
+        refused(&with("-5 J"), &["--released", "above 0"]);
+        refused(&with("48 W"), &["--released '48 W'", "unknown unit 'W'"]);
+        refused(&with("48 J"), &["--released '48 J' has a unit"]);
+        refused(
+            &["-m", "2,3", "-v", "1,0", "--fin", "?,?", "--released", "60"],
+            &["--released 60", "start together", "V1 != V2"],
+        );
+        refused(&[&with("60")[..], &["-e", "0.5"]].concat(), &["--released"]);
+        refused(
+            &[&with("60")[..], &["--pass-through"]].concat(),
+            &["--released"],
+        );
+    }
+}
