@@ -791,9 +791,30 @@ pub struct KnownArgs {
           conflicts_with_all = ["pass_through", "impulse", "restitution"],
           value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Energy))]
     pub released: Option<collide::values::derived::Derived>,
+
+    /// A spring between the bodies, e.g. '1120 N/m' (N/m, kN/m, N/cm, lbf/in; plain: N/m):
+    /// reports the maximum compression sqrt(2 crunch / k) and the contact time pi sqrt(mu / k)
+    #[arg(long, value_name = "K", help_heading = "Homework knowns", allow_hyphen_values = true,
+          value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Stiffness))]
+    pub spring: Option<collide::values::derived::Derived>,
 }
 
 impl KnownArgs {
+    /// What the report is asked beyond its sections, for a case in `units`.
+    pub fn asked(&self, units: &collide::values::units::Units) -> collide::report::asked::Asked {
+        let mut asked = collide::report::asked::Asked::in_units(units);
+        asked.spring = self.spring.as_ref().map(|k| {
+            let unit = if k.unit_si.is_none() { " N/m" } else { "" };
+            (k.si(), format!("{}{unit}", k.text))
+        });
+        asked
+    }
+
+    /// The flag of the first output asked for (`--spring`), for refusals.
+    pub fn first_asked(&self) -> Option<&'static str> {
+        self.spring.as_ref().map(|k| k.kind.flag())
+    }
+
     /// The knowns as the library takes them.
     pub fn knowns(&self) -> collide::line::problem::Knowns {
         collide::line::problem::Knowns {

@@ -16,7 +16,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
-    if let Some(flag) = args.knowns.knowns().first_flag()
+    if let Some(flag) = (args.knowns.knowns().first_flag()).or(args.knowns.first_asked())
         && (args.rigid.active() || args.case.spatial())
     {
         anyhow::bail!(
@@ -47,6 +47,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     ));
     sections.energy_scale = units.energy_scale();
     sections.force_scale = units.force_scale();
+    sections.asked = args.knowns.asked(&units);
     let (case, unknowns) = match &posed {
         // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
         // denominator, and a typed -e would print FIN = IN as if it were an answer.
@@ -113,6 +114,7 @@ fn special(
         (args.frame != collide::line::frame::Frame::Lab).then_some("--frame"),
         args.reverse.then_some("--reverse"),
         args.plot.as_ref().map(|_| "--plot"),
+        args.knowns.first_asked(),
     ];
     if let Some(flag) = extra.into_iter().flatten().next() {
         let what = match event {

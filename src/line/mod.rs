@@ -2,7 +2,7 @@
 //! ellipse with an explicit inertia tensor `M`.
 //!
 //! Physics first (`inertia`, `restitution`, `collision`, `order`, `ellipse`, `changes`,
-//! `separation`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `knowns`, `frame`). The plane and
+//! `separation`, `spring`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `knowns`, `frame`). The plane and
 //! space (`crate::space`) build on this layer: the normal parts of a smooth contact collide by its
 //! 1D rule.
 
@@ -14,6 +14,7 @@ pub mod inertia;
 pub mod order;
 pub mod restitution;
 pub mod separation;
+pub mod spring;
 pub mod wall;
 
 // What the user asked.

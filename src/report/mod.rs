@@ -4,6 +4,7 @@
 
 #[cfg(feature = "cli")]
 pub mod accuracy;
+pub mod asked;
 pub mod block;
 #[cfg(feature = "cli")]
 pub mod contact;
@@ -117,6 +118,8 @@ pub struct Sections {
     pub energy_scale: Option<Q>,
     /// The factor from the case's force unit to newtons (`Units::force_scale`).
     pub force_scale: Option<Q>,
+    /// What a homework problem asks beyond these sections (`--spring`).
+    pub asked: asked::Asked,
 }
 
 impl Sections {
@@ -135,6 +138,7 @@ impl Sections {
             heights: None,
             energy_scale: None,
             force_scale: None,
+            asked: asked::Asked::default(),
         }
     }
     pub fn contains(&self, s: Section) -> bool {
@@ -182,6 +186,9 @@ pub struct Report<N = f64> {
     pub changes: Option<ChangeReport<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub heights: Option<Heights<N>>,
+    /// What a homework problem asks beyond the sections (`--spring`).
+    #[serde(flatten, default)]
+    pub asked: asked::AskedReport<N>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub diagnostics: Option<Diagnostics>,
     /// The time-reversed collision (`--reverse`).
@@ -630,6 +637,11 @@ impl<N: Scalar> Report<N> {
                         fin: [one(&f[0]), one(&f[1])],
                     }
                 }),
+            asked: if sections.asked.is_empty() {
+                asked::AskedReport::default()
+            } else {
+                asked::AskedReport::of(&c.exact(), &sections.asked)
+            },
             diagnostics: has(Section::Diagnostics).then(|| {
                 let (momentum_residual, energy_residual) = c.residuals();
                 let (solve_ns, repetitions) = time_solves(c);

@@ -126,6 +126,9 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         );
         b.render(&mut out);
     }
+    for b in report.asked.blocks() {
+        b.render(&mut out);
+    }
     if let Some(d) = &report.diagnostics {
         diagnostics(d).render(&mut out);
     }

@@ -554,3 +554,170 @@ mod released {
         );
     }
 }
+
+mod spring {
+    use super::*;
+
+    /// `collide solve ARGS --spring K --format json`'s `spring` object.
+    fn spring(args: &[&str]) -> Value {
+        let (code, j) = solve_json(args);
+        assert_eq!(code, 0, "{args:?}: {j}");
+        j["spring"].clone()
+    }
+
+    #[test]
+    fn halliday_blocks_compress_the_spring_a_quarter_metre() {
+        // Halliday, Resnick & Walker, ch. 9: block 1 (2.0 kg) at 10 m/s catches block 2
+        // (5.0 kg) at 3.0 m/s, which carries a spring of k = 1120 N/m. At closest approach both
+        // move at V_COM = 5 m/s and the spring holds the crunch 1/2 (10/7) 7^2 = 35 J:
+        // x = sqrt(2 35 / 1120) = sqrt(1/16) = 0.25 m (the book's answer), exactly. The
+        // reduced-mass oscillator omega = sqrt(1120 / (10/7)) = 28 rad/s is in contact half a
+        // period: t = pi / 28 s.
+        let args = [
+            "-m",
+            "2.0 kg,5.0 kg",
+            "-v",
+            "10 m/s,3.0 m/s",
+            "--spring",
+            "1120 N/m",
+        ];
+        let s = spring(&[&args[..], &["--exact"]].concat());
+        assert_eq!(
+            (&s["k"], &s["compression"]),
+            (&json!("1120"), &json!("1/4"))
+        );
+        assert!(
+            s["contact_time"]
+                .as_str()
+                .unwrap()
+                .starts_with("0.1121997376282069013"),
+            "{s}"
+        );
+        let s = spring(&args);
+        assert_eq!(f(&s["compression"]), 0.25);
+        assert_close(
+            f(&s["contact_time"]),
+            std::f64::consts::PI / 28.0,
+            REL,
+            "pi/28",
+        );
+        let (_, text, _) = run(&args);
+        assert!(
+            text.contains("x_max = sqrt(2 crunch / k)  0.25 m"),
+            "{text}"
+        );
+        // The same spring every way the case can be told: block 2 typed first, seen from the
+        // COM frame, in grams and cm/s with k in N/cm (11.2 N/cm = 1120 N/m), and plain.
+        for other in [
+            vec![
+                "-m",
+                "5.0 kg,2.0 kg",
+                "-v",
+                "3.0 m/s,10 m/s",
+                "--spring",
+                "1120 N/m",
+            ],
+            vec![
+                "-m",
+                "2.0 kg,5.0 kg",
+                "-v",
+                "10 m/s,3.0 m/s",
+                "--spring",
+                "1120 N/m",
+                "--frame",
+                "com",
+            ],
+            vec![
+                "-m",
+                "2000 g,5000 g",
+                "-v",
+                "1000 cm/s,300 cm/s",
+                "--spring",
+                "11.2 N/cm",
+            ],
+            vec!["-m", "2,5", "-v", "10,3", "--spring", "1120"],
+        ] {
+            let s = spring(&other);
+            assert_eq!(f(&s["compression"]), 0.25, "{other:?}");
+            assert_close(f(&s["contact_time"]), std::f64::consts::PI / 28.0, REL, "t");
+        }
+        // 1 lbf/in = 4.4482216152605 / 0.0254 N/m: x = sqrt(70 / k), t = pi sqrt((10/7) / k).
+        let k: f64 = 4.4482216152605 / 0.0254;
+        let s = spring(&[
+            "-m",
+            "2 kg,5 kg",
+            "-v",
+            "10 m/s,3 m/s",
+            "--spring",
+            "1 lbf/in",
+        ]);
+        assert_close(
+            f(&s["compression"]),
+            (70.0 / k).sqrt(),
+            2.0 * REL,
+            "x in lbf/in",
+        );
+        assert_close(
+            f(&s["contact_time"]),
+            std::f64::consts::PI * (10.0 / 7.0 / k).sqrt(),
+            2.0 * REL,
+            "t in lbf/in",
+        );
+    }
+
+    #[test]
+    fn the_spring_agrees_with_the_contact_model_in_time() {
+        // `collide contact` integrates the linear law F = k d through the impact (zeta = 0):
+        // its contact lasts pi sqrt(mu / k) and its overlap peaks at sqrt(2 crunch / k), to the
+        // integrator's tolerance (1e-10 per step: agreement to 1e-8 here).
+        let s = spring(&["-m", "2,5", "-v", "10,3", "--spring", "1120"]);
+        let out = common::stdout(&[
+            "contact",
+            "-m",
+            "2,5",
+            "-x",
+            "0,1",
+            "--sizes",
+            "1,1",
+            "-v",
+            "10,3",
+            "--stiffness",
+            "1120",
+            "--zeta",
+            "0",
+            "--format",
+            "json",
+        ]);
+        let c: Value = serde_json::from_str(&out).unwrap();
+        let contact = &c["contacts"][0];
+        assert_close(
+            f(&contact["duration"]),
+            f(&s["contact_time"]),
+            1e-8,
+            "duration",
+        );
+        assert_close(
+            f(&contact["max_overlap"]),
+            f(&s["compression"]),
+            1e-8,
+            "overlap",
+        );
+    }
+
+    #[test]
+    fn bad_springs_are_refused() {
+        let base = ["-m", "2,5", "-v", "10,3"];
+        let with = |k: &'static str| [&base[..], &["--spring", k]].concat();
+        refused(&with("0"), &["--spring '0' must be above 0"]);
+        refused(&with("-3 N/m"), &["--spring '-3 N/m' must be above 0"]);
+        refused(&with("3 N"), &["--spring '3 N'", "N/m, kN/m"]);
+        refused(
+            &["-m", "2,5", "-v", "0,0", "--fin", "1,?", "--spring", "10"],
+            &["--spring", "separation"],
+        );
+        refused(
+            &["-m", "wall,5", "-v", "0,-3", "--spring", "10"],
+            &["--spring", "wall"],
+        );
+    }
+}
