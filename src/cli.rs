@@ -797,12 +797,25 @@ pub struct KnownArgs {
     #[arg(long, value_name = "K", help_heading = "Homework knowns", allow_hyphen_values = true,
           value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Stiffness))]
     pub spring: Option<collide::values::derived::Derived>,
+
+    /// The string of a pendulum, e.g. '5 m' or '80 cm' (plain: metres): the swing of each body
+    /// at rest when hit (both when neither or both were), its angle acos(1 - h/L) and
+    /// horizontal displacement L sin(theta), with h = f^2 / 2g
+    #[arg(long, value_name = "L", help_heading = "Homework knowns", allow_hyphen_values = true,
+          value_parser = |s: &str| collide::values::derived::length(s, "--length"))]
+    pub length: Option<(collide::values::rational::Q, String)>,
 }
 
 impl KnownArgs {
     /// What the report is asked beyond its sections, for a case in `units`.
-    pub fn asked(&self, units: &collide::values::units::Units) -> collide::report::asked::Asked {
+    pub fn asked(
+        &self,
+        units: &collide::values::units::Units,
+        g: &collide::values::rational::Q,
+    ) -> collide::report::asked::Asked {
         let mut asked = collide::report::asked::Asked::in_units(units);
+        asked.length = self.length.clone();
+        asked.g = g.clone();
         asked.spring = self.spring.as_ref().map(|k| {
             let unit = if k.unit_si.is_none() { " N/m" } else { "" };
             (k.si(), format!("{}{unit}", k.text))
@@ -810,9 +823,12 @@ impl KnownArgs {
         asked
     }
 
-    /// The flag of the first output asked for (`--spring`), for refusals.
-    pub fn first_asked(&self) -> Option<&'static str> {
-        self.spring.as_ref().map(|k| k.kind.flag())
+    /// The flag of the first output asked for (`--spring`, `--length`), for refusals; `apart`:
+    /// of those a separation or pass-through cannot answer (a spring between bodies that
+    /// do not collide).
+    pub fn first_asked(&self, apart: bool) -> Option<&'static str> {
+        let length = (!apart && self.length.is_some()).then_some("--length");
+        self.spring.as_ref().map(|k| k.kind.flag()).or(length)
     }
 
     /// The knowns as the library takes them.

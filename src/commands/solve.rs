@@ -16,7 +16,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
-    if let Some(flag) = (args.knowns.knowns().first_flag()).or(args.knowns.first_asked())
+    if let Some(flag) = (args.knowns.knowns().first_flag()).or(args.knowns.first_asked(false))
         && (args.rigid.active() || args.case.spatial())
     {
         anyhow::bail!(
@@ -47,7 +47,14 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     ));
     sections.energy_scale = units.energy_scale();
     sections.force_scale = units.force_scale();
-    sections.asked = args.knowns.asked(&units);
+    sections.asked = args.knowns.asked(
+        &units,
+        &sections
+            .heights
+            .as_ref()
+            .map(|h| h.g.clone())
+            .unwrap_or_default(),
+    );
     let (case, unknowns) = match &posed {
         // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
         // denominator, and a typed -e would print FIN = IN as if it were an answer.
@@ -114,7 +121,8 @@ fn special(
         (args.frame != collide::line::frame::Frame::Lab).then_some("--frame"),
         args.reverse.then_some("--reverse"),
         args.plot.as_ref().map(|_| "--plot"),
-        args.knowns.first_asked(),
+        args.knowns
+            .first_asked(matches!(event, Special::Separation(_))),
     ];
     if let Some(flag) = extra.into_iter().flatten().next() {
         let what = match event {

@@ -2,7 +2,7 @@
 //! ellipse with an explicit inertia tensor `M`.
 //!
 //! Physics first (`inertia`, `restitution`, `collision`, `order`, `ellipse`, `changes`,
-//! `separation`, `spring`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `knowns`, `frame`). The plane and
+//! `separation`, `spring`, `pendulum`, `wall`), then what a user asks of it (`case`, `problem`, `unknowns`, `knowns`, `frame`). The plane and
 //! space (`crate::space`) build on this layer: the normal parts of a smooth contact collide by its
 //! 1D rule.
 
@@ -12,6 +12,7 @@ pub mod collision;
 pub mod ellipse;
 pub mod inertia;
 pub mod order;
+pub mod pendulum;
 pub mod restitution;
 pub mod separation;
 pub mod spring;

@@ -1,13 +1,14 @@
 //! What a homework problem asks beyond the lecture's sections (issue 27 §1), each shown when
-//! its flag is given: a spring between the bodies (`--spring K`: `spring`). Values are in SI
-//! (metres, seconds), computed exactly from the collision and rounded once; irrational ones
-//! (roots, pi) are taken to 30 digits first, and marked approximate in exact mode.
+//! its flag is given: a spring between the bodies (`--spring K`: `spring`), a pendulum's swing
+//! (`--length L`: `pendulum`). Values are in SI (metres, seconds, degrees), computed exactly
+//! from the event in the lab and rounded once; irrational ones (roots, pi, angles) are taken to
+//! 30 digits first, and marked approximate in exact mode.
 
 use serde::{Deserialize, Serialize};
 
 use super::text::Block;
-use crate::solver::exact::ExactCollision;
-use crate::values::quantity::Scalar;
+use crate::line::pendulum::{Swing, swing};
+use crate::values::quantity::{Scalar, significant};
 use crate::values::rational::{Q, int};
 
 /// What was asked, in SI, with the case's units in SI (1 when a case has none: masses are then
@@ -16,6 +17,10 @@ use crate::values::rational::{Q, int};
 pub struct Asked {
     /// A spring between the bodies: `k` in N/m, and as typed (`--spring`).
     pub spring: Option<(Q, String)>,
+    /// The string a body at rest hangs on: `L` in metres, and as typed (`--length`).
+    pub length: Option<(Q, String)>,
+    /// `g` in m/s^2.
+    pub g: Q,
     /// The case's mass unit in kg.
     pub mass_si: Q,
     /// The case's velocity unit in m/s.
@@ -28,6 +33,11 @@ impl Default for Asked {
     fn default() -> Asked {
         Asked {
             spring: None,
+            length: None,
+            g: crate::values::units::STANDARD_GRAVITY
+                .parse::<crate::values::number::Number>()
+                .map(|n| n.exact())
+                .unwrap_or_default(),
             mass_si: int(1),
             velocity_si: int(1),
             assumed: true,
@@ -38,7 +48,7 @@ impl Default for Asked {
 impl Asked {
     /// Nothing asked.
     pub fn is_empty(&self) -> bool {
-        self.spring.is_none()
+        self.spring.is_none() && self.length.is_none()
     }
 
     /// For a case in `units`.
@@ -70,6 +80,8 @@ impl Asked {
 pub struct AskedReport<N> {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spring: Option<SpringReport<N>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pendulum: Option<PendulumReport<N>>,
     /// What was asked, for the text (not part of the JSON schema).
     #[serde(skip)]
     pub asked: Option<Asked>,
@@ -86,6 +98,58 @@ pub struct SpringReport<N> {
     pub contact_time: N,
 }
 
+/// `pendulum`: the string, `g`, and the swing of each body that hung at rest when hit.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct PendulumReport<N> {
+    /// `L` in metres.
+    pub length: N,
+    /// `g` in m/s^2.
+    pub g: N,
+    pub swings: Vec<SwingReport<N>>,
+}
+
+/// One bob's swing.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SwingReport<N> {
+    /// 1 or 2.
+    pub body: u8,
+    /// `h = f^2 / 2g` in metres.
+    pub height: N,
+    /// `theta = acos(1 - h / L)`, from the vertical.
+    pub angle_deg: N,
+    /// `x = L sin(theta) = sqrt(h (2L - h))` in metres.
+    pub horizontal: N,
+    /// `h > L`: a string goes slack before the bob gets there (a rod would).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub slack: bool,
+}
+
+/// Why what was asked has no answer.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum AskedError {
+    #[error(
+        "--length {length}: body {body} would rise {height} m (f^2 / 2g), above the top of its \
+         circle (2 L = {two_l} m): the string goes slack and even a rod would go over the top, \
+         so there is no angle (a longer string, or a body that is not on one)"
+    )]
+    OverTheTop {
+        length: String,
+        body: usize,
+        height: String,
+        two_l: String,
+    },
+}
+
+/// The event the asked sections describe, exact, in the case's units, seen from the lab.
+pub struct Motion {
+    pub v_in: [Q; 2],
+    pub fin: [Q; 2],
+    /// `1/2 mu (v1 - v2)^2`.
+    pub crunch: Q,
+    /// `mu = det M / M_total`.
+    pub mu: Q,
+}
+
 /// An exact value or an approximation to 30 digits (`line::spring::root`).
 fn either<N: Scalar>(x: Result<Q, Q>) -> N {
     match x {
@@ -95,24 +159,73 @@ fn either<N: Scalar>(x: Result<Q, Q>) -> N {
 }
 
 impl<N: Scalar> AskedReport<N> {
-    /// The sections of `asked` for the collision `x`.
-    pub fn of(x: &ExactCollision, asked: &Asked) -> AskedReport<N> {
+    /// The sections of `asked` for the event `m`.
+    pub fn of(m: &Motion, asked: &Asked) -> Result<AskedReport<N>, AskedError> {
         let mass = &asked.mass_si;
         let v2 = &asked.velocity_si * &asked.velocity_si;
-        AskedReport {
-            spring: asked.spring.as_ref().map(|(k, _)| {
-                // mu = det M / M_total (a diagonal tensor: m1 m2 / (m1 + m2)), in kg.
-                let mu = (&x.a * &x.b - &x.c * &x.c) / (&x.a + &x.b + int(2) * &x.c) * mass;
-                let crunch = x.crunch_q() * mass * &v2;
-                use crate::line::spring::{compression, contact_time};
-                SpringReport {
-                    k: N::of_rational(k),
-                    compression: either(compression(&crunch, k)),
-                    contact_time: N::of_approx(&contact_time(&mu, k)),
-                }
-            }),
+        let spring = asked.spring.as_ref().map(|(k, _)| {
+            use crate::line::spring::{compression, contact_time};
+            SpringReport {
+                k: N::of_rational(k),
+                compression: either(compression(&(&m.crunch * mass * &v2), k)),
+                contact_time: N::of_approx(&contact_time(&(&m.mu * mass), k)),
+            }
+        });
+        let pendulum = match &asked.length {
+            Some((l, typed)) => Some(Self::pendulum(m, asked, l, typed)?),
+            None => None,
+        };
+        Ok(AskedReport {
+            spring,
+            pendulum,
             asked: Some(asked.clone()),
+        })
+    }
+
+    /// The bodies at rest at IN swing (both when neither or both were).
+    fn pendulum(
+        m: &Motion,
+        asked: &Asked,
+        l: &Q,
+        typed: &str,
+    ) -> Result<PendulumReport<N>, AskedError> {
+        let at_rest: Vec<usize> = (0..2).filter(|i| m.v_in[*i].is_zero()).collect();
+        let bodies = if at_rest.len() == 1 {
+            at_rest
+        } else {
+            vec![0, 1]
+        };
+        let mut swings = Vec::new();
+        for i in bodies {
+            let f = &m.fin[i] * &asked.velocity_si;
+            let h = &f * &f / (int(2) * &asked.g);
+            match swing(&h, l) {
+                Swing::OverTheTop => {
+                    return Err(AskedError::OverTheTop {
+                        length: typed.to_string(),
+                        body: i + 1,
+                        height: significant(&h, 6),
+                        two_l: significant(&(int(2) * l), 6),
+                    });
+                }
+                Swing::Angle {
+                    degrees,
+                    horizontal,
+                    slack,
+                } => swings.push(SwingReport {
+                    body: i as u8 + 1,
+                    height: N::of_rational(&h),
+                    angle_deg: either(degrees),
+                    horizontal: either(horizontal),
+                    slack,
+                }),
+            }
         }
+        Ok(PendulumReport {
+            length: N::of_rational(l),
+            g: N::of_rational(&asked.g),
+            swings,
+        })
     }
 
     /// The text blocks.
@@ -137,6 +250,45 @@ impl<N: Scalar> AskedReport<N> {
                 "in contact half a period of the reduced mass on the spring (an ideal spring \
                  gives it all back: e = 1)",
             );
+            out.push(b);
+        }
+        if let (Some(p), Some((_, typed))) = (&self.pendulum, &asked.length) {
+            let mut b = Block::new(format!(
+                "Pendulum (L = {typed}, g = {} m/s^2{}): {}",
+                p.g.show(),
+                asked.units_note(),
+                match p.swings[..] {
+                    [ref one] => format!("body {}, at rest when hit, swings", one.body),
+                    _ => "each body swings".into(),
+                }
+            ));
+            for s in &p.swings {
+                let who = if p.swings.len() > 1 {
+                    format!("body {}: ", s.body)
+                } else {
+                    String::new()
+                };
+                b.row(
+                    format!("{who}h = f^2 / 2g"),
+                    format!("{} m", s.height.show()),
+                    "how high the bob rises",
+                );
+                b.row(
+                    "theta = acos(1 - h / L)",
+                    format!("{} deg", s.angle_deg.show()),
+                    if s.slack {
+                        "h > L: a string goes slack before this (only a rod swings past the \
+                         horizontal)"
+                    } else {
+                        "the string's angle from the vertical"
+                    },
+                );
+                b.row(
+                    "x = L sin(theta)",
+                    format!("{} m", s.horizontal.show()),
+                    "= sqrt(h (2L - h)), how far the bob moves sideways",
+                );
+            }
             out.push(b);
         }
         out

@@ -509,6 +509,8 @@ pub enum ReportError {
     Irreversible(#[from] Irreversible),
     #[error(transparent)]
     ReverseOverflow(#[from] ReverseOverflow),
+    #[error(transparent)]
+    Asked(#[from] asked::AskedError),
 }
 
 impl<N: Scalar> Report<N> {
@@ -521,6 +523,17 @@ impl<N: Scalar> Report<N> {
     ) -> Result<Report<N>, ReportError> {
         let (w, seen) = lab.seen_from(frame);
         let mut r = Report::build(&seen, sections)?;
+        if !sections.asked.is_empty() {
+            // Heights and swings belong to the lab; a spring's numbers are the same anywhere.
+            let x = lab.seen_from(&Frame::Lab).1.exact();
+            let motion = asked::Motion {
+                fin: x.v_fin_q(),
+                crunch: x.crunch_q(),
+                mu: (&x.a * &x.b - &x.c * &x.c) / (&x.a + &x.b + Q::from(2) * &x.c),
+                v_in: x.v,
+            };
+            r.asked = asked::AskedReport::of(&motion, &sections.asked)?;
+        }
         r.frame = (*frame != Frame::Lab).then(|| FrameInfo {
             name: frame.to_string(),
             w,
@@ -637,11 +650,7 @@ impl<N: Scalar> Report<N> {
                         fin: [one(&f[0]), one(&f[1])],
                     }
                 }),
-            asked: if sections.asked.is_empty() {
-                asked::AskedReport::default()
-            } else {
-                asked::AskedReport::of(&c.exact(), &sections.asked)
-            },
+            asked: asked::AskedReport::default(),
             diagnostics: has(Section::Diagnostics).then(|| {
                 let (momentum_residual, energy_residual) = c.residuals();
                 let (solve_ns, repetitions) = time_solves(c);

@@ -7,11 +7,13 @@
 
 use serde::Serialize;
 
+use super::asked::{AskedError, AskedReport, Motion};
 use super::text::{Block, changes, header_units, pair, parts, typed};
 use super::{ChangeReport, Section, Sections};
 use crate::line::order::Order;
 use crate::line::separation::{Kind, Separation};
 use crate::values::quantity::Scalar;
+use crate::values::rational::Q;
 
 /// A separation's numbers. Field names are the JSON schema.
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -34,6 +36,9 @@ pub struct SeparationReport<N> {
     pub energy: Option<SeparationEnergy<N>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub changes: Option<ChangeReport<N>>,
+    /// A pendulum's swing (`--length`).
+    #[serde(flatten)]
+    pub asked: AskedReport<N>,
 }
 
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -63,7 +68,7 @@ pub struct SeparationEnergy<N> {
 impl<N: Scalar> SeparationReport<N> {
     /// The sections of `sections` that mean something for a separation; each value exact, and
     /// rounded once in binary64.
-    pub fn new(s: &Separation, sections: &Sections) -> SeparationReport<N> {
+    pub fn new(s: &Separation, sections: &Sections) -> Result<SeparationReport<N>, AskedError> {
         let one = |q: &crate::values::rational::Q| N::of_rational(q);
         let two = |p: &[crate::values::rational::Q; 2]| [one(&p[0]), one(&p[1])];
         let has = |x| sections.contains(x);
@@ -73,7 +78,18 @@ impl<N: Scalar> SeparationReport<N> {
         };
         let v = one(&s.v_com());
         let through = s.kind == Kind::PassThrough;
-        SeparationReport {
+        let asked = if sections.asked.is_empty() {
+            AskedReport::default()
+        } else {
+            let motion = Motion {
+                v_in: s.v_in(),
+                fin: s.fin.clone(),
+                crunch: Q::ZERO,
+                mu: s.reduced_mass(),
+            };
+            AskedReport::of(&motion, &sections.asked)?
+        };
+        Ok(SeparationReport {
             event: if through {
                 "pass-through"
             } else {
@@ -105,7 +121,8 @@ impl<N: Scalar> SeparationReport<N> {
                     sections.force_scale.as_ref(),
                 )
             }),
-        }
+            asked,
+        })
     }
 
     /// Text for people.
@@ -195,6 +212,9 @@ impl<N: Scalar> SeparationReport<N> {
         }
         if let Some(c) = self.changes.as_ref().filter(|_| shown(Section::Changes)) {
             changes(c, &s.units).render(&mut out);
+        }
+        for b in self.asked.blocks() {
+            b.render(&mut out);
         }
         out
     }

@@ -145,6 +145,29 @@ fn unit_size(unit: &str, kind: Kind) -> Option<Q> {
     }
 }
 
+/// A length (`--length`): `5 m`, `80 cm`, `3 ft` (a plain number is metres), above 0, in
+/// metres with the text as typed.
+pub fn length(text: &str, flag: &'static str) -> Result<(Q, String), DerivedError> {
+    let typed = text.trim().to_string();
+    let q = crate::values::units::parse(text, Dimension::Length).map_err(|error| {
+        DerivedError::Number {
+            flag,
+            text: typed.clone(),
+            error,
+        }
+    })?;
+    let metres = q.number.exact() * q.unit.map_or_else(|| int(1), |u| u.si());
+    if metres <= Q::ZERO {
+        return Err(DerivedError::NotPositive { flag, text: typed });
+    }
+    let shown = if q.unit.is_none() {
+        format!("{typed} m")
+    } else {
+        typed
+    };
+    Ok((metres, shown))
+}
+
 impl Derived {
     /// The value in SI, taking a plain number as SI already.
     pub fn si(&self) -> Q {
@@ -223,5 +246,13 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("has a unit, but the masses"), "{e}");
+        // 80 cm = 0.8 m; 3 ft = 0.9144 m; a plain number is metres.
+        assert_eq!(length("80 cm", "--length"), Ok((q("0.8"), "80 cm".into())));
+        assert_eq!(length("3 ft", "--length").unwrap().0, q("0.9144"));
+        assert_eq!(length("5", "--length"), Ok((q("5"), "5 m".into())));
+        let e = length("0 m", "--length").unwrap_err().to_string();
+        assert!(e.contains("--length '0 m' must be above 0"), "{e}");
+        let e = length("5 kg", "--length").unwrap_err().to_string();
+        assert!(e.contains("--length '5 kg'"), "{e}");
     }
 }

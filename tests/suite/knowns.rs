@@ -721,3 +721,203 @@ mod spring {
         );
     }
 }
+
+mod pendulum {
+    use super::*;
+
+    /// The `pendulum` object of `collide solve ARGS --format json`.
+    fn pendulum(args: &[&str]) -> Value {
+        let (code, j) = solve_json(args);
+        assert_eq!(code, 0, "{args:?}: {j}");
+        j["pendulum"].clone()
+    }
+
+    #[test]
+    fn verma_block_on_a_5_m_string() {
+        // H. C. Verma ch. 9 (the bullet that emerges at 220 m/s): the 2 kg block hangs on a
+        // 5 m string and rises 0.1 m, so cos(theta) = 1 - 0.1/5 = 0.98: theta =
+        // acos(0.98) = 11.4783409545336 degrees, and it moves x = sqrt(h (2L - h)) =
+        // sqrt(0.99) = 0.994987437106620 m sideways. Only the block was at rest: it alone swings.
+        let args = [
+            "-m",
+            "0.01 kg,2 kg",
+            "-v",
+            "500 m/s,0",
+            "--fin",
+            "?,height 0.1 m",
+            "--gravity",
+            "9.8",
+            "--pass-through",
+            "--length",
+            "5 m",
+        ];
+        let p = pendulum(&args);
+        let swings = p["swings"].as_array().unwrap();
+        assert_eq!((swings.len(), &swings[0]["body"]), (1, &json!(2)));
+        assert_close(
+            f(&swings[0]["angle_deg"]),
+            0.98f64.acos().to_degrees(),
+            REL,
+            "theta",
+        );
+        assert_close(f(&swings[0]["horizontal"]), 0.99f64.sqrt(), REL, "x");
+        assert!(swings[0].get("slack").is_none());
+        let p = pendulum(&[&args[..], &["--exact"]].concat());
+        assert_eq!(p["swings"][0]["height"], "1/10");
+        assert_eq!((&p["length"], &p["g"]), (&json!("5"), &json!("49/5")));
+        // The same swing in centimetres.
+        let mut cm = args;
+        cm[10] = "500 cm";
+        let p = pendulum(&cm);
+        assert_close(
+            f(&p["swings"][0]["angle_deg"]),
+            0.98f64.acos().to_degrees(),
+            REL,
+            "cm",
+        );
+    }
+
+    #[test]
+    fn ballistic_pendulum_angles_exactly_where_they_are_rational() {
+        // A 10 g bullet lodges in a 2 kg block on a 1 m string that rises 20 cm (g = 10): the
+        // pair leaves at sqrt(2 10 0.2) = 2 m/s, so v1 = 201 2 / 0.01 = 40200 cm/s = 402 m/s;
+        // cos(theta) = 0.8: x = sqrt(0.2 1.8) = 0.6 m exactly, theta = acos(0.8) =
+        // 36.869897645844021296855612559093... degrees (the 3-4-5 triangle).
+        let args = [
+            "-m",
+            "10 g,2 kg",
+            "-v",
+            "?,0",
+            "-e",
+            "0",
+            "--fin",
+            "height 20 cm,height 20 cm",
+            "--gravity",
+            "10",
+            "--length",
+            "1 m",
+            "--exact",
+        ];
+        let (code, j) = solve_json(&args);
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["solved"]["v1"], "402");
+        let s = &j["pendulum"]["swings"][0];
+        assert_eq!(s["horizontal"], "3/5");
+        assert!(
+            s["angle_deg"]
+                .as_str()
+                .unwrap()
+                .starts_with("36.86989764584402129"),
+            "{s}"
+        );
+        // Rising half the string: 60 degrees exactly (cos = 1/2), x = L sqrt(3)/2; to the
+        // horizontal (h = L): 90, x = L.
+        let p = pendulum(&[
+            "-m",
+            "1,1",
+            "-v",
+            "2,0",
+            "-e",
+            "0",
+            "--gravity",
+            "10",
+            "--length",
+            "0.1",
+            "--exact",
+        ]);
+        // V_COM = 1: h = 1/20 = L/2.
+        assert_eq!(p["swings"][0]["angle_deg"], "60");
+        assert!(
+            p["swings"][0]["horizontal"]
+                .as_str()
+                .unwrap()
+                .starts_with("0.0866025403784438646")
+        );
+        let p = pendulum(&[
+            "-m",
+            "1,1",
+            "-v",
+            "2,0",
+            "-e",
+            "0",
+            "--gravity",
+            "10",
+            "--length",
+            "0.05",
+            "--exact",
+        ]);
+        assert_eq!(
+            (&p["swings"][0]["angle_deg"], &p["swings"][0]["horizontal"]),
+            (&json!("90"), &json!("1/20"))
+        );
+    }
+
+    #[test]
+    fn two_bobs_both_swing_and_the_frame_does_not_matter() {
+        // Two bobs on 1 m strings meet at the bottom at 2 and -1 m/s, elastic and equal:
+        // they swap, FIN (-1, 2). With g = 10 they rise 0.05 and 0.2 m: cos = 0.95 and 0.8.
+        let args = [
+            "-m",
+            "1,1",
+            "-v",
+            "2,-1",
+            "--gravity",
+            "10",
+            "--length",
+            "1",
+        ];
+        for frame in ["lab", "com", "rest-in:2"] {
+            let p = pendulum(&[&args[..], &["--frame", frame]].concat());
+            let s = p["swings"].as_array().unwrap();
+            assert_eq!(s.len(), 2, "{frame}");
+            assert_close(
+                f(&s[0]["angle_deg"]),
+                0.95f64.acos().to_degrees(),
+                REL,
+                "body 1",
+            );
+            assert_close(
+                f(&s[1]["angle_deg"]),
+                0.8f64.acos().to_degrees(),
+                REL,
+                "body 2",
+            );
+            assert_eq!(f(&s[1]["horizontal"]), 0.6, "{frame}");
+        }
+        // Higher than the string (g = 10, 5 m/s: h = 1.25 > L = 1): a string goes slack.
+        let p = pendulum(&["-m", "1,1", "-v", "5,0", "--gravity", "10", "--length", "1"]);
+        assert_eq!(p["swings"][0]["slack"], true);
+        let (_, text, _) = run(&["-m", "1,1", "-v", "5,0", "--gravity", "10", "--length", "1"]);
+        assert!(text.contains("h > L: a string goes slack"), "{text}");
+    }
+
+    #[test]
+    fn swings_that_cannot_be_are_refused() {
+        // 10 m/s with g = 10: h = 5 m > 2 L = 2 m: over the top.
+        refused(
+            &[
+                "-m",
+                "1,1",
+                "-v",
+                "10,0",
+                "--gravity",
+                "10",
+                "--length",
+                "1",
+            ],
+            &["--length 1 m", "body 2 would rise 5 m", "over the top"],
+        );
+        refused(
+            &["-m", "1,1", "-v", "1,0", "--length", "0"],
+            &["--length '0' must be above 0"],
+        );
+        refused(
+            &["-m", "1,1", "-v", "1,0", "--length", "1 kg"],
+            &["--length '1 kg'"],
+        );
+        refused(
+            &["-m", "wall,1", "-v", "0,-1", "--length", "1"],
+            &["--length", "wall"],
+        );
+    }
+}
