@@ -884,7 +884,8 @@ pub struct RigidArgs {
     )]
     pub spin: Option<String>,
 
-    /// Coulomb friction coefficient mu >= 0 at the contact
+    /// Coulomb friction coefficient mu >= 0 at the contact; with --show slides on a rail, the
+    /// floor's kinetic friction, which stops each body after the collision
     #[arg(
         long,
         value_name = "MU",
@@ -911,12 +912,17 @@ pub struct RigidArgs {
 impl RigidArgs {
     /// Whether the case is a rigid impact.
     pub fn active(&self) -> bool {
+        self.friction.is_some() || self.active_beyond_friction()
+    }
+
+    /// Whether a flag other than --friction makes the case a rigid impact (with `--show slides`
+    /// on a rail, --friction is the floor's).
+    pub fn active_beyond_friction(&self) -> bool {
         self.target.is_some()
             || self.pivot.is_some()
             || self.hit_at.is_some()
             || self.ball.is_some()
             || self.spin.is_some()
-            || self.friction.is_some()
             || self.law.is_some()
             || self.tangential_restitution.is_some()
     }

@@ -16,15 +16,35 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
+    // With --show slides, --friction is the floor's (two bodies on a rail), not a contact's.
+    let slides = args.show.contains(&collide::report::Section::Slides);
+    let floor = slides.then_some(args.rigid.friction.as_ref()).flatten();
+    if slides {
+        match floor {
+            _ if args.rigid.active_beyond_friction() || args.case.spatial() => anyhow::bail!(
+                "--show slides is for two bodies on a rail (with --friction MU, the floor's), not \
+                 rigid bodies, the plane, space or more than two bodies"
+            ),
+            Some(mu) if mu.exact() > collide::values::rational::Q::ZERO => {}
+            Some(mu) => anyhow::bail!(
+                "--friction {mu}: the floor's coefficient of kinetic friction must be above 0 \
+                 (a frictionless floor never stops a slide)"
+            ),
+            None => anyhow::bail!(
+                "--show slides needs --friction MU, the floor's coefficient of kinetic friction"
+            ),
+        }
+    }
+    let rigid = args.rigid.active() && floor.is_none();
     if let Some(flag) = (args.knowns.knowns().first_flag()).or(args.knowns.first_asked(false))
-        && (args.rigid.active() || args.case.spatial())
+        && (rigid || args.case.spatial())
     {
         anyhow::bail!(
             "{flag} is for two bodies on a rail (not rigid bodies, the plane, space or more than \
              two bodies)"
         );
     }
-    if args.rigid.active() {
+    if rigid {
         return super::rigid_solve::run(&args);
     }
     if args.case.spatial() {
@@ -47,14 +67,13 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     ));
     sections.energy_scale = units.energy_scale();
     sections.force_scale = units.force_scale();
-    sections.asked = args.knowns.asked(
-        &units,
-        &sections
-            .heights
-            .as_ref()
-            .map(|h| h.g.clone())
-            .unwrap_or_default(),
-    );
+    let g = sections
+        .heights
+        .as_ref()
+        .map(|h| h.g.clone())
+        .unwrap_or_default();
+    sections.asked = args.knowns.asked(&units, &g);
+    sections.asked.friction = floor.map(|mu| (mu.exact(), mu.to_string()));
     let (case, unknowns) = match &posed {
         // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
         // denominator, and a typed -e would print FIN = IN as if it were an answer.
@@ -123,6 +142,9 @@ fn special(
         args.plot.as_ref().map(|_| "--plot"),
         args.knowns
             .first_asked(matches!(event, Special::Separation(_))),
+        (matches!(event, Special::Wall(_))
+            && args.show.contains(&collide::report::Section::Slides))
+        .then_some("--show slides"),
     ];
     if let Some(flag) = extra.into_iter().flatten().next() {
         let what = match event {

@@ -126,7 +126,8 @@ pub enum ProblemError {
     #[error("gravity {0}: expected a number > 0 in m/s^2 (9.80665 standard, 9.8 or 9.81)")]
     Gravity(String),
     #[error(
-        "the speed of a fall through {height} m, sqrt(2 g h) = sqrt({two_gh}) m/s, is irrational, \
+        "the speed of a fall through {height} m (or of a slide, with mu d = {height} m), \
+         sqrt(2 g h) = sqrt({two_gh}) m/s, is irrational, \
          and exact arithmetic (--exact, a scene's exact = true) holds rationals only: compute in \
          binary64 (the speed within an ulp), or choose g and h with 2 g h a square (g = 10, \
          h = 0.2 m: 2 m/s)"

@@ -1,6 +1,7 @@
 //! What a homework problem asks beyond the lecture's sections (issue 27 §1), each shown when
 //! its flag is given: a spring between the bodies (`--spring K`: `spring`), a pendulum's swing
-//! (`--length L`: `pendulum`). Values are in SI (metres, seconds, degrees), computed exactly
+//! (`--length L`: `pendulum`), the slides on a rough floor after it (`--show slides --friction
+//! MU`: `slides`). Values are in SI (metres, seconds, degrees), computed exactly
 //! from the event in the lab and rounded once; irrational ones (roots, pi, angles) are taken to
 //! 30 digits first, and marked approximate in exact mode.
 
@@ -19,6 +20,9 @@ pub struct Asked {
     pub spring: Option<(Q, String)>,
     /// The string a body at rest hangs on: `L` in metres, and as typed (`--length`).
     pub length: Option<(Q, String)>,
+    /// The floor's coefficient of kinetic friction, for the slides after the event (`--show
+    /// slides --friction MU`), and as typed.
+    pub friction: Option<(Q, String)>,
     /// `g` in m/s^2.
     pub g: Q,
     /// The case's mass unit in kg.
@@ -34,6 +38,7 @@ impl Default for Asked {
         Asked {
             spring: None,
             length: None,
+            friction: None,
             g: crate::values::units::STANDARD_GRAVITY
                 .parse::<crate::values::number::Number>()
                 .map(|n| n.exact())
@@ -48,7 +53,7 @@ impl Default for Asked {
 impl Asked {
     /// Nothing asked.
     pub fn is_empty(&self) -> bool {
-        self.spring.is_none() && self.length.is_none()
+        self.spring.is_none() && self.length.is_none() && self.friction.is_none()
     }
 
     /// For a case in `units`.
@@ -82,6 +87,8 @@ pub struct AskedReport<N> {
     pub spring: Option<SpringReport<N>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pendulum: Option<PendulumReport<N>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slides: Option<SlidesReport<N>>,
     /// What was asked, for the text (not part of the JSON schema).
     #[serde(skip)]
     pub asked: Option<Asked>,
@@ -122,6 +129,15 @@ pub struct SwingReport<N> {
     /// `h > L`: a string goes slack before the bob gets there (a rod would).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub slack: bool,
+}
+
+/// `slides`: how far each body slides after the event, `f^2 / (2 mu g)`, in metres.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SlidesReport<N> {
+    pub mu: N,
+    /// `g` in m/s^2.
+    pub g: N,
+    pub fin: [N; 2],
 }
 
 /// Why what was asked has no answer.
@@ -175,9 +191,21 @@ impl<N: Scalar> AskedReport<N> {
             Some((l, typed)) => Some(Self::pendulum(m, asked, l, typed)?),
             None => None,
         };
+        let slides = asked.friction.as_ref().map(|(mu, _)| {
+            let d = |f: &Q| {
+                let f = f * &asked.velocity_si;
+                N::of_rational(&(&f * &f / (int(2) * mu * &asked.g)))
+            };
+            SlidesReport {
+                mu: N::of_rational(mu),
+                g: N::of_rational(&asked.g),
+                fin: [d(&m.fin[0]), d(&m.fin[1])],
+            }
+        });
         Ok(AskedReport {
             spring,
             pendulum,
+            slides,
             asked: Some(asked.clone()),
         })
     }
@@ -289,6 +317,19 @@ impl<N: Scalar> AskedReport<N> {
                     "= sqrt(h (2L - h)), how far the bob moves sideways",
                 );
             }
+            out.push(b);
+        }
+        if let (Some(sl), Some((_, typed))) = (&self.slides, &asked.friction) {
+            let mut b = Block::new(format!(
+                "Slides afterwards (mu = {typed}, g = {} m/s^2{})",
+                sl.g.show(),
+                asked.units_note()
+            ));
+            b.row(
+                "FIN  d = f^2 / (2 mu g)",
+                format!("{} m", super::text::pair(&sl.fin)),
+                "how far each body slides before friction stops it",
+            );
             out.push(b);
         }
         out

@@ -58,6 +58,8 @@ pub enum Section {
     Changes,
     /// The height each IN and FIN speed corresponds to, v^2 / 2g (how high a pendulum swings or a ball rebounds)
     Heights,
+    /// With --friction MU: how far each body slides after the collision before friction stops it, f^2 / (2 mu g)
+    Slides,
     /// Self-check: residuals of momentum and energy conservation, and the solve's run time
     Diagnostics,
     /// In the plane or in space: the angle between the final velocities, how far each body turned
@@ -90,6 +92,7 @@ impl Section {
             Section::Products => &["products"],
             Section::Changes => &["changes"],
             Section::Heights => &["heights"],
+            Section::Slides => &["slides"],
             Section::Diagnostics => &["diagnostics"],
             Section::Angles => &["angle_between_deg"],
             Section::All => &[],
@@ -101,7 +104,7 @@ impl Section {
     pub fn of_json_key(key: &str) -> Option<Section> {
         Section::EVERY
             .into_iter()
-            .chain([Section::Heights, Section::Diagnostics])
+            .chain([Section::Heights, Section::Slides, Section::Diagnostics])
             .find(|s| s.json_keys().contains(&key))
     }
 }

@@ -405,18 +405,39 @@ impl HeightScale {
 }
 
 /// `height 2 m`, `-height 6 ft` (a speed from a height, signed): the height in metres, exact.
+/// `slide 5 cm mu 0.62` (a speed that friction `mu` stops within a distance `d`: `sqrt(2 mu g d)`,
+/// issue 27 §1) is the height `mu d`, since `v^2 = 2 g (mu d)`.
 fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
     let (sign, rest) = match t.strip_prefix('-') {
         Some(r) => ("-", r.trim_start()),
         None => ("", t.strip_prefix('+').unwrap_or(t).trim_start()),
     };
-    let rest = rest.strip_prefix("height")?;
+    let is_slide = rest.starts_with("slide");
+    let (rest, mu) = match rest.strip_prefix("slide") {
+        Some(slide) => {
+            let Some((d, mu)) = slide.split_once(" mu ").or_else(|| slide.split_once(" μ "))
+            else {
+                return Some(Err(QuantityError::Slide(t.to_string())));
+            };
+            match mu.trim().parse::<Number>() {
+                Ok(mu) if mu.exact() > Q::ZERO => (d, mu.exact()),
+                _ => return Some(Err(QuantityError::Slide(t.to_string()))),
+            }
+        }
+        None => (
+            rest.strip_prefix("height")?,
+            crate::values::rational::int(1),
+        ),
+    };
     Some((|| {
         let q = parse(rest, Dimension::Length)?;
         let unit = q
             .unit
             .map_or_else(|| crate::values::rational::int(1), Unit::si);
-        let metres = q.number.exact() * unit;
+        let metres = q.number.exact() * unit * mu;
+        if metres < Q::ZERO && is_slide {
+            return Err(QuantityError::Slide(t.to_string()));
+        }
         if metres < Q::ZERO {
             return Err(QuantityError::NegativeHeight(t.to_string()));
         }
@@ -446,6 +467,12 @@ pub enum QuantityError {
         printable(.0)
     )]
     NegativeHeight(String),
+    #[error(
+        "'{}': a speed from a slide is 'slide D mu MU' (the distance friction MU > 0 stops it \
+         in, e.g. 'slide 5 cm mu 0.62': sqrt(2 mu g d)); a sign gives the direction",
+        printable(.0)
+    )]
+    Slide(String),
 }
 
 /// Splits `4 t`, `60mph`, `12 N s` or `1e3` into its number and the rest (a unit name, trimmed;
@@ -831,6 +858,23 @@ mod tests {
                 .map(Unit::name),
             Some("long ton")
         );
+    }
+
+    #[test]
+    fn slides_are_heights_of_mu_d() {
+        // 'slide 5 cm mu 0.62': v^2 = 2 mu g d = 2 g (0.62 0.05), the height 0.031 m, signed.
+        let h = |t: &str| parse(t, Dimension::Velocity).map(|q| (q.number.exact(), q.height));
+        let q = |s: &str| s.parse::<Number>().unwrap().exact();
+        assert_eq!(h("slide 5 cm mu 0.62"), Ok((q("0.031"), true)));
+        assert_eq!(h("-slide 2 ft mu 1/2"), Ok((q("-0.3048"), true)));
+        for bad in [
+            "slide 5 cm",
+            "slide 5 cm mu 0",
+            "slide -5 cm mu 1",
+            "slide 5 kg mu 1",
+        ] {
+            assert!(h(bad).is_err(), "{bad}");
+        }
     }
 
     #[test]

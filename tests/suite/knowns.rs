@@ -921,3 +921,207 @@ mod pendulum {
         );
     }
 }
+
+mod slides {
+    use super::*;
+
+    #[test]
+    fn clay_and_bullets_that_slide_to_a_stop() {
+        // Serway & Jewett 9.?: a 12.0 g wad of clay sticks to a 100 g block, which slides 7.50 m
+        // on a floor with mu = 0.650 (g = 9.8): the pair left at sqrt(2 0.65 9.8 7.5) =
+        // sqrt(95.55) m/s, so the clay came at (112/12) sqrt(95.55) = 91.2330349526238 m/s
+        // (the book: 91.2 m/s).
+        let slide = "slide 7.50 m mu 0.650";
+        let fin = format!("{slide},{slide}");
+        let (code, j) = solve_json(&[
+            "-m",
+            "12.0 g,100 g",
+            "-v",
+            "?,0",
+            "-e",
+            "0",
+            "--fin",
+            &fin,
+            "--gravity",
+            "9.8",
+        ]);
+        assert_eq!(code, 0, "{j}");
+        assert_close(
+            f(&j["solved"]["v1"]),
+            112.0 / 12.0 * 95.55f64.sqrt(),
+            REL,
+            "clay",
+        );
+        // Halliday, Resnick & Walker 9.?: a 4.5 g bullet stops in a 2.4 kg block that slides
+        // 1.8 m with mu = 0.20: the block left at sqrt(2 0.2 9.8 1.8) = sqrt(7.056) = 2.656 m/s
+        // (the book: 2.7) and the bullet came at (2.4045/0.0045) sqrt(7.056) (the book:
+        // 1.4e3 m/s). --show slides gives the 1.8 m back, for both (they move together).
+        let slide = "slide 1.8 m mu 0.20";
+        let fin = format!("{slide},{slide}");
+        let args = [
+            "-m",
+            "4.5 g,2.4 kg",
+            "-v",
+            "?,0",
+            "-e",
+            "0",
+            "--fin",
+            &fin,
+            "--gravity",
+            "9.8",
+            "--show",
+            "vectors,slides",
+            "--friction",
+            "0.20",
+        ];
+        let (code, j) = solve_json(&args);
+        assert_eq!(code, 0, "{j}");
+        assert_close(
+            f(&j["solved"]["v1"]),
+            2.4045 / 0.0045 * 7.056f64.sqrt(),
+            REL,
+            "bullet",
+        );
+        assert_close(f(&j["fin"][0]), 7.056f64.sqrt(), REL, "block");
+        for d in j["slides"]["fin"].as_array().unwrap() {
+            assert_close(f(d), 1.8, REL, "slide back");
+        }
+        let (_, text, _) = run(&args);
+        assert!(
+            text.contains("FIN  d = f^2 / (2 mu g)  (1.8, 1.8) m"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn slides_exactly_where_they_are_rational() {
+        // g = 10, mu = 0.5, 40 cm: sqrt(2 0.5 10 0.4) = 2 m/s exactly; signed '-slide' is -2.
+        let (code, j) = solve_json(&[
+            "-m",
+            "1,1",
+            "-v",
+            "slide 40 cm mu 0.5,-slide 0.4 m mu 0.5",
+            "--gravity",
+            "10",
+            "--exact",
+        ]);
+        assert_eq!((code, &j["in"]), (0, &json!(["2", "-2"])));
+        // Pieces from rest, 1 and 2 kg, f1 = -2: f2 = 1; they slide 4/(2 0.5 10) = 2/5 and
+        // 1/10 m. In km/h: 36 km/h = 10 m/s slides 100/10 = 10 m.
+        let (code, j) = solve_json(&[
+            "-m",
+            "1,2",
+            "-v",
+            "0,0",
+            "--fin",
+            "-2,?",
+            "--show",
+            "slides",
+            "--friction",
+            "0.5",
+            "--gravity",
+            "10",
+            "--exact",
+        ]);
+        assert_eq!(code, 0);
+        assert_eq!(
+            j["slides"],
+            json!({"mu": "1/2", "g": "10", "fin": ["2/5", "1/10"]})
+        );
+        let (_, j) = solve_json(&[
+            "-m",
+            "1 kg,1 kg",
+            "-v",
+            "36 km/h,0",
+            "--show",
+            "slides",
+            "--friction",
+            "0.5",
+            "--gravity",
+            "10",
+            "--exact",
+        ]);
+        // Elastic, equal masses: FIN (0, 36 km/h): body 2 slides 10 m, body 1 stays.
+        assert_eq!(j["slides"]["fin"], json!(["0", "10"]));
+        // Typed the other way round, the same slides swapped.
+        let (_, j) = solve_json(&[
+            "-m",
+            "1 kg,1 kg",
+            "-v",
+            "0,36 km/h",
+            "--show",
+            "slides",
+            "--friction",
+            "0.5",
+            "--gravity",
+            "10",
+            "--exact",
+        ]);
+        assert_eq!(j["slides"]["fin"], json!(["10", "0"]));
+    }
+
+    #[test]
+    fn bad_slides_are_refused() {
+        for bad in [
+            "slide 5 cm",
+            "slide 5 cm mu 0",
+            "slide 5 cm mu x",
+            "slide -5 cm mu 0.5",
+        ] {
+            refused(
+                &["-m", "1,1", "-v", &format!("{bad},0")],
+                &[bad, "slide D mu MU"],
+            );
+        }
+        refused(
+            &["-m", "1,1", "-v", "4,0", "--show", "slides"],
+            &["--show slides needs --friction"],
+        );
+        refused(
+            &[
+                "-m",
+                "1,1",
+                "-v",
+                "4,0",
+                "--show",
+                "slides",
+                "--friction",
+                "0",
+            ],
+            &["--friction 0", "above 0"],
+        );
+        refused(
+            &[
+                "-m",
+                "1,1",
+                "-v",
+                "4,0",
+                "--show",
+                "slides",
+                "--friction",
+                "0.5",
+                "--target",
+                "rod 1 m",
+            ],
+            &["--show slides", "rail"],
+        );
+        refused(
+            &[
+                "-m",
+                "wall,1",
+                "-v",
+                "0,-4",
+                "--show",
+                "slides",
+                "--friction",
+                "0.5",
+            ],
+            &["--show slides", "wall"],
+        );
+        // Without --show slides, --friction is a rigid contact's, as before: it wants a target.
+        refused(
+            &["-m", "1,1", "-v", "4,0", "--friction", "0.5"],
+            &["--target SHAPE"],
+        );
+    }
+}
