@@ -4,6 +4,7 @@
 
 pub mod compensated;
 pub mod derived;
+pub mod heights;
 pub mod number;
 #[cfg(feature = "cli")]
 pub mod output;

@@ -4,6 +4,7 @@
 mod common;
 
 mod accuracy;
+mod asked;
 mod cli;
 mod contact;
 mod exact_and_accuracy;

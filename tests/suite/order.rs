@@ -7,21 +7,8 @@
 
 use crate::common;
 
-use common::{collide, stdout};
+use common::{collide, solve_json, stdout};
 use serde_json::{Value, json};
-
-/// `collide solve ARGS --format json` (any exit code), with the code.
-fn solve_json(args: &[&str]) -> (i32, Value) {
-    let out = collide()
-        .args([&["solve"], args, &["--format", "json"]].concat())
-        .output()
-        .unwrap();
-    let text = String::from_utf8(out.stdout).unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        serde_json::from_str(&text).unwrap_or(Value::Null),
-    )
-}
 
 /// `v` with every pair `[body 1, body 2]` swapped (and a diagonal tensor's entries, an
 /// ellipse's radii), keys that are not pairs unchanged: what the report of the case typed in the other order must be.
