@@ -96,6 +96,8 @@ pub enum ProblemError {
     NoMasses,
     #[error("unknowns and --fin need --masses M1,M2 (not --inertia)")]
     UnknownsNeedMasses,
+    #[error("{0} needs --masses M1,M2 (not --inertia): its laws hold each body's own mass")]
+    KnownNeedsMasses(&'static str),
     #[error(
         "'?' marks an unknown: `collide solve` solves for unknowns (with --fin for final velocities)"
     )]
@@ -244,6 +246,9 @@ impl Problem {
         if !(self.fin.is_some() || self.has_unknowns() || laws != Laws::default()) {
             let case = build(&m, &v, e, inertia, units)?;
             return Ok(Posed::Collision(case, None));
+        }
+        if let Some(flag) = self.knowns.first_flag().filter(|_| inertia.is_some()) {
+            return Err(ProblemError::KnownNeedsMasses(flag));
         }
         if inertia.is_some() || m.is_empty() {
             return Err(ProblemError::UnknownsNeedMasses);

@@ -353,6 +353,10 @@ mod impulse {
             &["--impulse", "wall"],
         );
         refused(
+            &["--inertia", "3,0;0,2", "-v", "6,0", "--impulse", "12"],
+            &["--impulse needs --masses"],
+        );
+        refused(
             &["-m", "?,?", "-v", "6,0", "--fin", "?,6", "--impulse", "12"],
             &["4 unknowns", "impulse1, impulse2 and restitution"],
         );
