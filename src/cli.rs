@@ -8,6 +8,9 @@ use std::path::PathBuf;
 use clap::builder::{PossibleValue, StringValueParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod knowns;
+pub use knowns::KnownArgs;
+
 use collide::line::case::parse_inertia;
 use collide::line::frame::Frame;
 use collide::line::inertia::InertiaTensor;
@@ -93,7 +96,7 @@ fn parse_sig(s: &str) -> Result<u8, String> {
 pub enum Command {
     /// Solve one collision given on the command line
     #[command(
-        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'\n  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show vectors,heights\n  collide solve -m '50 g,2 kg' -v '10 m/s,0' --target 'door 0.9 m' --pivot end --hit-at '0.6 m'"
+        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'\n  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show vectors,heights\n  collide solve -m '0.01 kg,2 kg' -v '500 m/s,0' --fin '?,height 0.1 m' --pass-through --length '5 m'\n  collide solve -m '1 kg,2 kg' -v '0,0 m/s' --fin '?,?' --released '48 J'\n  collide solve -m '50 g,2 kg' -v '10 m/s,0' --target 'door 0.9 m' --pivot end --hit-at '0.6 m'"
     )]
     Solve(SolveArgs),
     /// Solve TOML scene files and check their [expect] numbers
@@ -794,6 +797,9 @@ pub struct SolveArgs {
     pub plot: Option<PathBuf>,
 
     #[command(flatten)]
+    pub knowns: KnownArgs,
+
+    #[command(flatten)]
     pub rigid: RigidArgs,
 
     /// Output format
@@ -844,7 +850,8 @@ pub struct RigidArgs {
     )]
     pub spin: Option<String>,
 
-    /// Coulomb friction coefficient mu >= 0 at the contact
+    /// Coulomb friction coefficient mu >= 0 at the contact; with --show slides on a rail, the
+    /// floor's kinetic friction, which stops each body after the collision
     #[arg(
         long,
         value_name = "MU",
@@ -871,12 +878,17 @@ pub struct RigidArgs {
 impl RigidArgs {
     /// Whether the case is a rigid impact.
     pub fn active(&self) -> bool {
+        self.friction.is_some() || self.active_beyond_friction()
+    }
+
+    /// Whether a flag other than --friction makes the case a rigid impact (with `--show slides`
+    /// on a rail, --friction is the floor's).
+    pub fn active_beyond_friction(&self) -> bool {
         self.target.is_some()
             || self.pivot.is_some()
             || self.hit_at.is_some()
             || self.ball.is_some()
             || self.spin.is_some()
-            || self.friction.is_some()
             || self.law.is_some()
             || self.tangential_restitution.is_some()
     }

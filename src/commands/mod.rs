@@ -95,6 +95,7 @@ impl CaseArgs {
             gravity: self.gravity.clone(),
             energy_unit: self.energy_unit,
             exact,
+            knowns: Default::default(),
         })
     }
 

@@ -253,7 +253,9 @@ fn solve_stages(scene: StagesScene) -> Result<Checked> {
                     render_special(Special::Wall(wall), &run.show, scene.exact, solved.as_ref());
                 ("wall", rendered.with_context(at)?)
             }
-            Posed::Separation(..) => unreachable!("a separation is refused when solved"),
+            Posed::Separation(..) | Posed::Separations(..) => {
+                unreachable!("a separation is refused when solved")
+            }
         };
         for e in &stage.expect {
             let mut c = e.check(&json).map_err(|message| SceneError {

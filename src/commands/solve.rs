@@ -16,7 +16,35 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
-    if args.rigid.active() {
+    // With --show slides, --friction is the floor's (two bodies on a rail), not a contact's.
+    let slides = args.show.contains(&collide::report::Section::Slides);
+    let floor = slides.then_some(args.rigid.friction.as_ref()).flatten();
+    if slides {
+        match floor {
+            _ if args.rigid.active_beyond_friction() || args.case.spatial() => anyhow::bail!(
+                "--show slides is for two bodies on a rail (with --friction MU, the floor's), not \
+                 rigid bodies, the plane, space or more than two bodies"
+            ),
+            Some(mu) if mu.exact() > collide::values::rational::Q::ZERO => {}
+            Some(mu) => anyhow::bail!(
+                "--friction {mu}: the floor's coefficient of kinetic friction must be above 0 \
+                 (a frictionless floor never stops a slide)"
+            ),
+            None => anyhow::bail!(
+                "--show slides needs --friction MU, the floor's coefficient of kinetic friction"
+            ),
+        }
+    }
+    let rigid = args.rigid.active() && floor.is_none();
+    if let Some(flag) = (args.knowns.knowns().first_flag()).or(args.knowns.first_asked(false))
+        && (rigid || args.case.spatial())
+    {
+        anyhow::bail!(
+            "{flag} is for two bodies on a rail (not rigid bodies, the plane, space or more than \
+             two bodies)"
+        );
+    }
+    if rigid {
         return super::rigid_solve::run(&args);
     }
     // Final velocities given as vectors make the case one in the plane too (`-v 0,0 --fin
@@ -25,16 +53,14 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         return super::space_solve::run(&args);
     }
     args.frame.on_line()?;
-    let posed = args
-        .case
-        .problem(args.fin.as_ref(), args.exact)?
-        .solve(args.case.inertia.clone())?;
+    let mut problem = args.case.problem(args.fin.as_ref(), args.exact)?;
+    problem.knowns = args.knowns.knowns();
+    let posed = problem.solve(args.case.inertia.clone())?;
     let mut sections = Sections::new(if args.show.is_empty() {
         collide::report::Section::DEFAULT.to_vec()
     } else {
         args.show.clone()
     });
-    sections.asked = !args.show.is_empty();
     sections.contact_time = args.contact_time.clone();
     let units = posed.units().clone();
     sections.heights = Some(collide::values::units::HeightScale::new(
@@ -43,6 +69,13 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     ));
     sections.energy_scale = units.energy_scale();
     sections.force_scale = units.force_scale();
+    let g = sections
+        .heights
+        .as_ref()
+        .map(|h| h.g.clone())
+        .unwrap_or_default();
+    sections.asked = args.knowns.asked(&units, &g);
+    sections.asked.friction = floor.map(|mu| (mu.exact(), mu.to_string()));
     let (case, unknowns) = match &posed {
         // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
         // denominator, and a typed -e would print FIN = IN as if it were an answer.
@@ -66,6 +99,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         Posed::Wall(w, solved) => {
             return special(Special::Wall(w), solved.as_ref(), &sections, &args);
         }
+        Posed::Separations(pair) => return two_ways(pair, &sections, &args),
     };
     // Given data that contradict a checked law fail like a failed [expect] (exit 1), and no
     // collision is printed: one recomputed from e would differ from the given FIN.
@@ -108,9 +142,17 @@ fn special(
         (args.frame != collide::line::frame::Frame::Lab).then_some("--frame"),
         args.reverse.then_some("--reverse"),
         args.plot.as_ref().map(|_| "--plot"),
+        args.knowns
+            .first_asked(matches!(event, Special::Separation(_))),
+        (matches!(event, Special::Wall(_))
+            && args.show.contains(&collide::report::Section::Slides))
+        .then_some("--show slides"),
     ];
     if let Some(flag) = extra.into_iter().flatten().next() {
         let what = match event {
+            Special::Separation(s) if s.kind == collide::line::separation::Kind::PassThrough => {
+                "one body passes through the other, and only momentum holds"
+            }
             Special::Separation(_) => {
                 "the bodies start together (V1 = V2) and are pushed apart, a separation with e \
                  undefined"
@@ -137,6 +179,47 @@ fn special(
             solved::annotate(&mut json, &units, solved, args.exact);
             json::render(&json)
         }
+    };
+    Ok(Outcome { stdout, status: 0 })
+}
+
+/// A separation with the energy released given and both final velocities unknown: both ways
+/// the pieces can part, labelled by which is on the left (JSON `{"solutions": [...]}`).
+fn two_ways(
+    pair: &[(
+        collide::line::separation::Separation,
+        collide::line::unknowns::Solved,
+    ); 2],
+    sections: &Sections,
+    args: &SolveArgs,
+) -> Result<Outcome> {
+    let labels = [
+        "Solution 1: body 1 on the left, body 2 on the right (f1 < f2)",
+        "Solution 2: body 1 on the right, body 2 on the left (f1 > f2)",
+    ];
+    let mut text = collide::report::text::paragraph(
+        "Two solutions: the energy released fixes the relative speed |f1 - f2|, not which \
+         piece ends up on the right",
+    );
+    let mut solutions = Vec::new();
+    for ((s, solved), label) in pair.iter().zip(labels) {
+        let Outcome { stdout, status } =
+            special(Special::Separation(s), Some(solved), sections, args)?;
+        if status != 0 {
+            return Ok(Outcome { stdout, status });
+        }
+        match args.format {
+            Format::Text => {
+                text.push('\n');
+                text.push_str(&collide::report::text::paragraph(&format!("{label}:")));
+                text.push_str(&stdout);
+            }
+            Format::Json => solutions.push(serde_json::from_str::<serde_json::Value>(&stdout)?),
+        }
+    }
+    let stdout = match args.format {
+        Format::Text => text,
+        Format::Json => json::render(&serde_json::json!({ "solutions": solutions })),
     };
     Ok(Outcome { stdout, status: 0 })
 }

@@ -7,10 +7,12 @@ use crate::values::rational::Q;
 
 use crate::line::case::Case;
 use crate::line::inertia::{InertiaError, InertiaTensor, Mass, MassError};
+use crate::line::knowns::Laws;
 use crate::line::restitution::{Restitution, RestitutionError};
-use crate::line::separation::Separation;
-use crate::line::unknowns::{Solved, UnknownError, Var, solve as solve_unknowns};
+use crate::line::separation::{Kind, Separation};
+use crate::line::unknowns::{Solved, UnknownError, Var};
 use crate::line::wall::{WallCase, WallProblem};
+use crate::values::derived::Derived;
 use crate::values::number::{Given, Number, NumberError};
 use crate::values::units::{Pair, ResolveError, Units, resolve};
 
@@ -33,6 +35,29 @@ pub struct Problem {
     /// Exact arithmetic follows (`--exact`): a velocity typed as a height whose speed
     /// `sqrt(2 g h)` is irrational is refused, since no rational holds it.
     pub exact: bool,
+    /// What the problem gives beyond masses, velocities and restitution (`line::knowns`).
+    pub knowns: Knowns,
+}
+
+/// Knowns a problem may give beyond masses, velocities and restitution, as typed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Knowns {
+    /// One body passes through the other (`--pass-through`).
+    pub pass_through: bool,
+    /// The impulse on body 2 (`--impulse`).
+    pub impulse: Option<Derived>,
+    /// The energy released in a separation (`--released`).
+    pub released: Option<Derived>,
+}
+
+impl Knowns {
+    /// The flag of the first known given, for errors (`None`: none given).
+    pub fn first_flag(&self) -> Option<&'static str> {
+        let flag = |d: &Option<Derived>| d.as_ref().map(|d| d.kind.flag());
+        (self.pass_through.then_some("--pass-through"))
+            .or(flag(&self.impulse))
+            .or(flag(&self.released))
+    }
 }
 
 /// What a solved problem describes.
@@ -46,6 +71,10 @@ pub enum Posed {
     Separation(Separation, Solved),
     /// A body against a wall (an immovable body), with what was solved.
     Wall(WallCase, Option<Solved>),
+    /// A separation with the energy released given and both final velocities unknown: the
+    /// energy fixes the relative speed, not which piece ends up ahead, so there are two (body 1
+    /// on the left, then on the right).
+    Separations(Box<[(Separation, Solved); 2]>),
 }
 
 impl Posed {
@@ -54,6 +83,7 @@ impl Posed {
         match self {
             Posed::Collision(case, _) => &case.units,
             Posed::Separation(s, _) => &s.units,
+            Posed::Separations(pair) => &pair[0].0.units,
             Posed::Wall(w, _) => &w.units,
         }
     }
@@ -66,12 +96,29 @@ pub enum ProblemError {
     NoMasses,
     #[error("unknowns and --fin need --masses M1,M2 (not --inertia)")]
     UnknownsNeedMasses,
+    #[error("{0} needs --masses M1,M2 (not --inertia): its laws hold each body's own mass")]
+    KnownNeedsMasses(&'static str),
     #[error(
         "'?' marks an unknown: `collide solve` solves for unknowns (with --fin for final velocities)"
     )]
     UnknownsOnlyInSolve,
     #[error("a wall (an immovable body) is for `collide solve` (and `collide track --left-wall`)")]
     WallOnlyInSolve,
+    #[error(
+        "{0}: one body is a wall (immovable), so momentum says nothing; {0} needs two movable bodies"
+    )]
+    KnownWithWall(&'static str),
+    #[error(
+        "--released {0}: the energy released is a known of bodies that start together (an \
+         explosion, a recoil: V1 = V2); {1}"
+    )]
+    ReleasedNeedsSeparation(String, String),
+    #[error(
+        "--released {text}: the pieces separate at the relative speed sqrt(2 E / mu) = \
+         sqrt({square}), which is irrational, and exact arithmetic (--exact) holds rationals \
+         only: compute in binary64 (within an ulp), or choose E with 2 E / mu a square"
+    )]
+    IrrationalRelease { text: String, square: String },
     #[error("two walls: at most one body can be immovable")]
     TwoWalls,
     #[error("a wall needs --masses M1,wall (not --inertia)")]
@@ -81,7 +128,8 @@ pub enum ProblemError {
     #[error("gravity {0}: expected a number > 0 in m/s^2 (9.80665 standard, 9.8 or 9.81)")]
     Gravity(String),
     #[error(
-        "the speed of a fall through {height} m, sqrt(2 g h) = sqrt({two_gh}) m/s, is irrational, \
+        "the speed of a fall through {height} m (or of a slide, with mu d = {height} m), \
+         sqrt(2 g h) = sqrt({two_gh}) m/s, is irrational, \
          and exact arithmetic (--exact, a scene's exact = true) holds rationals only: compute in \
          binary64 (the speed within an ulp), or choose g and h with 2 g h a square (g = 10, \
          h = 0.2 m: 2 m/s)"
@@ -95,6 +143,8 @@ pub enum ProblemError {
     },
     #[error(transparent)]
     Resolve(#[from] ResolveError),
+    #[error(transparent)]
+    Derived(#[from] crate::values::derived::DerivedError),
     #[error(transparent)]
     EnergyUnit(#[from] crate::values::units::EnergyUnitError),
     #[error(transparent)]
@@ -125,7 +175,9 @@ impl Problem {
         }
         match self.solve(inertia)? {
             Posed::Collision(case, _) => Ok(case),
-            Posed::Separation(..) => Err(ProblemError::UnknownsOnlyInSolve),
+            Posed::Separation(..) | Posed::Separations(..) => {
+                Err(ProblemError::UnknownsOnlyInSolve)
+            }
             Posed::Wall(..) => Err(ProblemError::WallOnlyInSolve),
         }
     }
@@ -180,16 +232,23 @@ impl Problem {
             if inertia.is_some() {
                 return Err(ProblemError::WallNeedsMasses);
             }
+            if let Some(flag) = self.knowns.first_flag() {
+                return Err(ProblemError::KnownWithWall(flag));
+            }
             return self.solve_wall(wall, &m, &v, units);
         }
+        let laws = self.laws(&units)?;
         let e = match &self.restitution {
             Some(r) => r.clone().map(|r| r.number().clone()),
-            None if self.fin.is_some() => Given::Unknown,
+            None if self.fin.is_some() || laws != Laws::default() => Given::Unknown,
             None => Given::Known(Restitution::elastic().number().clone()),
         };
-        if !(self.fin.is_some() || self.has_unknowns()) {
+        if !(self.fin.is_some() || self.has_unknowns() || laws != Laws::default()) {
             let case = build(&m, &v, e, inertia, units)?;
             return Ok(Posed::Collision(case, None));
+        }
+        if let Some(flag) = self.knowns.first_flag().filter(|_| inertia.is_some()) {
+            return Err(ProblemError::KnownNeedsMasses(flag));
         }
         if inertia.is_some() || m.is_empty() {
             return Err(ProblemError::UnknownsNeedMasses);
@@ -207,7 +266,11 @@ impl Problem {
             .chain([e])
             .collect();
         let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
-        let solved = solve_unknowns(exact)?;
+        if let Some(released) = &self.knowns.released {
+            let e = released.in_case(units.energy_si().as_ref())?;
+            return self.solve_released(&known, exact, (released, e), &laws, units);
+        }
+        let solved = crate::line::knowns::solve(exact, &laws)?;
         // A value as typed when it was given (the header repeats it), else its solved fraction.
         let number = |var: Var| -> Result<Given<Number>, ProblemError> {
             if let Some(n) = known[var as usize].known() {
@@ -217,19 +280,8 @@ impl Problem {
         };
         let m = vec![number(Var::M1)?, number(Var::M2)?];
         let v = vec![number(Var::V1)?, number(Var::V2)?];
-        if solved.separation {
-            let need =
-                |x: Given<Number>| x.known().cloned().ok_or(ProblemError::UnknownsOnlyInSolve);
-            let [m1, m2] = [
-                Mass::new(need(m[0].clone())?)?,
-                Mass::new(need(m[1].clone())?)?,
-            ];
-            let separation = Separation {
-                masses: [m1.number().clone(), m2.number().clone()],
-                velocities: [need(v[0].clone())?, need(v[1].clone())?],
-                fin: [solved.get(Var::F1).clone(), solved.get(Var::F2).clone()],
-                units,
-            };
+        if solved.separation || solved.pass_through {
+            let separation = Problem::momentum_only(&known, &solved, units)?;
             return Ok(Posed::Separation(separation, solved));
         }
         let case = build(&m, &v, number(Var::E)?, None, units)?;
@@ -238,6 +290,106 @@ impl Problem {
 }
 
 impl Problem {
+    /// The laws the knowns bring, in the case's units.
+    fn laws(&self, units: &Units) -> Result<Laws, ProblemError> {
+        let impulse = match &self.knowns.impulse {
+            Some(j) => Some(j.in_case(units.force_scale().as_ref())?),
+            None => None,
+        };
+        Ok(Laws {
+            pass_through: self.knowns.pass_through,
+            impulse,
+        })
+    }
+
+    /// A separation with the energy released `e` given: both final velocities unknown give
+    /// two solutions (`separation::split`); otherwise momentum solves one unknown and the energy
+    /// is checked.
+    fn solve_released(
+        &self,
+        known: &[Given<Number>],
+        exact: [Option<Q>; 7],
+        (typed, e): (&Derived, Q),
+        laws: &Laws,
+        units: Units,
+    ) -> Result<Posed, ProblemError> {
+        let refuse = |why: &str| {
+            Err(ProblemError::ReleasedNeedsSeparation(
+                typed.text.clone(),
+                why.to_string(),
+            ))
+        };
+        let (v1, v2) = (&exact[Var::V1 as usize], &exact[Var::V2 as usize]);
+        match (v1, v2) {
+            (Some(a), Some(b)) if a == b => {}
+            (Some(_), Some(_)) => {
+                return refuse("here V1 != V2: for a collision give -e or the final velocities");
+            }
+            _ => return refuse("give both initial velocities"),
+        }
+        let [m1, m2] = [Var::M1, Var::M2].map(|v| exact[v as usize].clone());
+        let both_unknown = exact[Var::F1 as usize].is_none() && exact[Var::F2 as usize].is_none();
+        if let (true, Some(m1), Some(m2)) = (both_unknown, m1, m2) {
+            let v = exact[Var::V1 as usize].clone().unwrap_or_default();
+            let fins = crate::line::separation::split([&m1, &m2], &v, &e, self.exact).map_err(
+                |square| ProblemError::IrrationalRelease {
+                    text: typed.text.clone(),
+                    square: crate::values::quantity::significant(&square, 15),
+                },
+            )?;
+            let solution = |fin: [Q; 2]| -> Result<(Separation, Solved), ProblemError> {
+                let mut values = exact.clone().map(Option::unwrap_or_default);
+                [values[Var::F1 as usize], values[Var::F2 as usize]] = fin;
+                let solved = Solved {
+                    values,
+                    unknowns: vec![Var::F1, Var::F2],
+                    checks: Vec::new(),
+                    separation: true,
+                    wall: None,
+                    pass_through: false,
+                };
+                Ok((
+                    Problem::momentum_only(known, &solved, units.clone())?,
+                    solved,
+                ))
+            };
+            let [a, b] = fins;
+            return Ok(Posed::Separations(Box::new([solution(a)?, solution(b)?])));
+        }
+        let mut solved = crate::line::knowns::solve(exact.clone(), laws)?;
+        if !solved.separation {
+            return refuse("the final velocities are equal, so nothing was released");
+        }
+        let separation = Problem::momentum_only(known, &solved, units)?;
+        solved.checks.push(("energy", separation.released() - &e));
+        Ok(Posed::Separation(separation, solved))
+    }
+
+    /// The separation or pass-through of solved values (a value as typed when it was given,
+    /// `known`, else its solved fraction).
+    fn momentum_only(
+        known: &[Given<Number>],
+        solved: &Solved,
+        units: Units,
+    ) -> Result<Separation, ProblemError> {
+        let number = |var: Var| match known[var as usize].known() {
+            Some(n) => Ok(n.clone()),
+            None => solved_number(var, solved.get(var)),
+        };
+        let [m1, m2] = [Mass::new(number(Var::M1)?)?, Mass::new(number(Var::M2)?)?];
+        Ok(Separation {
+            masses: [m1.number().clone(), m2.number().clone()],
+            velocities: [number(Var::V1)?, number(Var::V2)?],
+            fin: [solved.get(Var::F1).clone(), solved.get(Var::F2).clone()],
+            units,
+            kind: if solved.pass_through {
+                Kind::PassThrough
+            } else {
+                Kind::Apart
+            },
+        })
+    }
+
     /// A ball against a wall (body `wall`): restitution alone, exact.
     fn solve_wall(
         &self,
@@ -321,6 +473,7 @@ impl Problem {
             checks,
             separation: false,
             wall: Some(wall),
+            pass_through: false,
         };
         Ok(Posed::Wall(case, Some(solved)))
     }

@@ -13,8 +13,8 @@ use std::fmt;
 use crate::values::rational::Q;
 use num_traits::{One, Signed, Zero};
 
-/// One of the two laws, as a residual of all seven values.
-type Law = fn(&[Q; 7]) -> Q;
+/// A law, as a residual of all seven values.
+pub(crate) type Law<'a> = &'a dyn Fn(&[Q; 7]) -> Q;
 
 /// A quantity of the problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,7 +35,7 @@ impl Var {
         ["m1", "m2", "v1", "v2", "f1", "f2", "e"][self as usize]
     }
 
-    fn is_mass(self) -> bool {
+    pub(crate) fn is_mass(self) -> bool {
         matches!(self, Var::M1 | Var::M2)
     }
 }
@@ -74,6 +74,9 @@ pub struct Solved {
     pub separation: bool,
     /// The body that is a wall (0 or 1), whose mass means nothing.
     pub wall: Option<usize>,
+    /// One body passed through the other (`--pass-through`): only momentum holds, and `e`
+    /// means nothing (`values[E]` is 0).
+    pub pass_through: bool,
 }
 
 impl Solved {
@@ -84,7 +87,7 @@ impl Solved {
             Some(_) => Some(Var::M2),
             None => None,
         };
-        !(self.separation && v == Var::E) && Some(v) != wall_mass
+        !((self.separation || self.pass_through) && v == Var::E) && Some(v) != wall_mass
     }
 
     pub fn get(&self, v: Var) -> &Q {
@@ -97,11 +100,11 @@ impl Solved {
     }
 }
 
-fn momentum(x: &[Q; 7]) -> Q {
+pub(crate) fn momentum(x: &[Q; 7]) -> Q {
     &x[0] * &x[2] + &x[1] * &x[3] - &x[0] * &x[4] - &x[1] * &x[5]
 }
 
-fn restitution(x: &[Q; 7]) -> Q {
+pub(crate) fn restitution(x: &[Q; 7]) -> Q {
     &x[5] - &x[4] - &x[6] * (&x[2] - &x[3])
 }
 
@@ -113,8 +116,8 @@ fn at(law: Law, x: &[Q; 7], var: Var, t: &Q) -> Q {
 }
 
 /// Solves `law = 0` for `var` (the law is linear in it): `Ok(None)` when any value satisfies it.
-fn solve_one(
-    law: fn(&[Q; 7]) -> Q,
+pub(crate) fn solve_one(
+    law: Law,
     x: &[Q; 7],
     var: Var,
     what: &str,
@@ -153,9 +156,9 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         [u] => {
             // One law gives it; the other is checked.
             let (law, other, lname, oname): (Law, Law, _, _) = if *u == Var::E {
-                (restitution, momentum, "restitution", "momentum")
+                (&restitution, &momentum, "restitution", "momentum")
             } else {
-                (momentum, restitution, "momentum", "restitution")
+                (&momentum, &restitution, "momentum", "restitution")
             };
             if *u == Var::E && starts_together(&x) {
                 separation = apart(&x, "e")?;
@@ -170,13 +173,13 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         }
         [a, b] if *a == Var::E || *b == Var::E => {
             let other = if *a == Var::E { *b } else { *a };
-            match solve_one(momentum, &x, other, "momentum")? {
+            match solve_one(&momentum, &x, other, "momentum")? {
                 Some(q) => set(&mut x, other, q),
                 None => return many(format!("momentum holds for any {other}")),
             }
             if starts_together(&x) {
                 separation = apart(&x, "e")?;
-            } else if let Some(q) = solve_one(restitution, &x, Var::E, "restitution")? {
+            } else if let Some(q) = solve_one(&restitution, &x, Var::E, "restitution")? {
                 set(&mut x, Var::E, q);
             }
         }
@@ -198,7 +201,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         }
         [a, b] if a.is_mass() || b.is_mass() => {
             let (mass, vel) = if a.is_mass() { (*a, *b) } else { (*b, *a) };
-            match solve_one(restitution, &x, vel, "restitution")? {
+            match solve_one(&restitution, &x, vel, "restitution")? {
                 Some(q) => set(&mut x, vel, q),
                 None => {
                     return many(format!(
@@ -206,7 +209,7 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
                     ));
                 }
             }
-            match solve_one(momentum, &x, mass, "momentum")? {
+            match solve_one(&momentum, &x, mass, "momentum")? {
                 Some(q) => set(&mut x, mass, q),
                 None => return many(format!("momentum holds for any {mass}")),
             }
@@ -214,27 +217,17 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         [a, b] => {
             // Two velocities: momentum and restitution are linear in both.
             let (a, b) = (*a, *b);
-            let z = |law: Law, p: &Q, q: &Q| {
-                let mut y = x.clone();
-                y[a as usize] = p.clone();
-                y[b as usize] = q.clone();
-                law(&y)
-            };
-            let (zero, one) = (Q::zero(), Q::one());
-            let coeffs = |law: Law| {
-                let c = z(law, &zero, &zero);
-                (z(law, &one, &zero) - &c, z(law, &zero, &one) - &c, c)
-            };
-            let (p1, q1, c1) = coeffs(momentum);
-            let (p2, q2, c2) = coeffs(restitution);
-            let det = &p1 * &q2 - &q1 * &p2;
-            if det.is_zero() {
-                return many(format!(
-                    "momentum and restitution do not fix {a} and {b} separately"
-                ));
+            match linear_pair(&x, (a, b), &momentum, &restitution) {
+                Some((p, q)) => {
+                    set(&mut x, a, p);
+                    set(&mut x, b, q);
+                }
+                None => {
+                    return many(format!(
+                        "momentum and restitution do not fix {a} and {b} separately"
+                    ));
+                }
             }
-            set(&mut x, a, (&q1 * &c2 - &q2 * &c1) / &det);
-            set(&mut x, b, (&p2 * &c1 - &p1 * &c2) / &det);
         }
         _ => unreachable!("more than two unknowns were refused above"),
     }
@@ -243,18 +236,12 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         checks.push(("restitution", restitution(&x)));
     }
     // Physical: positive masses, e >= 0 (above 1: superelastic, energy released).
-    for m in [Var::M1, Var::M2] {
-        if !x[m as usize].is_positive() {
-            return Err(UnknownError::Unphysical(format!(
-                "{m} = {} is not a positive mass: no bodies collide that way",
-                crate::values::quantity::fraction(&x[m as usize])
-            )));
-        }
-    }
+    positive_masses(&x)?;
     let e = &x[Var::E as usize];
     if e.is_negative() {
         return Err(UnknownError::Unphysical(format!(
-            "e = {} < 0: the bodies would pass through each other",
+            "e = {} < 0: the bodies would pass through each other (one passing through the \
+             other, a bullet through a block, is --pass-through)",
             crate::values::quantity::fraction(e)
         )));
     }
@@ -264,28 +251,65 @@ pub fn solve(known: [Option<Q>; 7]) -> Result<Solved, UnknownError> {
         checks,
         separation,
         wall: None,
+        pass_through: false,
     })
 }
 
+/// Refuses a mass that is not positive (a solved one can be anything).
+pub(crate) fn positive_masses(x: &[Q; 7]) -> Result<(), UnknownError> {
+    for m in [Var::M1, Var::M2] {
+        if !x[m as usize].is_positive() {
+            return Err(UnknownError::Unphysical(format!(
+                "{m} = {} is not a positive mass: no bodies collide that way",
+                crate::values::quantity::fraction(&x[m as usize])
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Solves two laws for two unknowns `(a, b)` in which both are jointly linear (no product `a b`
+/// term: checked), by Cramer's rule; `None` when they do not fix both (a zero determinant, or
+/// a product term).
+pub(crate) fn linear_pair(x: &[Q; 7], (a, b): (Var, Var), l1: Law, l2: Law) -> Option<(Q, Q)> {
+    let z = |law: Law, p: &Q, q: &Q| {
+        let mut y = x.clone();
+        y[a as usize] = p.clone();
+        y[b as usize] = q.clone();
+        law(&y)
+    };
+    let (zero, one) = (Q::zero(), Q::one());
+    let coeffs = |law: Law| {
+        let c = z(law, &zero, &zero);
+        let (p, q) = (z(law, &one, &zero) - &c, z(law, &zero, &one) - &c);
+        let bilinear = z(law, &one, &one) - &p - &q - &c;
+        (p, q, c, bilinear.is_zero())
+    };
+    let (p1, q1, c1, linear1) = coeffs(l1);
+    let (p2, q2, c2, linear2) = coeffs(l2);
+    let det = &p1 * &q2 - &q1 * &p2;
+    if det.is_zero() || !(linear1 && linear2) {
+        return None;
+    }
+    Some((
+        (&q1 * &c2 - &q2 * &c1) / &det,
+        (&p2 * &c1 - &p1 * &c2) / &det,
+    ))
+}
+
 /// `V1 = V2`: no relative velocity at IN, so restitution cannot say anything about FIN.
-fn starts_together(x: &[Q; 7]) -> bool {
+pub(crate) fn starts_together(x: &[Q; 7]) -> bool {
     x[Var::V1 as usize] == x[Var::V2 as usize]
 }
 
 /// With `V1 = V2`, whether the bodies come apart (`f1 != f2`): an explosion or recoil, where
-/// `e` is undefined; if they stay together nothing happened and `e` is not determined.
-fn apart(x: &[Q; 7], what: &str) -> Result<bool, UnknownError> {
+/// `e` is undefined; if they stay together nothing happened and `e` is not determined. Either
+/// piece may end up on the right (`line::order`: the one faster in `+x`), whichever was typed
+/// first.
+pub(crate) fn apart(x: &[Q; 7], what: &str) -> Result<bool, UnknownError> {
     if x[Var::F1 as usize] == x[Var::F2 as usize] {
         return Err(UnknownError::Many(format!(
             "V1 = V2 and f1 = f2: the bodies never meet or push apart, so {what} is not determined"
-        )));
-    }
-    if x[Var::F1 as usize] > x[Var::F2 as usize] {
-        return Err(UnknownError::Unphysical(format!(
-            "f1 = {} > f2 = {} after starting together: body 1 (on the left) would pass through \
-             body 2",
-            crate::values::quantity::fraction(&x[Var::F1 as usize]),
-            crate::values::quantity::fraction(&x[Var::F2 as usize])
         )));
     }
     Ok(true)
@@ -384,6 +408,11 @@ mod tests {
         );
         let e = run(["4", "1", "60", "10", "55", "30", "?"]).unwrap_err();
         assert!(e.to_string().contains("pass through each other"), "{e}");
+        // A rifle (4 kg) fires a 10 g bullet from rest, the bullet typed first at +550 m/s:
+        // 0 = 0.01 * 550 + 4 f2, f2 = -5.5/4 = -11/8 (the bullet ends up on the right).
+        let s = run(["0.01", "4", "0", "0", "550", "?", "?"]).unwrap();
+        assert!(s.separation);
+        assert_eq!(show(&s, Var::F2), "-11/8");
         // e = 0 with a mass and an IN velocity unknown: restitution cannot fix the velocity.
         let e = run(["?", "1", "?", "10", "50", "50", "0"]).unwrap_err();
         assert!(matches!(e, UnknownError::Many(_)), "{e}");

@@ -4,6 +4,7 @@
 
 #[cfg(feature = "cli")]
 pub mod accuracy;
+pub mod asked;
 pub mod block;
 #[cfg(feature = "cli")]
 pub mod contact;
@@ -14,6 +15,7 @@ pub mod pi;
 pub mod rigid;
 #[cfg(feature = "cli")]
 pub mod scene;
+pub mod sections;
 pub mod separation;
 pub mod solved;
 pub mod space;
@@ -22,8 +24,6 @@ pub mod stages;
 pub mod text;
 pub mod track;
 pub mod wall;
-
-use std::collections::BTreeSet;
 
 use crate::values::rational::Q;
 use serde::{Deserialize, Serialize};
@@ -36,119 +36,7 @@ use crate::line::unknowns::Solved;
 use crate::solver::exact::ExactCollision;
 use crate::solver::{Lab, Solver};
 use crate::values::quantity::{Exact, Scalar};
-
-/// A section of the report (`--show`, `show = [...]` in a scene).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
-#[serde(rename_all = "kebab-case")]
-pub enum Section {
-    /// IN, COM and FIN vectors and V_COM
-    Vectors,
-    /// P = M.V at IN and FIN, P_total and the momentum line
-    Momentum,
-    /// The quadratic forms V.M.V
-    Forms,
-    /// Kinetic energies, crunch energy, energy lost
-    Energy,
-    /// Radii (and axes) of the IN, FIN and COM energy ellipses
-    Ellipses,
-    /// Plain dot product V_FIN.V_IN and outer product V_IN (x) V_FIN
-    Products,
-    /// Per body: dv, impulse, KE before and after; fraction of KE lost or transferred; average force (--contact-time)
-    Changes,
-    /// The height each IN and FIN speed corresponds to, v^2 / 2g (how high a pendulum swings or a ball rebounds)
-    Heights,
-    /// Self-check: residuals of momentum and energy conservation, and the solve's run time
-    Diagnostics,
-    /// In the plane or in space: the angle between the final velocities, how far each body turned
-    Angles,
-    /// Every physics section (not diagnostics, whose timing varies run to run)
-    All,
-}
-
-impl Section {
-    pub const EVERY: [Section; 7] = [
-        Section::Vectors,
-        Section::Momentum,
-        Section::Forms,
-        Section::Energy,
-        Section::Ellipses,
-        Section::Products,
-        Section::Changes,
-    ];
-    /// The design card's default: IN/COM/FIN vectors, quadratic forms and the crunch energy.
-    pub const DEFAULT: [Section; 3] = [Section::Vectors, Section::Forms, Section::Energy];
-
-    /// The JSON key this section's values live under (`vectors` are at the top level).
-    pub fn json_keys(self) -> &'static [&'static str] {
-        match self {
-            Section::Vectors => &["in", "com", "fin", "v_com", "approaching"],
-            Section::Momentum => &["momentum"],
-            Section::Forms => &["forms"],
-            Section::Energy => &["energy"],
-            Section::Ellipses => &["ellipses"],
-            Section::Products => &["products"],
-            Section::Changes => &["changes"],
-            Section::Heights => &["heights"],
-            Section::Diagnostics => &["diagnostics"],
-            Section::Angles => &["angle_between_deg"],
-            Section::All => &[],
-        }
-    }
-
-    /// The section a top-level JSON key belongs to (`None` for `inertia` and `restitution`, which
-    /// are always present).
-    pub fn of_json_key(key: &str) -> Option<Section> {
-        Section::EVERY
-            .into_iter()
-            .chain([Section::Heights, Section::Diagnostics])
-            .find(|s| s.json_keys().contains(&key))
-    }
-}
-
-/// A set of sections, with `all` expanded, and what the sections need beyond the case.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Sections {
-    set: BTreeSet<Section>,
-    /// The contact time in seconds, for the average forces of `changes` (`--contact-time`).
-    pub contact_time: Option<Q>,
-    /// `g` and the velocity unit, for `heights`.
-    pub heights: Option<crate::values::units::HeightScale>,
-    /// The factor from the case's energy unit to the printed one (`--energy-unit`).
-    pub energy_scale: Option<Q>,
-    /// The factor from the case's force unit to newtons (`Units::force_scale`).
-    pub force_scale: Option<Q>,
-    /// The sections were asked for (`--show`), not the default: a pair that moves apart then
-    /// gets the FIN it would have if body 1 were on the right, not the note alone.
-    pub asked: bool,
-}
-
-impl Sections {
-    pub fn new(list: impl IntoIterator<Item = Section>) -> Sections {
-        let mut set = BTreeSet::new();
-        for s in list {
-            if s == Section::All {
-                set.extend(Section::EVERY);
-            } else {
-                set.insert(s);
-            }
-        }
-        Sections {
-            set,
-            contact_time: None,
-            heights: None,
-            energy_scale: None,
-            force_scale: None,
-            asked: false,
-        }
-    }
-    pub fn contains(&self, s: Section) -> bool {
-        self.set.contains(&s)
-    }
-    pub fn insert(&mut self, s: Section) {
-        self.set.extend(Sections::new([s]).set);
-    }
-}
+pub use sections::{Section, Sections};
 
 /// `"frame": {"name": "com", "w": 2.0}` in JSON.
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -187,6 +75,9 @@ pub struct Report<N = f64> {
     pub changes: Option<ChangeReport<N>>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub heights: Option<Heights<N>>,
+    /// What a homework problem asks beyond the sections (`--spring`).
+    #[serde(flatten, default)]
+    pub asked: asked::AskedReport<N>,
     #[serde(default = "none", skip_serializing_if = "Option::is_none")]
     pub diagnostics: Option<Diagnostics>,
     /// The time-reversed collision (`--reverse`).
@@ -212,10 +103,13 @@ pub struct Vectors<N = f64> {
     pub com: [N; 2],
     pub fin: [N; 2],
     pub v_com: N,
-    /// `V1 > V2` at IN: body 1 (on the left) catches body 2. False: they move apart, unless
-    /// body 1 is on the right (the velocities may be in the wrong order).
+    /// The bodies meet: `V1 != V2` at IN (on a rail with no positions, the body faster in `+x`
+    /// is behind it, whichever was typed first: `line::order`). False only for `V1 = V2`.
     #[serde(default)]
     pub approaching: bool,
+    /// `2` when body 2 is on the left (`V1 < V2`: it catches body 1); absent when body 1 is.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub left: Option<u8>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
@@ -504,6 +398,8 @@ pub enum ReportError {
     Irreversible(#[from] Irreversible),
     #[error(transparent)]
     ReverseOverflow(#[from] ReverseOverflow),
+    #[error(transparent)]
+    Asked(#[from] asked::AskedError),
 }
 
 impl<N: Scalar> Report<N> {
@@ -516,6 +412,17 @@ impl<N: Scalar> Report<N> {
     ) -> Result<Report<N>, ReportError> {
         let (w, seen) = lab.seen_from(frame);
         let mut r = Report::build(&seen, sections)?;
+        if !sections.asked.is_empty() {
+            // Heights and swings belong to the lab; a spring's numbers are the same anywhere.
+            let x = lab.seen_from(&Frame::Lab).1.exact();
+            let motion = asked::Motion {
+                fin: x.v_fin_q(),
+                crunch: x.crunch_q(),
+                mu: (&x.a * &x.b - &x.c * &x.c) / (&x.a + &x.b + Q::from(2) * &x.c),
+                v_in: x.v,
+            };
+            r.asked = asked::AskedReport::of(&motion, &sections.asked)?;
+        }
         r.frame = (*frame != Frame::Lab).then(|| FrameInfo {
             name: frame.to_string(),
             w,
@@ -570,7 +477,8 @@ impl<N: Scalar> Report<N> {
                     com: [v_com.clone(), v_com.clone()],
                     fin: fin(),
                     v_com,
-                    approaching: c.approaching(),
+                    approaching: c.order().meet(),
+                    left: c.order().left_when_body_2(),
                 }
             }),
             momentum: has(Section::Momentum).then(|| Momentum {
@@ -631,6 +539,7 @@ impl<N: Scalar> Report<N> {
                         fin: [one(&f[0]), one(&f[1])],
                     }
                 }),
+            asked: asked::AskedReport::default(),
             diagnostics: has(Section::Diagnostics).then(|| {
                 let (momentum_residual, energy_residual) = c.residuals();
                 let (solve_ns, repetitions) = time_solves(c);
@@ -751,14 +660,8 @@ impl AnyReport {
     /// what the unknowns `solved` came out as and, for a case with units, the answer.
     pub fn text(&self, case: &Case, show: &Sections, solved: Option<&Solved>) -> String {
         let (head, body) = match self {
-            AnyReport::Binary64(r) => (
-                text::answer(case, r),
-                text::render(case, &r.only(show), show),
-            ),
-            AnyReport::Exact(r) => (
-                text::answer(case, r),
-                text::render(case, &r.only(show), show),
-            ),
+            AnyReport::Binary64(r) => (text::answer(case, r), text::render(case, &r.only(show))),
+            AnyReport::Exact(r) => (text::answer(case, r), text::render(case, &r.only(show))),
         };
         let exact = matches!(self, AnyReport::Exact(_));
         let mut out = solved.map_or_else(String::new, |s| solved::lines(s, exact, &case.units));

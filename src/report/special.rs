@@ -49,10 +49,10 @@ impl Special<'_> {
         self,
         compute: &Sections,
         show: &Sections,
-    ) -> Result<Rendered, Unrepresentable> {
+    ) -> Result<Rendered, super::ReportError> {
         let (text, json) = match self {
             Special::Separation(s) => {
-                let r = SeparationReport::<N>::new(s, compute);
+                let r = SeparationReport::<N>::new(s, compute)?;
                 (r.text(s, show), serde_json::to_value(&r))
             }
             Special::Wall(w) => {
@@ -62,7 +62,7 @@ impl Special<'_> {
         };
         let json = json.expect("reports serialize");
         if let Some(quantity) = first_unrepresentable(&json) {
-            return Err(Unrepresentable::new(quantity));
+            return Err(Unrepresentable::new(quantity).into());
         }
         Ok(Rendered { text, json })
     }

@@ -5,7 +5,7 @@
 pub use super::block::{Block, duration, pair, paragraph, parts, wrap};
 use super::{
     ChangeReport, Diagnostics, Ellipses, Energy, Forms, Momentum, Notes, Products, Report, Reverse,
-    Sections, Vectors,
+    Vectors,
 };
 use crate::line::case::Case;
 use crate::line::ellipse::Ellipse;
@@ -77,18 +77,10 @@ pub fn answer<N: Scalar>(case: &Case, report: &Report<N>) -> Option<String> {
     })
 }
 
-/// Renders the report of `case` as text. A pair that moves apart (`V1 < V2`) shows its vectors
-/// and the note that the bodies never meet, unless sections were asked for (`show.asked`).
-pub fn render<N: Scalar>(case: &Case, report: &Report<N>, show: &Sections) -> String {
+/// Renders the report of `case` as text.
+pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
     let mut out = String::new();
     out.push_str(&header_in(case, N::EXACT));
-    let apart = case.collision.v_in.x < case.collision.v_in.y;
-    if apart && !show.asked {
-        if let Some(v) = &report.vectors {
-            vectors(case, v, false, report.frame.is_none()).render(&mut out);
-        }
-        return out;
-    }
     if let Some(f) = &report.frame {
         out.push_str(&paragraph(&format!(
             "Frame: {} (observer velocity w = {}; every velocity shifted by -w)",
@@ -97,7 +89,7 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>, show: &Sections) -> St
         )));
     }
     if let Some(v) = &report.vectors {
-        vectors(case, v, true, report.frame.is_none()).render(&mut out);
+        vectors(case, v, report.frame.is_none()).render(&mut out);
     }
     if let Some(m) = &report.momentum {
         momentum(case, m, &report.notes).render(&mut out);
@@ -132,6 +124,9 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>, show: &Sections) -> St
             pair(&h.fin),
             "how high each body rises (a pendulum's swing)",
         );
+        b.render(&mut out);
+    }
+    for b in report.asked.blocks() {
         b.render(&mut out);
     }
     if let Some(d) = &report.diagnostics {
@@ -257,9 +252,8 @@ impl Scales {
     }
 }
 
-/// The vectors section; `fin`: with the FIN row (also for a pair that moves apart); `lab`: seen
-/// from the lab.
-fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>, fin: bool, lab: bool) -> Block {
+/// The vectors section; `lab`: seen from the lab.
+fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>, lab: bool) -> Block {
     let mut b = Block::new("Vectors (V1, V2)");
     let own = Scales::of(case, v, lab);
     b.row("IN   V_IN", pair(&v.v_in), "");
@@ -271,30 +265,24 @@ fn vectors<N: Scalar>(case: &Case, v: &Vectors<N>, fin: bool, lab: bool) -> Bloc
             v.v_com.snap(own.com).show()
         ),
     );
-    if fin && case.restitution().is_totally_inelastic() {
+    if case.restitution().is_totally_inelastic() {
         b.row("FIN  V_FIN", "= COM", "the bodies stick and move together");
-    } else if fin {
+    } else {
         b.row(
             "FIN  V_FIN",
             snapped(&v.fin, own.fin),
             "= (1 + e) V_COM u - e V_IN",
         );
     }
-    if case.collision.v_in.x < case.collision.v_in.y {
+    if v.left == Some(2) {
         b.row(
             "",
             "",
-            if fin {
-                "V1 < V2: the bodies move apart and do not meet; FIN is the collision they would \
-                 have if body 1 were on the right"
-            } else {
-                "V1 < V2: the bodies move apart and do not meet, so there is no FIN (unless body 1 \
-                 is on the right: check the order of the velocities; --show vectors gives the FIN \
-                 it would then have)"
-            },
+            "V1 < V2: body 2 is behind (on the left) and catches body 1; with no positions \
+             the order follows from the velocities",
         );
     }
-    if case.collision.v_in.x == case.collision.v_in.y {
+    if !v.approaching {
         b.row("", "", "V1 = V2: the bodies never meet, so FIN = IN");
     }
     b

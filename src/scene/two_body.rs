@@ -254,6 +254,7 @@ impl Scene {
                 None => None,
             },
             exact: file.exact.unwrap_or(false),
+            knowns: Default::default(),
         };
         let span = file
             .masses
@@ -282,6 +283,14 @@ impl Scene {
         ));
         let (case, solved) = match posed {
             Posed::Collision(case, solved) => (case, solved),
+            Posed::Separations(..) => {
+                return Err(err(
+                    None,
+                    "two solutions (the energy released fixes the relative speed, not which \
+                     piece is ahead): give one final velocity"
+                        .into(),
+                ));
+            }
             Posed::Separation(..) | Posed::Wall(..) => {
                 let extra = [
                     file.sweep.as_ref().map(|_| "[sweep]"),
@@ -304,7 +313,9 @@ impl Scene {
                         (SpecialEvent::Separation(s), Some(solved), separation_key)
                     }
                     Posed::Wall(w, solved) => (SpecialEvent::Wall(w), solved, wall_key),
-                    Posed::Collision(..) => unreachable!("matched above"),
+                    Posed::Collision(..) | Posed::Separations(..) => {
+                        unreachable!("matched above")
+                    }
                 };
                 let about = About::new((path, text), file.title, file.source, file.expect, keys)?;
                 return Ok(AnyScene::Special(SpecialScene {
@@ -488,6 +499,7 @@ fn separation_key(top: &str) -> Result<(), ExpectError> {
         "com",
         "fin",
         "v_com",
+        "left",
         "momentum.*",
         "energy.*",
         "changes.*",

@@ -319,8 +319,8 @@ impl Solver for Binary64<'_> {
         (momentum, energy)
     }
     /// The binary64 inputs exactly, seen by the observer at `w` (a double-double, exact too).
-    fn approaching(&self) -> bool {
-        self.lab.v_in.x > self.lab.v_in.y
+    fn order(&self) -> crate::line::order::Order {
+        crate::line::order::Order::before(&self.lab.v_in.x, &self.lab.v_in.y)
     }
     fn superelastic(&self) -> bool {
         self.lab.restitution.is_superelastic()

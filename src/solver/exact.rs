@@ -288,8 +288,8 @@ impl Solver for ExactCollision {
             crate::values::quantity::to_f64(&energy).unwrap_or(f64::MAX),
         )
     }
-    fn approaching(&self) -> bool {
-        self.v[0] > self.v[1]
+    fn order(&self) -> crate::line::order::Order {
+        crate::line::order::Order::before(&self.v[0], &self.v[1])
     }
     fn superelastic(&self) -> bool {
         self.e > Q::one()

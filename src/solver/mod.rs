@@ -16,8 +16,9 @@ pub type Pair<N> = [N; 2];
 pub trait Solver {
     type N: Scalar;
     fn restitution(&self) -> Self::N;
-    /// `V1 > V2` at IN (the same in every frame).
-    fn approaching(&self) -> bool;
+    /// Which body is on the left, from the velocities at IN (`line::order`; the same in every
+    /// frame): the bodies meet iff `V1 != V2`.
+    fn order(&self) -> crate::line::order::Order;
     /// `e > 1` as typed: energy is released (`lost` is negative).
     fn superelastic(&self) -> bool;
     fn inertia(&self) -> [Pair<Self::N>; 2];

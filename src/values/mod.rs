@@ -1,8 +1,10 @@
 //! Values, the bottom layer: exact rationals (`Q`), numbers as typed (with `Given<T>` for `?`),
-//! units with exact factors to SI, exact and approximate scalars (`Quantity`), double-double
+//! units with exact factors to SI (and derived ones: impulse, energy, spring constant), exact and approximate scalars (`Quantity`), double-double
 //! arithmetic, atomic file output and the width text fits. Nothing here knows any physics.
 
 pub mod compensated;
+pub mod derived;
+pub mod heights;
 pub mod number;
 #[cfg(feature = "cli")]
 pub mod output;

@@ -29,6 +29,12 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     /// An exact rational in this arithmetic: rounded once to binary64 (not representable: NaN,
     /// reported by name), or kept exact.
     fn of_rational(q: &Q) -> Self;
+    /// An irrational value known to many more digits than binary64 holds (`q` within
+    /// `10^-(APPROX_DIGITS + 2)` of it, relative): rounded once to binary64, or kept as an
+    /// approximation marked as such.
+    fn of_approx(q: &Q) -> Self {
+        Self::of_rational(q)
+    }
     /// `|x|`, as a binary64 (for choosing a scale).
     fn magnitude(&self) -> f64;
     /// `x q`: for a binary64, the exact product rounded once (a change of unit).
@@ -151,6 +157,9 @@ impl Scalar for Exact {
     }
     fn of_rational(q: &Q) -> Exact {
         Exact::Rational(q.clone())
+    }
+    fn of_approx(q: &Q) -> Exact {
+        Exact::Approx(q.clone())
     }
     fn magnitude(&self) -> f64 {
         to_f64(self.rational()).map_or(f64::INFINITY, f64::abs)

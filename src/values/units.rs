@@ -315,119 +315,8 @@ pub struct Quantity {
     pub height: bool,
 }
 
-/// The standard acceleration of gravity, 9.80665 m/s^2 (CGPM 1901), exact by definition.
-pub const STANDARD_GRAVITY: &str = "9.80665";
-
-impl Quantity {
-    /// A height as the speed of a fall from rest through it (or needed to rise it),
-    /// `sqrt(2 g h)` in m/s with the height's sign, and whether that speed is exact: when `2 g h`
-    /// is the square of a rational (g = 10, h = 0.2 m: 2 m/s) the speed is that rational;
-    /// otherwise it is irrational, and `2 g h` is computed exactly, rounded once, then given a
-    /// correctly rounded square root (within an ulp of the exact speed). Other quantities are
-    /// returned as they are (exact).
-    pub fn with_gravity(&self, g: &Q) -> Result<(Quantity, bool), NumberError> {
-        if !self.height {
-            return Ok((self.clone(), true));
-        }
-        let h = self.number.exact();
-        let two_gh = crate::values::rational::int(2) * g * num_traits::Signed::abs(&h);
-        let negative = h < Q::ZERO;
-        let speed_unit = lookup("m/s", Dimension::Velocity).ok();
-        if let Some(root) = crate::values::rational::sqrt_exact(&two_gh) {
-            let speed = if negative { -root } else { root };
-            let quantity = Quantity {
-                number: crate::values::quantity::number_of(&speed)?,
-                unit: speed_unit,
-                height: false,
-            };
-            return Ok((quantity, true));
-        }
-        let speed = crate::values::quantity::to_f64(&two_gh)
-            .map(f64::sqrt)
-            .ok_or_else(|| {
-                NumberError::Overflow(format!(
-                    "sqrt(2 g h) for h = {} m, g = {} m/s^2",
-                    crate::values::quantity::significant(&num_traits::Signed::abs(&h), 15),
-                    crate::values::quantity::significant(g, 15)
-                ))
-            })?;
-        let speed = if negative { -speed } else { speed };
-        let quantity = Quantity {
-            number: Number::from_f64(speed)?,
-            unit: speed_unit,
-            height: false,
-        };
-        Ok((quantity, false))
-    }
-}
-
-/// How speeds become heights, `h = v^2 / 2g` (`--show heights`): `g` in m/s^2 and the size of
-/// the case's velocity unit in m/s (1 when velocities have no unit: they are taken as m/s).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct HeightScale {
-    pub g: Q,
-    pub velocity_si: Q,
-    /// Whether the velocities had no unit (so were taken as m/s).
-    pub assumed: bool,
-}
-
-impl HeightScale {
-    /// For a case in `units`, with `g` (default: standard gravity).
-    pub fn new(g: Option<&Number>, units: &Units) -> HeightScale {
-        let g = g.map_or_else(
-            || {
-                STANDARD_GRAVITY
-                    .parse::<Number>()
-                    .map(|n| n.exact())
-                    .unwrap_or_default()
-            },
-            Number::exact,
-        );
-        let unit = units
-            .velocity
-            .and_then(|n| lookup(n, Dimension::Velocity).ok());
-        HeightScale {
-            g,
-            velocity_si: unit.map_or_else(|| crate::values::rational::int(1), Unit::si),
-            assumed: unit.is_none(),
-        }
-    }
-    /// `v^2 / 2g` in metres, exact.
-    pub fn height(&self, v: &Q) -> Q {
-        let v = v * &self.velocity_si;
-        &v * &v / (crate::values::rational::int(2) * &self.g)
-    }
-    /// `g` as a decimal.
-    pub fn g_text(&self) -> String {
-        crate::values::quantity::terminating_decimal(&self.g, usize::MAX)
-            .unwrap_or_else(|| crate::values::quantity::fraction(&self.g))
-    }
-}
-
-/// `height 2 m`, `-height 6 ft` (a speed from a height, signed): the height in metres, exact.
-fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
-    let (sign, rest) = match t.strip_prefix('-') {
-        Some(r) => ("-", r.trim_start()),
-        None => ("", t.strip_prefix('+').unwrap_or(t).trim_start()),
-    };
-    let rest = rest.strip_prefix("height")?;
-    Some((|| {
-        let q = parse(rest, Dimension::Length)?;
-        let unit = q
-            .unit
-            .map_or_else(|| crate::values::rational::int(1), Unit::si);
-        let metres = q.number.exact() * unit;
-        if metres < Q::ZERO {
-            return Err(QuantityError::NegativeHeight(t.to_string()));
-        }
-        let text = format!("{sign}{}", crate::values::quantity::fraction(&metres));
-        Ok(Quantity {
-            number: text.parse()?,
-            unit: None,
-            height: true,
-        })
-    })())
-}
+use super::heights::parse_height;
+pub use super::heights::{HeightScale, STANDARD_GRAVITY};
 
 /// Why a text is not a quantity.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -446,25 +335,23 @@ pub enum QuantityError {
         printable(.0)
     )]
     NegativeHeight(String),
+    #[error(
+        "'{}': a speed from a slide is 'slide D mu MU' (the distance friction MU > 0 stops it \
+         in, e.g. 'slide 5 cm mu 0.62': sqrt(2 mu g d)); a sign gives the direction",
+        printable(.0)
+    )]
+    Slide(String),
 }
 
-/// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
-pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
-    let t = text.trim();
-    if dimension == Dimension::Velocity
-        && let Some(height) = parse_height(t)
-    {
-        return height;
-    }
+/// Splits `4 t`, `60mph`, `12 N s` or `1e3` into its number and the rest (a unit name, trimmed;
+/// empty for a plain number).
+pub fn split_number(t: &str) -> Result<(Number, &str), QuantityError> {
+    let t = t.trim();
     // A whole number (or one that is out of range, or divides by zero) has no unit: its own
     // error is the one to report.
     match t.parse::<Number>() {
         Ok(number) => {
-            return Ok(Quantity {
-                number,
-                unit: None,
-                height: false,
-            });
+            return Ok((number, ""));
         }
         Err(e) if !matches!(e, NumberError::Syntax(_)) => return Err(e.into()),
         Err(_) => {}
@@ -497,7 +384,18 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
             .into());
     };
     let number: Number = t[..i].parse()?;
-    let rest = t[i..].trim();
+    Ok((number, t[i..].trim()))
+}
+
+/// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name.
+pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
+    let t = text.trim();
+    if dimension == Dimension::Velocity
+        && let Some(height) = parse_height(t)
+    {
+        return height;
+    }
+    let (number, rest) = split_number(t)?;
     let unit = if rest.is_empty() {
         None
     } else {
@@ -651,6 +549,13 @@ impl Units {
         let m = lookup(self.mass?, Dimension::Mass).ok()?;
         let v = lookup(self.velocity?, Dimension::Velocity).ok()?;
         Some(m.si() * v.si())
+    }
+
+    /// The size of the case's energy unit (mass unit x velocity unit^2) in joules, when both
+    /// units are given.
+    pub fn energy_si(&self) -> Option<Q> {
+        let v = lookup(self.velocity?, Dimension::Velocity).ok()?.si();
+        Some(self.force_scale()? * v)
     }
 
     /// "kg m/s" (momentum, impulse), or the generic description.
@@ -821,6 +726,23 @@ mod tests {
                 .map(Unit::name),
             Some("long ton")
         );
+    }
+
+    #[test]
+    fn slides_are_heights_of_mu_d() {
+        // 'slide 5 cm mu 0.62': v^2 = 2 mu g d = 2 g (0.62 0.05), the height 0.031 m, signed.
+        let h = |t: &str| parse(t, Dimension::Velocity).map(|q| (q.number.exact(), q.height));
+        let q = |s: &str| s.parse::<Number>().unwrap().exact();
+        assert_eq!(h("slide 5 cm mu 0.62"), Ok((q("0.031"), true)));
+        assert_eq!(h("-slide 2 ft mu 1/2"), Ok((q("-0.3048"), true)));
+        for bad in [
+            "slide 5 cm",
+            "slide 5 cm mu 0",
+            "slide -5 cm mu 1",
+            "slide 5 kg mu 1",
+        ] {
+            assert!(h(bad).is_err(), "{bad}");
+        }
     }
 
     #[test]

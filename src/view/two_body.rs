@@ -61,7 +61,11 @@ pub struct Picture {
     pub v_in: [f64; 2],
     pub com: [f64; 2],
     pub fin: [f64; 2],
+    /// The bodies meet (`V1 != V2`; the body faster in `+x` is on the left).
     pub approaching: bool,
+    /// `2` when body 2 is on the left (`V1 < V2`); absent when body 1 is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub left: Option<u8>,
     /// The momentum line `k1 V1 + k2 V2 = P_total`, as `[k1, k2, P_total]`.
     pub line: [f64; 3],
     /// The IN, COM and FIN energy ellipses `1/2 V.M.V = KE`.
@@ -159,6 +163,7 @@ impl CaseInput {
             gravity: None,
             energy_unit: None,
             exact: false,
+            knowns: Default::default(),
         };
         if problem.has_unknowns() {
             return Err(InputError::new(
@@ -201,7 +206,7 @@ impl CaseInput {
         let typed = self.typed()?;
         let case = match typed.problem.solve(typed.inertia) {
             Ok(Posed::Collision(case, _)) => case,
-            Ok(Posed::Separation(..)) => {
+            Ok(Posed::Separation(..) | Posed::Separations(..)) => {
                 return Err(InputError::new(
                     "v2",
                     "the bodies start together (V1 = V2) and are pushed apart: a separation, \
@@ -285,6 +290,7 @@ pub(super) fn picture(
         com: v.com,
         fin: v.fin,
         approaching: v.approaching,
+        left: v.left,
         line: [k1, k2, m.total],
         ellipses: Ellipses {
             e_in: shape(&ell.e_in, energy.ke_in),

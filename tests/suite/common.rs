@@ -137,3 +137,37 @@ pub fn scratch(name: &str) -> std::path::PathBuf {
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }
+
+/// `collide solve ARGS --format json` (any exit code), with the code.
+pub fn solve_json(args: &[&str]) -> (i32, serde_json::Value) {
+    let out = collide()
+        .args([&["solve"], args, &["--format", "json"]].concat())
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        serde_json::from_str(&text).unwrap_or(serde_json::Value::Null),
+    )
+}
+
+/// `collide solve ARGS`: code, stdout, stderr.
+pub fn run_solve(args: &[&str]) -> (i32, String, String) {
+    run(&[&["solve"], args].concat())
+}
+
+/// Exit 2, nothing on stdout, and stderr naming each of `needles`.
+#[track_caller]
+pub fn solve_refused(args: &[&str], needles: &[&str]) {
+    let (code, out, err) = run_solve(args);
+    assert_eq!(code, 2, "{args:?}: {err}");
+    assert!(out.is_empty(), "{args:?}: {out}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: stderr lacks {n:?}:\n{err}");
+    }
+}
+
+/// A JSON number (a test failure when it is not one).
+pub fn number(v: &serde_json::Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}

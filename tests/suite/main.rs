@@ -4,6 +4,7 @@
 mod common;
 
 mod accuracy;
+mod asked;
 mod cli;
 mod contact;
 mod exact_and_accuracy;
@@ -11,8 +12,10 @@ mod frames;
 mod homework;
 mod hostile;
 mod invariants;
+mod knowns;
 mod lecture;
 mod metamorphic;
+mod order;
 mod plane;
 mod plane_edges;
 mod plane_sweeps;

@@ -239,7 +239,7 @@ fn frames_and_scene_energies_in_another_unit_differ_by_exactly_its_factor() {
 
 /// The dimension of a two-body report's path, as a power of velocity: 2 for energies, forms,
 /// products; 1 for velocities, momenta, impulses, forces, ellipse radii; 0 for the rest
-/// (masses, e, fractions, heights in metres, the principal axes).
+/// (masses, e, fractions, heights in metres, the principal axes, which body is on the left).
 fn velocity_power(path: &str) -> i32 {
     let leaf = path.rsplit('.').next().unwrap_or(path);
     if is_energy(path) || path.starts_with("forms.") || path.starts_with("products.") {
@@ -247,6 +247,7 @@ fn velocity_power(path: &str) -> i32 {
     } else if path.contains("axes")
         || path.starts_with("heights.")
         || path.starts_with("inertia")
+        || path == "left"
         || path.contains("restitution")
         || path.contains("fraction")
         // Forces print in newtons whatever the typed units: the same force in both.

@@ -21,6 +21,17 @@ const COMMANDS: &[&str] = &[
     "collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show all,heights",
     "collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'",
     "collide solve -m 4,1 -v 60,10 --plot term",
+    // Homework knowns and asks (issue 27): bodies typed in the other order, a pass-through on a
+    // pendulum, an impulse, two ways pieces part, a spring, slides, an exact swing, refusals.
+    "collide solve -m 1,4 -v 10,60 --show all",
+    "collide solve -m '10 g,4.0 kg' -v 0,0 --fin '550 m/s,?' --show all",
+    "collide solve -m '0.01 kg,2 kg' -v '500 m/s,0' --fin '?,height 0.1 m' --pass-through --length '5 m' --show all",
+    "collide solve -m 3,2 -v 6,0 --impulse 12 -e 1/2",
+    "collide solve -m '1200 kg,2400 kg' -v '4900 m/s,4900 m/s' --fin ?,? --released '7.11e8 J' --show all",
+    "collide solve -m 2,5 -v 10,3 --spring 1120 --length 1 --show slides --friction 0.2 --exact",
+    "collide solve -m 1,1 -v 5,0 --length 1 --gravity 10",
+    "collide solve -m 1,1 -v 10,0 --length 1 --gravity 10",
+    "collide solve -m 1,1 -v 4,0 --fin 5,? --pass-through",
     "collide frames -m 6,1 -v 3,-4 --reverse",
     "collide frames -m 4,1 -v 60,10 -e 2/3 --reverse",
     "collide scene scenarios/fig-1-3-elastic.toml",

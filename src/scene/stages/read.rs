@@ -397,6 +397,7 @@ impl Reader<'_> {
             gravity: t.gravity,
             energy_unit,
             exact: false,
+            knowns: Default::default(),
         };
         self.stages.push(Stage {
             name,

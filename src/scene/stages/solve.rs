@@ -122,7 +122,7 @@ impl StagesScene {
                 }
                 Posed::Wall(w, _) if exact => w.fin(),
                 Posed::Wall(w, _) => w.fin().map(|q| from_f64(to_f64(&q).unwrap_or(f64::NAN))),
-                Posed::Separation(..) => {
+                Posed::Separation(..) | Posed::Separations(..) => {
                     return Err(self.at(
                         stage,
                         "the bodies start together and are pushed apart (a separation): a stage \
@@ -267,6 +267,7 @@ fn velocities_in(posed: &Posed) -> [Q; 2] {
         Posed::Collision(case, _) => case.velocities.each_ref().map(Number::exact),
         Posed::Wall(w, _) => w.v(),
         Posed::Separation(s, _) => s.velocities.each_ref().map(Number::exact),
+        Posed::Separations(pair) => pair[0].0.velocities.each_ref().map(Number::exact),
     }
 }
 
@@ -279,6 +280,7 @@ fn mass_text(posed: &Posed, slot: usize) -> String {
         ),
         Posed::Wall(w, _) => (w.mass.clone(), w.units.mass),
         Posed::Separation(s, _) => (s.masses[slot].clone(), s.units.mass),
+        Posed::Separations(pair) => (pair[0].0.masses[slot].clone(), pair[0].0.units.mass),
     };
     match unit {
         Some(u) => format!("{} {u}", m.brief()),
@@ -296,6 +298,7 @@ fn mass_of(posed: &Posed, slot: usize) -> Option<(bool, Q)> {
         Posed::Wall(w, _) if w.ball() == slot => (w.m(), w.units.mass),
         Posed::Wall(..) => return None,
         Posed::Separation(s, _) => (s.masses[slot].exact(), s.units.mass),
+        Posed::Separations(pair) => (pair[0].0.masses[slot].exact(), pair[0].0.units.mass),
     };
     Some(match unit.and_then(|u| lookup(u, Dimension::Mass).ok()) {
         Some(u) => (true, m * u.si()),

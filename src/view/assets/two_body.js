@@ -151,7 +151,8 @@
     para('<span class="c-p">Momentum line</span> <span class="num">' + num(k1) + " V<sub>1</sub> + " + num(k2) + " V<sub>2</sub> = " + num(P) + "</span>");
     para("V<sub>COM</sub> = <span class=\"num\">" + num(s.v_com) + "</span>; e = <span class=\"num\">" + num(s.restitution) + "</span> (" + kind + ")");
     if (s.frame) para("Seen from the " + frameWords(s.frame.name) + " frame: observer at w = <span class=\"num\">" + num(s.frame.w) + "</span>");
-    if (!s.approaching) para("V<sub>1</sub> &le; V<sub>2</sub>: body 1 does not catch body 2 (they collide only if body 1 starts on the right).");
+    if (!s.approaching) para("V<sub>1</sub> = V<sub>2</sub>: the bodies never meet, so FIN = IN.");
+    else if (s.left === 2) para("V<sub>1</sub> &lt; V<sub>2</sub>: body 2 is behind (on the left) and catches body 1.");
     if (s.reverse) {
       para('<span class="c-rev">Time reverse</span>: IN&prime; = (<span class="num">' + num(s.reverse.in[0]) + ", " + num(s.reverse.in[1]) +
         "</span>), FIN&prime; = (<span class=\"num\">" + num(s.reverse.fin[0]) + ", " + num(s.reverse.fin[1]) + "</span>), e&prime; = 1/e = <span class=\"num\">" +

@@ -1,0 +1,142 @@
+//! Speeds from heights and slides (`height 2 m` is the speed `sqrt(2 g h)` of a fall from rest
+//! through it, `slide 5 cm mu 0.62` the speed `sqrt(2 mu g d)` friction stops in that distance),
+//! and heights from speeds (`--show heights`, `h = v^2 / 2g`), exact.
+
+use super::number::{Number, NumberError};
+use super::rational::Q;
+use super::units::{Dimension, Quantity, QuantityError, Unit, Units, lookup, parse};
+
+/// The standard acceleration of gravity, 9.80665 m/s^2 (CGPM 1901), exact by definition.
+pub const STANDARD_GRAVITY: &str = "9.80665";
+
+impl Quantity {
+    /// A height as the speed of a fall from rest through it (or needed to rise it),
+    /// `sqrt(2 g h)` in m/s with the height's sign, and whether that speed is exact: when `2 g h`
+    /// is the square of a rational (g = 10, h = 0.2 m: 2 m/s) the speed is that rational;
+    /// otherwise it is irrational, and `2 g h` is computed exactly, rounded once, then given a
+    /// correctly rounded square root (within an ulp of the exact speed). Other quantities are
+    /// returned as they are (exact).
+    pub fn with_gravity(&self, g: &Q) -> Result<(Quantity, bool), NumberError> {
+        if !self.height {
+            return Ok((self.clone(), true));
+        }
+        let h = self.number.exact();
+        let two_gh = crate::values::rational::int(2) * g * num_traits::Signed::abs(&h);
+        let negative = h < Q::ZERO;
+        let speed_unit = lookup("m/s", Dimension::Velocity).ok();
+        if let Some(root) = crate::values::rational::sqrt_exact(&two_gh) {
+            let speed = if negative { -root } else { root };
+            let quantity = Quantity {
+                number: crate::values::quantity::number_of(&speed)?,
+                unit: speed_unit,
+                height: false,
+            };
+            return Ok((quantity, true));
+        }
+        let speed = crate::values::quantity::to_f64(&two_gh)
+            .map(f64::sqrt)
+            .ok_or_else(|| {
+                NumberError::Overflow(format!(
+                    "sqrt(2 g h) for h = {} m, g = {} m/s^2",
+                    crate::values::quantity::significant(&num_traits::Signed::abs(&h), 15),
+                    crate::values::quantity::significant(g, 15)
+                ))
+            })?;
+        let speed = if negative { -speed } else { speed };
+        let quantity = Quantity {
+            number: Number::from_f64(speed)?,
+            unit: speed_unit,
+            height: false,
+        };
+        Ok((quantity, false))
+    }
+}
+
+/// How speeds become heights, `h = v^2 / 2g` (`--show heights`): `g` in m/s^2 and the size of
+/// the case's velocity unit in m/s (1 when velocities have no unit: they are taken as m/s).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HeightScale {
+    pub g: Q,
+    pub velocity_si: Q,
+    /// Whether the velocities had no unit (so were taken as m/s).
+    pub assumed: bool,
+}
+
+impl HeightScale {
+    /// For a case in `units`, with `g` (default: standard gravity).
+    pub fn new(g: Option<&Number>, units: &Units) -> HeightScale {
+        let g = g.map_or_else(
+            || {
+                STANDARD_GRAVITY
+                    .parse::<Number>()
+                    .map(|n| n.exact())
+                    .unwrap_or_default()
+            },
+            Number::exact,
+        );
+        let unit = units
+            .velocity
+            .and_then(|n| lookup(n, Dimension::Velocity).ok());
+        HeightScale {
+            g,
+            velocity_si: unit.map_or_else(|| crate::values::rational::int(1), Unit::si),
+            assumed: unit.is_none(),
+        }
+    }
+    /// `v^2 / 2g` in metres, exact.
+    pub fn height(&self, v: &Q) -> Q {
+        let v = v * &self.velocity_si;
+        &v * &v / (crate::values::rational::int(2) * &self.g)
+    }
+    /// `g` as a decimal.
+    pub fn g_text(&self) -> String {
+        crate::values::quantity::terminating_decimal(&self.g, usize::MAX)
+            .unwrap_or_else(|| crate::values::quantity::fraction(&self.g))
+    }
+}
+
+/// `height 2 m`, `-height 6 ft` (a speed from a height, signed): the height in metres, exact.
+/// `slide 5 cm mu 0.62` (a speed that friction `mu` stops within a distance `d`: `sqrt(2 mu g d)`,
+/// issue 27 §1) is the height `mu d`, since `v^2 = 2 g (mu d)`.
+pub(crate) fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
+    let (sign, rest) = match t.strip_prefix('-') {
+        Some(r) => ("-", r.trim_start()),
+        None => ("", t.strip_prefix('+').unwrap_or(t).trim_start()),
+    };
+    let is_slide = rest.starts_with("slide");
+    let (rest, mu) = match rest.strip_prefix("slide") {
+        Some(slide) => {
+            let Some((d, mu)) = slide.split_once(" mu ").or_else(|| slide.split_once(" μ "))
+            else {
+                return Some(Err(QuantityError::Slide(t.to_string())));
+            };
+            match mu.trim().parse::<Number>() {
+                Ok(mu) if mu.exact() > Q::ZERO => (d, mu.exact()),
+                _ => return Some(Err(QuantityError::Slide(t.to_string()))),
+            }
+        }
+        None => (
+            rest.strip_prefix("height")?,
+            crate::values::rational::int(1),
+        ),
+    };
+    Some((|| {
+        let q = parse(rest, Dimension::Length)?;
+        let unit = q
+            .unit
+            .map_or_else(|| crate::values::rational::int(1), Unit::si);
+        let metres = q.number.exact() * unit * mu;
+        if metres < Q::ZERO && is_slide {
+            return Err(QuantityError::Slide(t.to_string()));
+        }
+        if metres < Q::ZERO {
+            return Err(QuantityError::NegativeHeight(t.to_string()));
+        }
+        let text = format!("{sign}{}", crate::values::quantity::fraction(&metres));
+        Ok(Quantity {
+            number: text.parse()?,
+            unit: None,
+            height: true,
+        })
+    })())
+}
