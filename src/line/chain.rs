@@ -4,8 +4,8 @@
 //!
 //! Bodies on a line never pass through each other or through a wall, so their order is fixed
 //! for good: two objects that collide are neighbours before, and stay neighbours ever after
-//! (nothing can come between them). A collision is typed with the body on the left first and
-//! happens only if it catches the other, `V1 > V2`; a wall is on the side it is typed on. After
+//! (nothing can come between them). A collision happens when one catches the other: the one
+//! faster in +x is on the left, whichever is typed first; a wall is on the side it is typed on. After
 //! the last collision two neighbours meet again exactly when the left one moves faster than
 //! the right one: `v_left > v_right`, closing at `v_left - v_right` (a wall moves at its own
 //! `w`, usually 0). Everything here is exact.
@@ -61,6 +61,11 @@ pub struct Meeting {
 }
 
 impl Line {
+    /// Whether `a` is known to be the left neighbour of `b` (they met before).
+    pub fn left_of(&self, a: Object, b: Object) -> bool {
+        self.right.get(&a).map(|n| n.0) == Some(b)
+    }
+
     /// Records that `left` (on the left) and `right` collide at collision `at`: they must be
     /// neighbours already, or each free on that side and not known in the other order.
     pub fn collide(&mut self, left: Object, right: Object, at: usize) -> Result<(), OrderError> {

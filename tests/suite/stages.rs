@@ -477,12 +477,13 @@ fn bad_references_and_impossible_chains_are_refused_at_their_line() {
             ":5:1: [[stage]] stage2: A (v = 3/2) and B (v = 3) do not approach, so this collision does not happen",
         ),
         (
-            // B (3) on the left of A (3/2): they would have passed through each other.
+            // The same pair typed the other way round: B (3) stays on the right of A (3/2), and
+            // whichever is typed first they move apart (typed order means nothing, issue 27 §2).
             "reversed",
             format!(
                 "{first}[[stage]]\nmasses = [1, 2]\nvelocities = [\"stage1.fin2\", \"stage1.fin1\"]\n"
             ),
-            ":5:1: [[stage]] stage2: B is on the right of A since earlier stages, but body 1 is on the left",
+            ":5:1: [[stage]] stage2: B (v = 3) and A (v = 3/2) do not approach, so this collision does not happen: A is on the left of B since they met, and not faster",
         ),
         (
             // C cannot come between A and B.
@@ -673,4 +674,23 @@ fn stage_scenes_never_panic() {
         solved.get(),
         cases.get()
     );
+}
+
+#[test]
+fn a_stage_typed_faster_body_second_is_the_same_chain() {
+    // Issue 27 §2 in a chain: the Edexcel scene with its first stage typed B first (B at rest,
+    // A at 3 catching it from the left) is the same collision, and the chain after it the same:
+    // A leaves at 3/2 and B at 3, B rebounds from the wall at -1, A catches B at 5/2.
+    let text = std::fs::read_to_string("scenarios/stages-wall-again.toml").unwrap();
+    let swapped = text
+        .replace("bodies = [\"A\", \"B\"]", "bodies = [\"B\", \"A\"]")
+        .replace("masses = [2, 1]", "masses = [1, 2]")
+        .replace("velocities = [3, 0]", "velocities = [0, 3]")
+        .replace("fin = [\"3/2\", 3]", "fin = [3, \"3/2\"]")
+        .replace("\"stage1.fin2\"", "\"stage1.fin1\"");
+    assert_ne!(swapped, text);
+    let j = report_of("swapped.toml", &swapped);
+    assert_eq!(j["collide_again"], true, "{j}");
+    assert_eq!(j["next"][0]["closing_speed"], "5/2", "{j}");
+    assert_eq!(j["stages"][1]["report"]["fin"], json!(["-1", "0"]));
 }

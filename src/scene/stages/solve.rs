@@ -154,16 +154,40 @@ impl StagesScene {
     ) -> Result<(), SceneError> {
         let name = |o: Object| object_name(&self.bodies, o);
         let v = velocities_in(&run.posed);
-        if v[0] <= v[1] {
-            let [a, b] = stage.objects.map(name);
+        // Who is on the left: known for bodies that met before (they stay neighbours), else
+        // the one faster in +x, whichever is typed first, as for any collision on a line (issue
+        // 27 §2); a wall is on the side it is typed on. The collision happens when the left
+        // one is the faster.
+        let wall = stage.objects.iter().any(|o| matches!(o, Object::Wall(_)));
+        let [o0, o1] = stage.objects;
+        let typed_order = wall || line.left_of(o0, o1) || (v[0] > v[1] && !line.left_of(o1, o0));
+        let (left, right, v_left, v_right) = if typed_order {
+            (o0, o1, &v[0], &v[1])
+        } else {
+            (o1, o0, &v[1], &v[0])
+        };
+        if v_left <= v_right {
             let shown = |q: &Q| crate::values::quantity::Exact::Rational(q.clone());
             use crate::values::quantity::Scalar;
+            let why = if wall {
+                "the ball moves away from the wall".to_string()
+            } else if v[0] == v[1] {
+                "they move together and never meet".to_string()
+            } else {
+                format!(
+                    "{} is on the left of {} since they met, and not faster",
+                    name(left),
+                    name(right)
+                )
+            };
             return Err(self.at(
                 stage,
                 format!(
-                    "{a} (v = {}) and {b} (v = {}) do not approach, so this collision does not \
-                     happen: body 1 is on the left and must catch body 2 (V1 > V2)",
+                    "{} (v = {}) and {} (v = {}) do not approach, so this collision does not \
+                     happen: {why}",
+                    name(o0),
                     shown(&v[0]).show(),
+                    name(o1),
                     shown(&v[1]).show()
                 ),
             ));
@@ -229,35 +253,33 @@ impl StagesScene {
                 }
             }
         }
-        line.collide(stage.objects[0], stage.objects[1], i)
-            .map_err(|e| {
-                let m = match e {
-                    OrderError::Reversed { left, right } => format!(
-                        "{} is on the right of {} since earlier stages, but body 1 is on the \
-                         left: for {} to catch {} from the left, they would pass through each \
-                         other",
-                        name(left),
-                        name(right),
-                        name(left),
-                        name(right)
-                    ),
-                    OrderError::Taken {
-                        object,
-                        side,
-                        neighbour,
-                        since,
-                    } => format!(
-                        "{}'s neighbour on the {side} is {} (they met in {}), and nothing passes \
+        line.collide(left, right, i).map_err(|e| {
+            let m = match e {
+                OrderError::Reversed { left, right } => format!(
+                    "{} is on the right of {} since earlier stages, but here {} catches {} \
+                         from the left: they would pass through each other",
+                    name(left),
+                    name(right),
+                    name(left),
+                    name(right)
+                ),
+                OrderError::Taken {
+                    object,
+                    side,
+                    neighbour,
+                    since,
+                } => format!(
+                    "{}'s neighbour on the {side} is {} (they met in {}), and nothing passes \
                          between bodies on a line: {} cannot meet {}",
-                        name(object),
-                        name(neighbour),
-                        self.stages[since].name,
-                        name(object),
-                        name(stage.objects[if side == Side::Right { 1 } else { 0 }])
-                    ),
-                };
-                self.at(stage, m)
-            })
+                    name(object),
+                    name(neighbour),
+                    self.stages[since].name,
+                    name(object),
+                    name(if side == Side::Right { right } else { left })
+                ),
+            };
+            self.at(stage, m)
+        })
     }
 }
 
