@@ -67,6 +67,8 @@ pub struct RowWriter {
     columns: Vec<&'static Column>,
     /// The header's names.
     names: Vec<String>,
+    /// Each name as a JSON key with its colon (`"fin1x":`), made once for JSON Lines rows.
+    keys: Vec<Vec<u8>>,
     /// Where the text column (`error`) is, in a table of runs.
     text: Option<usize>,
     /// Whether cells may be missing (a table of runs).
@@ -100,9 +102,18 @@ impl RowWriter {
         let parquet = (format == RowFormat::Parquet)
             .then(|| parquet::Schema::new(&names, optional, text))
             .and_then(Result::ok);
+        let keys = names
+            .iter()
+            .map(|n| {
+                let mut key = serde_json::to_vec(n).unwrap_or_default();
+                key.push(b':');
+                key
+            })
+            .collect();
         RowWriter {
             columns,
             names,
+            keys,
             text,
             optional,
             format,
@@ -207,13 +218,11 @@ impl RowWriter {
             // JSON Lines (a text table has its page).
             RowBuf::Raw(out) => {
                 out.push(b'{');
-                for (i, (c, v)) in self.names.iter().zip(values).enumerate() {
+                for (i, (key, v)) in self.keys.iter().zip(values).enumerate() {
                     if i > 0 {
                         out.push(b',');
                     }
-                    out.push(b'"');
-                    out.extend_from_slice(c.as_bytes());
-                    out.extend_from_slice(b"\":");
+                    out.extend_from_slice(key);
                     out.extend_from_slice(fields.format(i, *v));
                 }
                 out.extend_from_slice(b"}\n");
@@ -256,31 +265,33 @@ impl RowWriter {
                 return;
             }
         };
+        let csv = self.format == RowFormat::Csv;
         for (i, v) in values.iter().enumerate() {
-            let cell: Option<Vec<u8>> = if Some(i) == self.text {
-                error.map(|e| self.quoted(e))
-            } else if v.is_nan() {
-                None
+            // Written in place, no cell allocated: a sweep writes millions of rows.
+            if csv {
+                if i > 0 {
+                    out.push(b',');
+                }
             } else {
-                Some(fields.format(i, *v).to_vec())
-            };
-            match self.format {
-                RowFormat::Csv => {
-                    if i > 0 {
-                        out.push(b',');
-                    }
-                    out.extend_from_slice(cell.as_deref().unwrap_or(b""));
+                out.push(if i == 0 { b'{' } else { b',' });
+                out.extend_from_slice(&self.keys[i]);
+            }
+            if Some(i) == self.text {
+                match error {
+                    Some(e) => out.extend_from_slice(&self.quoted(e)),
+                    None if !csv => out.extend_from_slice(b"null"),
+                    None => {}
                 }
-                _ => {
-                    out.push(if i == 0 { b'{' } else { b',' });
-                    out.extend_from_slice(
-                        serde_json::to_string(&self.names[i])
-                            .unwrap_or_default()
-                            .as_bytes(),
-                    );
-                    out.push(b':');
-                    out.extend_from_slice(cell.as_deref().unwrap_or(b"null"));
+            } else if v.is_nan() {
+                if !csv {
+                    out.extend_from_slice(b"null");
                 }
+            } else {
+                // The whole 32-byte slot, cut back: a fixed-size copy (see `row`).
+                let (slot, len) = fields.slot(i, *v);
+                let at = out.len() + len;
+                out.extend_from_slice(slot);
+                out.truncate(at);
             }
         }
         if self.format == RowFormat::Jsonl {

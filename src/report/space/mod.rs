@@ -249,8 +249,7 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
         let _ = writeln!(out, "e = {} ({kind})", style.show(e, o.approx));
     }
     if let Some(n) = &o.normal {
-        let _ = writeln!(
-            out,
+        let line = format!(
             "Line of impact n = {} (from body 1 to body 2){}",
             vector(style, n, o.approx),
             match polar(n).1 {
@@ -258,6 +257,11 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
                 None => String::new(),
             }
         );
+        out.push_str(&crate::values::terminal::wrap(
+            &line,
+            crate::values::terminal::width(),
+            "  ",
+        ));
     }
     out
 }
@@ -393,8 +397,10 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
     }
     if show.angles && o.dim >= 2 && o.bodies() == 2 {
         let mut b = Block::new("Angles");
+        let mut any = false;
         if let Some(t) = angle_between(&o.fin[0], &o.fin[1]) {
             b.row("between v1' and v2'", format!("{}°", num(t)), "");
+            any = true;
         }
         for i in 0..2 {
             if let Some(t) = angle_between(&o.v_in[i], &o.fin[i]) {
@@ -403,9 +409,13 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
                     format!("{}°", num(t)),
                     format!("from v{0} to v{0}'", i + 1),
                 );
+                any = true;
             }
         }
-        b.render(&mut out);
+        // No heading without a row (every final velocity zero, or no body moving before).
+        if any {
+            b.render(&mut out);
+        }
     }
     style.checked(out)
 }

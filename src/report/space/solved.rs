@@ -59,7 +59,11 @@ pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
     }
     let mut out = String::from("Solved:\n");
     for p in parts {
-        let _ = writeln!(out, "  {p}");
+        out.push_str(&wrap(
+            &format!("  {p}"),
+            crate::values::terminal::width(),
+            "      ",
+        ));
     }
     out
 }
@@ -68,13 +72,13 @@ pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
 pub fn checks_text(checks: &[Check], used: usize) -> String {
     let mut out = String::new();
     for c in checks.iter().skip(used).filter(|c| !c.ok) {
-        let _ = writeln!(
-            out,
+        let line = format!(
             "Check: {} does NOT hold: it misses by {} (of terms of size {})",
             c.law.name(),
             crate::values::quantity::significant(&c.residual, 3),
             crate::values::quantity::significant(&c.scale, 3)
         );
+        out.push_str(&wrap(&line, crate::values::terminal::width(), "  "));
     }
     out
 }

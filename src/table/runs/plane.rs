@@ -163,7 +163,13 @@ fn cross_dot(a: [f64; 2], b: [f64; 2]) -> (f64, f64) {
 /// `a` times the power of two that makes its largest component about 1 (exact): its direction,
 /// whose products neither underflow (1e-300) nor overflow (1e200).
 fn direction(a: [f64; 2]) -> [f64; 2] {
-    let k = a[0].abs().max(a[1].abs()).log2().floor() as i32;
+    let big = a[0].abs().max(a[1].abs());
+    // floor(log2 big): a normal number's exponent field; a subnormal's from log2.
+    let k = if big >= f64::MIN_POSITIVE {
+        (big.to_bits() >> 52) as i32 - 1023
+    } else {
+        big.log2().floor() as i32
+    };
     // In two factors, each within binary64's range (k runs from -1074 to 1023).
     a.map(|x| x * 2f64.powi(-k / 2) * 2f64.powi(-k + k / 2))
 }
