@@ -87,8 +87,8 @@ pub fn bounded<const D: usize>(
     n: [f64; D],
     e: f64,
 ) -> Option<[[f64; D]; 2]> {
-    let all = m.iter().chain(v.iter().flatten()).chain(&n).chain([&e]);
-    if !all.clone().all(|x| in_range(*x)) {
+    let within = |xs: &[f64]| xs.iter().all(|x| in_range(*x));
+    if !(within(&m) && v.iter().all(|w| within(w)) && within(&n) && in_range(e)) {
         return None;
     }
     let mut s_num = Bounded::exact(Dd::default());

@@ -22,7 +22,7 @@ use crate::line::inertia::Mass;
 use crate::line::restitution::Restitution;
 use crate::space::impact;
 use crate::table::row::ValueProblem;
-use crate::values::compensated::Dd;
+use crate::values::compensated::{Dd, exponent, pow2};
 use crate::values::number::Number;
 
 /// How the line of impact is given.
@@ -166,12 +166,12 @@ fn direction(a: [f64; 2]) -> [f64; 2] {
     let big = a[0].abs().max(a[1].abs());
     // floor(log2 big): a normal number's exponent field; a subnormal's from log2.
     let k = if big >= f64::MIN_POSITIVE {
-        (big.to_bits() >> 52) as i32 - 1023
+        exponent(big)
     } else {
         big.log2().floor() as i32
     };
-    // In two factors, each within binary64's range (k runs from -1074 to 1023).
-    a.map(|x| x * 2f64.powi(-k / 2) * 2f64.powi(-k + k / 2))
+    // In two factors, each a normal power of two (k runs from -1074 to 1023).
+    a.map(|x| x * pow2(-k / 2) * pow2(-k + k / 2))
 }
 
 /// The angle from `a` to `b` in degrees, in [0, 180]; `None` if either is zero.
