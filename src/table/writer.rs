@@ -502,11 +502,11 @@ impl FieldCache {
             let t = self.zmij.format_finite(v).as_bytes();
             let mut n = t.len();
             text[..n].copy_from_slice(t);
-            if v.abs() >= 1e16 {
-                if let Some(plus) = t.iter().position(|&b| b == b'+') {
-                    text.copy_within(plus + 1..n, plus);
-                    n -= 1;
-                }
+            if v.abs() >= 1e16
+                && let Some(plus) = t.iter().position(|&b| b == b'+')
+            {
+                text.copy_within(plus + 1..n, plus);
+                n -= 1;
             }
             *len = n as u8;
             *bits = v.to_bits();
