@@ -10,13 +10,16 @@
 //! - `law`: the contact forces; `closed`: the closed forms of a single contact;
 //! - `system`: the equations of motion; `fixed`: the fixed-step methods (ours);
 //!   `adaptive`: tsit45, bdf and sdirk (diffsol); `run`: the event-driven integration;
-//! - `work`: error against run time for each method.
+//! - `work`: error against run time for each method; `scales`: the setup's time scales, default
+//!   steps and tolerances; `error`: every refusal.
 
 pub mod adaptive;
 pub mod closed;
+mod error;
 pub mod fixed;
 pub mod law;
 pub mod run;
+mod scales;
 pub mod system;
 pub mod work;
 
@@ -27,9 +30,12 @@ use crate::values::number::num;
 use crate::track::{self, Body, Contact, Track};
 
 pub use adaptive::Adaptive;
+pub use error::ContactError;
 pub use fixed::{Counts, Fixed};
 pub use law::Law;
 pub use run::Failure;
+pub use scales::Scales;
+use scales::{SHORTEST, steps_for, too_short};
 use system::{Slot, System};
 
 /// Which law, as asked.
@@ -199,153 +205,6 @@ pub const AUTO_TOL_HERTZ: f64 = 1e-12;
 /// Stiffness ratio (fastest over slowest contact frequency) above which `auto` picks an implicit
 /// method.
 pub const STIFF_RATIO: f64 = 100.0;
-
-/// Why a contact run cannot be made.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum ContactError {
-    #[error(transparent)]
-    Track(#[from] track::TrackError),
-    #[error("{which}stiffness {} must be a finite number > 0", num(*.k))]
-    Stiffness { which: &'static str, k: f64 },
-    #[error("{which}damping {} must be a finite number >= 0", num(*.value))]
-    Damping { which: &'static str, value: f64 },
-    #[error(
-        "{which}restitution {} cannot be reached by a linear contact: give a value in (0, 1] \
-         (e = 0, sticking, would need infinite damping)", num(*.e)
-    )]
-    Restitution { which: &'static str, e: f64 },
-    #[error("{which}{kind} contacts take no --zeta or -e: {why}")]
-    NotForLaw {
-        which: &'static str,
-        kind: &'static str,
-        why: &'static str,
-    },
-    #[error("bodies {0} and {next} overlap at the start: start them touching or apart", next = .0 + 1)]
-    Overlap(usize),
-    #[error(
-        "the shortest contact lasts {0:e}, too short to integrate (below 1e-100): rescale the \
-         units (masses, stiffness) so that contact times are nearer 1"
-    )]
-    TooShort(f64),
-    #[error(
-        "the shortest contact lasts {:.3e}, too short to integrate (below 1e-100): its damping \
-         (zeta = {:.3e}{}) ends it that fast; {}",
-        .t, .zeta, restitution_note(*.e), damping_way_out(*.e_min, *.zeta_max)
-    )]
-    TooDamped {
-        t: f64,
-        zeta: f64,
-        /// The contact's restitution, when it is not too small to compute.
-        e: f64,
-        /// The least restitution (and the most damping) whose contact lasts 1e-100.
-        e_min: f64,
-        zeta_max: f64,
-    },
-    #[error(
-        "the reference final velocities are not finite ({}): no error can be measured against \
-         them",
-        num(*.0)
-    )]
-    Reference(f64),
-    #[error(
-        "walls on both sides: the bodies bounce between them for ever, so the run never ends by \
-         itself; give --until T (until = T in a scene) for the state at time T"
-    )]
-    Forever,
-    #[error(
-        "{who} at t = {}: {positions} (an overlap of {} where {} means the centres met); the \
-         result is not printed: the contact is too soft for this speed and these sizes. Use a \
-         stiffer law ({flag}, now {}), a smaller speed or larger --sizes",
-        num(*.t), num(*.overlap), num(*.reach), num(*.k)
-    )]
-    Through {
-        /// "bodies 1 and 2 passed through each other", "body 1 passed through the right wall".
-        who: String,
-        t: f64,
-        /// "x1 = 1.6, x2 = 1.5" or "x1 = 0.6 with the wall at 0.5", in the lab frame.
-        positions: String,
-        overlap: f64,
-        reach: f64,
-        /// The flag of the law that let them through, and its stiffness.
-        flag: &'static str,
-        k: f64,
-    },
-    #[error(
-        "body {0} has size 0: contact forces act while bodies overlap, and a point overlaps \
-         another only by passing through it; give --sizes (sizes = [...] in a scene)"
-    )]
-    PointBody(usize),
-    #[error("--dt {} must be a finite number > 0", num(*.0))]
-    Dt(f64),
-    #[error("--tol {} must be a number in [1e-14, 0.1]", num(*.0))]
-    Tol(f64),
-    #[error(
-        "--dt is for the fixed-step methods and --tol for the adaptive ones; {0} takes the other"
-    )]
-    WrongStep(&'static str),
-    #[error(
-        "{method} with --dt {} is unstable on the stiffest contact ({who}: omega dt = {} > \
-         {limit:.3}); use --dt below {safe:.3e} or an implicit method (implicit-euler, \
-         implicit-midpoint, bdf, sdirk)",
-        num(*.dt),
-        three(*.wh)
-    )]
-    Unstable {
-        method: &'static str,
-        dt: f64,
-        who: String,
-        wh: f64,
-        limit: f64,
-        safe: f64,
-    },
-    #[error("{method} failed: {failure}")]
-    Failed {
-        method: &'static str,
-        failure: Failure,
-    },
-    #[error(
-        "{method} gained energy: {end} at the end against {start} at the start ({gain:.3e} \
-         relative) though no contact law can create any; the result is not printed (use a \
-         smaller --dt or --tol)"
-    )]
-    EnergyGain {
-        method: &'static str,
-        start: f64,
-        end: f64,
-        gain: f64,
-    },
-}
-
-/// ", e = 1e-300" beside a damping ratio, when the restitution is above 0 in binary64.
-fn restitution_note(e: f64) -> String {
-    if e > 0.0 {
-        format!(", restitution e = {e:.3e}")
-    } else {
-        String::new()
-    }
-}
-
-/// What to give instead of a damping so heavy that the contact is too short to integrate.
-fn damping_way_out(e_min: f64, zeta_max: f64) -> String {
-    let bound = if e_min > 0.0 {
-        format!(" (e >= {e_min:.3e} here, zeta <= {zeta_max:.3e})")
-    } else {
-        format!(" (zeta <= {zeta_max:.3e} here)")
-    };
-    format!(
-        "give less damping or a larger restitution{bound}; for bodies that stick (e = 0), use \
-         collide track -e 0"
-    )
-}
-
-/// `x` to three decimals, or in scientific notation when large.
-fn three(x: f64) -> String {
-    if x < 1e6 {
-        format!("{x:.3}")
-    } else {
-        format!("{x:.3e}")
-    }
-}
 
 /// One contact from its start to its end.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -611,165 +470,6 @@ pub fn simulate(setup: &Setup, settings: &Settings) -> Result<ContactRun, Contac
     let mut run = integrate(setup, &slots, &scales, method, dt, tol, settings)?;
     run.impulse_model = impulse_model(setup, &slots, settings.until)?;
     Ok(run)
-}
-
-/// The shortest contact time integrated (measured: contacts of 1e-75 run as well as any; at
-/// 1e-150 the solvers stall on steps).
-const SHORTEST: f64 = 1e-100;
-
-/// Why the shortest contact is too short: heavy damping (a linear law whose damping rate `c/mu`
-/// is above its natural frequency), with the least restitution that would do; else the scales.
-fn too_short(slots: &[Slot], scales: &Scales) -> ContactError {
-    let shortest = (0..slots.len())
-        .max_by(|&a, &b| scales.omega[a].total_cmp(&scales.omega[b]))
-        .map(|i| &slots[i]);
-    if let Some(Slot {
-        law: Law::Linear { k, c },
-        mu,
-        ..
-    }) = shortest
-        && c / mu > (k / mu).sqrt()
-    {
-        let contact = closed::Linear::new(*k, *c, *mu);
-        // The fastest rate of a heavily damped contact is c/mu = 2 zeta omega0; its time
-        // scale pi / (c/mu) is SHORTEST at this zeta. Below zeta = 1 the undamped contact
-        // itself is too short: then the scales are the trouble.
-        let zeta_max = std::f64::consts::PI / (SHORTEST * 2.0 * contact.omega0);
-        if zeta_max <= 1.0 {
-            return ContactError::TooShort(scales.t_min);
-        }
-        return ContactError::TooDamped {
-            t: scales.t_min,
-            zeta: contact.zeta,
-            e: contact.restitution(),
-            e_min: closed::Linear::restitution_of(zeta_max),
-            zeta_max,
-        };
-    }
-    ContactError::TooShort(scales.t_min)
-}
-
-/// Time, length and speed scales of a setup, for tolerances, default steps and `auto`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Scales {
-    /// Largest initial relative speed.
-    pub speed: f64,
-    /// Per slot: the fastest rate at that speed, the natural frequency or the damping rate
-    /// (`Law::frequency`).
-    pub omega: Vec<f64>,
-    /// Per slot: the natural (undamped) frequency at that speed, the time scale of the contact.
-    pub natural: Vec<f64>,
-    /// Smallest deepest overlap over the slots at that speed.
-    pub overlap: f64,
-    /// Shortest and longest contact time.
-    pub t_min: f64,
-    pub t_max: f64,
-    /// [`AUTO_TOL`], or [`AUTO_TOL_HERTZ`] where any law is Hertzian.
-    pub default_tol: f64,
-}
-
-impl Scales {
-    pub fn of(setup: &Setup, slots: &[Slot]) -> Scales {
-        let speed = setup.speed_scale();
-        let v = if speed > 0.0 { speed } else { 1.0 };
-        let omega: Vec<f64> = slots.iter().map(|s| s.law.frequency(s.mu, v)).collect();
-        let natural: Vec<f64> = slots
-            .iter()
-            .map(|s| s.law.natural_frequency(s.mu, v))
-            .collect();
-        let overlap = slots
-            .iter()
-            .map(|s| match s.law {
-                Law::Linear { k, .. } => v / (k / s.mu).sqrt(),
-                Law::Hertz { k, .. } => closed::hertz_max_overlap(k, s.mu, v),
-            })
-            .fold(f64::INFINITY, f64::min);
-        let times: Vec<f64> = omega.iter().map(|w| std::f64::consts::PI / w).collect();
-        Scales {
-            speed,
-            t_min: times.iter().copied().fold(f64::INFINITY, f64::min),
-            t_max: times.iter().copied().fold(0.0, f64::max),
-            omega,
-            natural,
-            overlap,
-            default_tol: if slots.iter().any(|s| matches!(s.law, Law::Hertz { .. })) {
-                AUTO_TOL_HERTZ
-            } else {
-                AUTO_TOL
-            },
-        }
-    }
-
-    /// The fastest rate (a contact's frequency or damping rate) over the slowest natural
-    /// frequency: a soft contact beside a stiff one, or one contact damped so heavily that its
-    /// damping rate `c/mu` outruns its own time scale (`2 zeta` times its natural frequency),
-    /// is stiff.
-    pub fn stiffness_ratio(&self) -> f64 {
-        let hi = self.omega.iter().copied().fold(0.0, f64::max);
-        let lo = self.natural.iter().copied().fold(f64::INFINITY, f64::min);
-        if lo > 0.0 && lo.is_finite() {
-            hi / lo
-        } else {
-            1.0
-        }
-    }
-
-    /// `auto`: bdf where two time scales differ by more than [`STIFF_RATIO`] (two contacts, or
-    /// one damped with `zeta` above 50), else tsit45.
-    pub fn auto(&self) -> Method {
-        if self.stiffness_ratio() > STIFF_RATIO {
-            Method::Adaptive(Adaptive::Bdf)
-        } else {
-            Method::Adaptive(Adaptive::Tsit45)
-        }
-    }
-
-    /// The stiffest slot, named, and its frequency.
-    fn fastest(&self, setup: &Setup) -> Option<(String, f64)> {
-        let contacts = setup.contacts();
-        let (i, w) = self
-            .omega
-            .iter()
-            .enumerate()
-            .max_by(|a, b| a.1.total_cmp(b.1))?;
-        Some((contacts[i].describe(setup.bodies.len()), *w))
-    }
-}
-
-/// The step (fixed) or tolerance (adaptive) to use.
-fn steps_for(
-    method: Method,
-    settings: &Settings,
-    scales: &Scales,
-) -> Result<(Option<f64>, Option<f64>), ContactError> {
-    match method {
-        Method::Fixed(_) => {
-            if settings.tol.is_some() {
-                return Err(ContactError::WrongStep(method.name()));
-            }
-            // Explicit methods need steps under their stability limit on the stiffest contact;
-            // implicit ones only need to resolve the slowest.
-            let dt = settings.dt.unwrap_or(if method.implicit() {
-                scales.t_max / 1000.0
-            } else {
-                scales.t_min / 64.0
-            });
-            if !(dt > 0.0 && dt.is_finite()) {
-                return Err(ContactError::Dt(dt));
-            }
-            Ok((Some(dt), None))
-        }
-        Method::Adaptive(_) => {
-            if settings.dt.is_some() {
-                return Err(ContactError::WrongStep(method.name()));
-            }
-            let tol = settings.tol.unwrap_or(scales.default_tol);
-            if !(1e-14..=0.1).contains(&tol) {
-                return Err(ContactError::Tol(tol));
-            }
-            Ok((None, Some(tol)))
-        }
-    }
 }
 
 /// An open contact: when it began and how fast.
