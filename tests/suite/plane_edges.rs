@@ -469,3 +469,20 @@ fn a_sweep_row_beyond_binary64_says_so() {
     ]);
     assert!(out.contains("a result is beyond binary64"), "{out}");
 }
+
+/// Plane review #30: with `--exact` and an irrational unit normal, the parts along n are
+/// approximations, but a body at rest has the part 0 exactly (0 . n = 0): printed `0`, not
+/// `≈0`. Hand values: n = (1, 2)/sqrt 5, v1 = (4, 0): v1.n = 4/sqrt 5 = 1.78885438199983...
+#[test]
+fn an_exact_zero_among_approximations_is_printed_as_zero() {
+    let out = stdout(&[
+        "solve", "-m", "1,3", "-v", "(4,0),0", "--normal", "(1,2)", "--exact",
+    ]);
+    let line = out
+        .lines()
+        .find(|l| l.trim_start().starts_with("IN   ("))
+        .unwrap_or_else(|| panic!("no IN line along n:\n{out}"));
+    assert!(line.contains("(≈1.78885438199983"), "{line}");
+    assert!(line.contains(", 0)"), "{line}");
+    assert!(!line.contains("≈0)"), "{line}");
+}

@@ -127,6 +127,9 @@ impl Style {
 
     /// A value for people.
     pub fn show(&self, q: &Q, approx: bool) -> String {
+        // An approximation carries relative digits, so a zero among them is exactly zero (a
+        // body at rest's part along an irrational unit normal): `0`, never `≈0`.
+        let approx = approx && !q.is_zero();
         if self.exact {
             if approx {
                 Exact::Approx(q.clone()).show()
@@ -149,6 +152,7 @@ impl Style {
 
     /// A value for JSON: a number, or in exact mode a fraction string.
     pub fn json(&self, q: &Q, approx: bool) -> Value {
+        let approx = approx && !q.is_zero();
         if self.exact {
             let e = if approx {
                 Exact::Approx(q.clone())
