@@ -324,7 +324,13 @@ impl PlaneInput {
             .find(|o| Verdict::of(o, &posed.statement) == Verdict::Physical)
             .or_else(|| all.first().map(|(o, _)| o))
             .ok_or_else(|| InputError::new("m1", RenderError::NoSolution))?;
-        let w = lab
+        // Pucks that do not approach do not collide: FIN = IN for a "finally at rest" frame.
+        let seen = if Verdict::of(lab, &posed.statement) == Verdict::Physical {
+            lab.clone()
+        } else {
+            lab.as_happens()
+        };
+        let w = seen
             .observer(frame, posed.typed_values)
             .map_err(|e| InputError::new("frame", e))?;
         let o = lab.boost(&w);

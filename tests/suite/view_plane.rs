@@ -213,6 +213,21 @@ fn plane_fin_follows_the_impulse_formula_and_the_closed_forms() {
 }
 
 #[test]
+fn the_page_sees_pucks_that_do_not_collide_from_their_initial_velocities() {
+    // v1 = (-4, 0), v2 = 0, n at 30 degrees: n.(v1 - v2) < 0, no collision, FIN = IN, so body 1
+    // "finally at rest" moves at w = v1 = (-4, 0), and the page draws v1 = (0, 0), v2 = (4, 0)
+    // (the state byte for byte as `collide solve`, which checks the same hand values).
+    let case = json!({"m1": "1", "m2": "1", "v1": "(-4,0)", "v2": "(0,0)", "normal": "30deg",
+                      "frame": "rest-fin:1"});
+    let a = ask(plane_request(&case));
+    assert_eq!(a["ok"], true, "{a}");
+    assert_eq!(a["picture"]["w"], json!([-4.0, 0.0]), "{a}");
+    assert_eq!(a["picture"]["in"], json!([[0.0, 0.0], [4.0, 0.0]]), "{a}");
+    assert_eq!(a["picture"]["fin"], Value::Null, "{a}");
+    assert_eq!(a["state"].as_str().unwrap(), cli_json(&solve_args(&case)));
+}
+
+#[test]
 fn the_plane_refuses_what_it_cannot_draw_by_name() {
     let base = json!({"m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(0,0)", "normal": "30deg"});
     let with = |k: &str, v: &str| {
