@@ -14,7 +14,8 @@
   let planeAnswer = data.answers.plane; // the last good answer
   let planeState = null; // its JSON, parsed
   // The pucks' map (kept while an arrow is dragged), the arrow being dragged, the one the keys move.
-  const pucks = { map: null, keep: false, dragging: -1, selected: 0 };
+  // The last move of an arrow the core refused, `{i, v}` (v in the frame on screen), else null.
+  const pucks = { map: null, keep: false, dragging: -1, selected: 0, pending: null };
 
   function lineMode() {
     const checked = document.querySelector('input[name="p-line"]:checked');
@@ -48,7 +49,8 @@
   function showPlaneError(answer) {
     const ids = {};
     for (const f of planeFields.concat(["frame", "reverse", "exact"])) ids[f] = "p-" + f;
-    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene"]);
+    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene"],
+      ["pucks-svg", "plane-numbers", "momentum-svg", "normal-svg"]);
   }
 
 
@@ -197,7 +199,14 @@
       label(to, names[i][0] + " " + vec(p.in[i]) + unit, planeColours[i]);
     }
     // The handles to drag, on top; the keys move the selected one (ringed while focused).
+    const fixed = [0, 1].filter((i) => !draggable(i));
+    if (fixed.length) {
+      el(svg, "text", { id: "drag-note", x: 12, y: m.H - 26, class: "tick" },
+        (fixed.length === 2 ? "v\u2081 and v\u2082 move" : "v" + (fixed[0] ? "\u2082" : "\u2081") + " moves") +
+        " with this frame: type it, or drag it in another frame");
+    }
     for (let i = 0; i < 2; i++) {
+      if (!draggable(i)) continue;
       const [x, y] = tip(i, p.in[i]);
       if (i === pucks.selected) el(svg, "circle", { class: "tip-ring", cx: r2(x), cy: r2(y), r: 12, fill: "none", stroke: "#111827", "stroke-width": 1.5, "stroke-dasharray": "3 3" });
       el(svg, "circle", { id: "tip-" + (i + 1), class: "tip", cx: r2(x), cy: r2(y), r: 7, fill: planeColours[i], stroke: "#fff", "stroke-width": 2 });
@@ -290,9 +299,13 @@
       rows.push(['<span class="c-1">v<sub>1</sub>&prime;</span>', pair(s.fin[0]), polar(s.fin_speed[0], s.fin_angle_deg[0])]);
       rows.push(['<span class="c-2">v<sub>2</sub>&prime;</span>', pair(s.fin[1]), polar(s.fin_speed[1], s.fin_angle_deg[1])]);
       rows.push(['<span class="c-com">V<sub>COM</sub></span>', pair(s.v_com), polar(p.v_com_polar[0], p.v_com_polar[1])]);
-      if (s.impulse) rows.push(['<span class="c-rev">J</span> on body 2', pair(s.impulse), "m\u2082 (v\u2082\u2032 \u2212 v\u2082)"]);
     }
     table("Velocities" + unit, ["", "components", "speed @ angle"], rows);
+    if (s.fin && s.impulse) {
+      // A momentum, in the mass unit times the velocity unit (collide solve's "kg m/s").
+      const u = s.units ? " (" + (s.units.mass || "mass unit") + " " + (s.units.velocity || "velocity unit") + ")" : "";
+      table("Impulse" + u, ["", "components", ""], [['<span class="c-rev">J</span> on body 2', pair(s.impulse), "m\u2082 (v\u2082\u2032 \u2212 v\u2082)"]]);
+    }
     if (!s.fin) {
       para("The pucks do not approach along the line of impact (n&middot;(v<sub>1</sub> &minus; v<sub>2</sub>) &le; 0): they do not collide.");
       return;
@@ -324,19 +337,43 @@
     }
     if (s.reverse) {
       para('<span class="c-rev">Time reverse</span>: IN&prime; = &minus;FIN = ' + pair(s.reverse.in[0]) + ", " + pair(s.reverse.in[1]) +
-        "; FIN&prime; = &minus;IN; e&prime; = 1/e = " + cell(s.reverse.restitution));
+        "; FIN&prime; = &minus;IN; e&prime; = " + (typeof s.reverse.restitution === "number"
+          ? "1/e = " + cell(s.reverse.restitution) + (s.reverse.restitution > 1 ? ": an explosion, not a collision" : "")
+          : "undefined: 1/e with e = 0, the stuck bodies fly apart"));
     }
   }
 
+  // Whether body i's arrow can be dragged in the frame on screen: not where the frame moves with
+  // a velocity that depends on it (body i initially at rest: its arrow is always 0; a body
+  // finally at rest: FIN depends on both INs, and may not give every on-screen value).
+  function draggable(i) {
+    const f = $("p-frame").value;
+    return f !== "rest-in:" + (i + 1) && !f.startsWith("rest-fin:");
+  }
+
+  // The lab velocity of body i that the frame on screen shows as `u`: the frame's velocity w
+  // does not depend on v_i (the lab, an observer, the other body initially at rest: v_i = u + w),
+  // or, in the COM frame, u = v_i - (m_i v_i + m_j v_j) / M = (m_j / M) (v_i - v_j), so
+  // v_i = v_j + (M / m_j) u (body j's lab velocity unchanged).
+  function labVelocity(i, u) {
+    const p = planeAnswer.picture;
+    if ($("p-frame").value !== "com") return [u[0] + p.w[0], u[1] + p.w[1]];
+    const j = 1 - i, k = (p.masses[0] + p.masses[1]) / p.masses[j];
+    return [p.in[j][0] + p.w[0] + k * u[0], p.in[j][1] + p.w[1] + k * u[1]];
+  }
+
   // Moves the tip of body i's IN arrow to `v` (a velocity in the frame on screen), snapped to
-  // the step; the typed velocity keeps the case's unit.
+  // the step; the typed velocity keeps the case's unit. A move the core refuses is kept, so the
+  // keys go on from it, not from the last valid case.
   function moveTip(i, v) {
+    if (!draggable(i)) return null;
     const t0 = performance.now();
     const step = snapStep(pucks.map);
-    const w = planeAnswer.picture.w;
+    const lab = labVelocity(i, v);
     const unit = planeAnswer.picture.velocity_unit;
-    $("p-v" + (i + 1)).value = "(" + snapText(v[0] + w[0], step) + "," + snapText(v[1] + w[1], step) + ")" + (unit ? " " + unit : "");
+    $("p-v" + (i + 1)).value = "(" + snapText(lab[0], step) + "," + snapText(lab[1], step) + ")" + (unit ? " " + unit : "");
     const answer = solvePlane(true);
+    pucks.pending = answer && !answer.ok ? { i, v } : null;
     const ms = performance.now() - t0;
     view.lastUpdateMs = ms;
     view.planeTimings.push(ms);
@@ -377,6 +414,7 @@
       // The nearer tip of the two IN arrows, within reach.
       let best = -1, dist = 36;
       for (let i = 0; i < 2; i++) {
+        if (!draggable(i)) continue;
         const d = Math.hypot(m.c[i][0] + m.s * p.in[i][0] - q[0], m.c[i][1] - m.s * p.in[i][1] - q[1]);
         if (d < dist) { best = i; dist = d; }
       }
@@ -396,9 +434,12 @@
     const end = (ev) => {
       if (pucks.dragging < 0) return;
       if (ev.type === "pointerup") pending = ev;
-      flush();
-      pucks.dragging = -1;
-      svg.classList.remove("dragging");
+      try {
+        flush();
+      } finally {
+        pucks.dragging = -1;
+        svg.classList.remove("dragging");
+      }
     };
     svg.addEventListener("pointerup", end);
     svg.addEventListener("pointercancel", end);
@@ -413,8 +454,11 @@
       if (!d) return;
       ev.preventDefault();
       const i = pucks.selected;
+      if (!draggable(i)) return;
       const step = snapStep(pucks.map) * (ev.shiftKey ? 10 : 1);
-      const v = planeAnswer.picture.in[i];
+      // From where the last key put the arrow, if the core refused it (so the keys can go past
+      // a refused value); else from the case on screen.
+      const v = pucks.pending && pucks.pending.i === i ? pucks.pending.v : planeAnswer.picture.in[i];
       const next = [v[0] + d[0] * step, v[1] + d[1] * step];
       const m = pucks.map;
       const x = m.c[i][0] + m.s * next[0], y = m.c[i][1] - m.s * next[1];
@@ -434,10 +478,7 @@
 
   // The sliders follow the core's answer (an angle typed as N30E or (1,1) included).
   function syncPlaneSliders(p) {
-    for (const f of ["m1", "m2"]) {
-      const v = valueOf($("p-" + f).value);
-      if (v > 0) $("p-" + f + "-range").value = String(Math.log10(v));
-    }
+    for (const f of ["m1", "m2"]) massToSlider($("p-" + f + "-range"), $("p-" + f).value);
     const e = valueOf($("p-e").value);
     if (e >= 0) $("p-e-range").value = String(e);
     if (p.normal_deg !== null) $("p-normal-range").value = String(Math.round(p.normal_deg));
@@ -472,11 +513,11 @@
     }
     $("p-reverse").checked = !!c.reverse;
     $("p-exact").checked = !!c.exact;
-    const typed = () => solvePlane(false);
+    const typed = () => { pucks.pending = null; solvePlane(false); };
     for (const f of planeFields) $("p-" + f).addEventListener("input", typed);
     for (const f of ["m1", "m2"]) {
       $("p-" + f + "-range").addEventListener("input", () => {
-        $("p-" + f).value = String(Number(Math.pow(10, Number($("p-" + f + "-range").value)).toPrecision(3)));
+        $("p-" + f).value = sliderToMass($("p-" + f + "-range"), $("p-" + f).value);
         solvePlane(false);
       });
     }
