@@ -133,24 +133,27 @@ impl PlaneInput {
         if !disks {
             return Ok(None);
         }
-        let number = |field: &'static str, text: &str, what: &str| {
+        // Numbers, or lengths with units (`2.5 cm`), read as `collide solve --radii` reads them.
+        let length = |field: &'static str, text: &str, what: &str| {
             if t(text).is_empty() {
                 return Err(InputError::new(
                     field,
                     format!("{what} is missing: the disks need R1, R2 and the impact parameter B"),
                 ));
             }
-            t(text)
-                .parse::<Number>()
+            crate::values::units::parse(t(text), crate::values::units::Dimension::Length)
                 .map_err(|e| InputError::new(field, format!("{what} '{}': {e}", t(text))))
         };
-        Ok(Some(NormalGiven::Geometry {
-            radii: [
-                number("r1", &self.r1, "radius R1")?,
-                number("r2", &self.r2, "radius R2")?,
-            ],
-            b: number("b", &self.b, "impact parameter B")?,
-        }))
+        let r1 = length("r1", &self.r1, "radius R1")?;
+        let r2 = length("r2", &self.r2, "radius R2")?;
+        let b = length("b", &self.b, "impact parameter B")?;
+        let (radii, b) = crate::space::pose::geometry([&r1, &r2], &b).map_err(|e| {
+            // The field whose unit is missing, or extra.
+            let unit = [r1.unit.is_some(), r2.unit.is_some(), b.unit.is_some()];
+            let odd = if unit[0] == unit[1] { "b" } else if unit[0] == unit[2] { "r2" } else { "r1" };
+            InputError::new(odd, e)
+        })?;
+        Ok(Some(NormalGiven::Geometry { radii, b }))
     }
 
     /// The typed fields with their names.

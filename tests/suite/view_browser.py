@@ -170,6 +170,13 @@ def run_steps(page, steps, errors):
         if "drag_tip" in step:
             d = step["drag_tip"]
             page.eval_on_selector("#pucks-svg", "s => s.scrollIntoView({block: 'center', behavior: 'instant'})")
+            # The picture still (no smooth scroll under way) before the mouse goes down.
+            top, still = None, 0
+            while still < 3:
+                now = page.eval_on_selector("#pucks-svg", "s => s.getBoundingClientRect().top")
+                still = still + 1 if now == top else 0
+                top = now
+                page.wait_for_timeout(30)
             at = page.eval_on_selector("#pucks-svg", """(s, i) => { const r = s.getBoundingClientRect(), t = s.querySelector('#tip-' + i)
                 || s.querySelector('#in-' + i + ' polygon'), k = r.width / s.viewBox.baseVal.width;
                 const b = t.getBBox(); return [r.left + (b.x + b.width / 2) * k, r.top + (b.y + b.height / 2) * k, k]; }""", d["body"])

@@ -164,3 +164,19 @@ fn browser_drags_in_a_moving_frame_put_the_arrow_under_the_mouse() {
             .starts_with("v\u{2081} and v\u{2082} move with this frame")
     );
 }
+
+#[test]
+fn browser_disk_fields_take_lengths_with_units() {
+    let Some(b) = browser() else { return };
+    // Disks, v1 = (1, 0), v2 = 0, R1 = R2 = 2.5 cm, b = 1 in: sin phi = 2.54 / 5 = 0.508, phi
+    // the angle between v1 - v2 (along x) and the line of impact (the state is `collide
+    // solve`'s, checked natively in view_plane.rs); no error, and the b slider at 1 (inches).
+    let r = read(b, "p6");
+    assert_eq!(r["error"], "", "{r}");
+    assert!(r["state"]["fin"].is_array(), "{r}");
+    assert_eq!(r["slider"], "1", "{r}");
+    // n = (cos phi, -sin phi) from body 1 to body 2 for b > 0 (body 2 below the path), or
+    // mirrored: either way |n_y| = 0.508.
+    let ny = r["state"]["normal"][1].as_f64().unwrap().abs();
+    assert!((ny - 0.508).abs() <= 1e-15, "{r}");
+}

@@ -293,6 +293,45 @@ fn written_state(page: &str) -> String {
 }
 
 #[test]
+fn view_takes_disk_radii_with_units_as_solve_does() {
+    // R1 = R2 = 2.5 cm, b = 1 in = 2.54 cm: sin phi = b / (R1 + R2) = 2.54 / 5 = 0.508, only the
+    // ratio enters; the page's JSON is `collide solve`'s for the same flags (was: exit 2,
+    // "radius R1 '2.5 cm': not a number"). The picture's lengths are in metres.
+    let flags = [
+        "-m", "1,1", "-v", "(4,0),0", "--radii", "2.5 cm,2.5 cm", "--impact-parameter", "1 in",
+    ];
+    let page = stdout(&[&["view"][..], &flags].concat());
+    let solve = stdout(&[&["solve"][..], &flags, &["--format", "json"]].concat());
+    assert_eq!(written_state(&page), solve);
+    let a = ask(json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(4,0)", "v2": "0",
+                       "r1": "2.5 cm", "r2": "2.5 cm", "b": "1 in"}));
+    assert_eq!(a["ok"], true, "{a}");
+    assert_eq!(a["picture"]["radii"], json!([0.025, 0.025]), "{a}");
+    assert_eq!(a["picture"]["b"], json!(0.0254), "{a}");
+    let sin_phi = a["picture"]["b"].as_f64().unwrap() / 0.05;
+    assert_close(sin_phi, 0.508, 4.0 * f64::EPSILON, "sin phi");
+    // A scene with lengths: the same state.
+    let dir = scratch("radii-units");
+    let scene = dir.join("disks.toml");
+    std::fs::write(
+        &scene,
+        "masses = [1, 1]\nvelocities = [\"(4,0)\", \"0\"]\nradii = [\"2.5 cm\", \"2.5 cm\"]\n\
+         impact_parameter = \"1 in\"\n",
+    )
+    .unwrap();
+    let page = stdout(&["view", scene.to_str().unwrap()]);
+    let report: Value = serde_json::from_str(&stdout(&["scene", scene.to_str().unwrap(), "--format", "json"]))
+        .map(|v: Value| v["report"].clone())
+        .unwrap();
+    assert_eq!(serde_json::from_str::<Value>(&written_state(&page)).unwrap(), report);
+    // Some with a unit, some without: refused, at the field that differs.
+    let a = ask(json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(4,0)", "v2": "0",
+                       "r1": "2.5 cm", "r2": "2.5 cm", "b": "1"}));
+    assert_eq!((a["ok"].clone(), a["field"].clone()), (json!(false), json!("b")), "{a}");
+    assert!(a["error"].as_str().unwrap().contains("all with a length unit"), "{a}");
+}
+
+#[test]
 fn view_opens_the_plane_from_flags_and_scenes() {
     // Flags: the page opens on the plane with the case, whose JSON is `collide solve`'s.
     for flags in [

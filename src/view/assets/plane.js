@@ -482,11 +482,12 @@
     const e = valueOf($("p-e").value);
     if (e >= 0) $("p-e-range").value = String(e);
     if (p.normal_deg !== null) $("p-normal-range").value = String(Math.round(p.normal_deg));
-    const sum = valueOf($("p-r1").value) + valueOf($("p-r2").value);
+    // Radii and b typed with units (2.5 cm) are read in theirs (the same unit for all three).
+    const sum = splitUnit($("p-r1").value)[0] + splitUnit($("p-r2").value)[0];
     if (sum > 0) {
       const range = $("p-b-range");
       range.min = String(-sum); range.max = String(sum); range.step = String(sum / 200);
-      const b = valueOf($("p-b").value);
+      const b = splitUnit($("p-b").value)[0];
       if (isFinite(b)) range.value = String(b);
     }
   }
@@ -523,7 +524,11 @@
     }
     $("p-e-range").addEventListener("input", () => { $("p-e").value = String(Number($("p-e-range").value)); solvePlane(false); });
     $("p-normal-range").addEventListener("input", () => { $("p-normal").value = $("p-normal-range").value + "deg"; solvePlane(false); });
-    $("p-b-range").addEventListener("input", () => { $("p-b").value = String(Number(Number($("p-b-range").value).toPrecision(3))); solvePlane(false); });
+    $("p-b-range").addEventListener("input", () => {
+      const unit = splitUnit($("p-b").value)[1] || splitUnit($("p-r1").value)[1];
+      $("p-b").value = String(Number(Number($("p-b-range").value).toPrecision(3))) + (unit ? " " + unit : "");
+      solvePlane(false);
+    });
     for (const r of document.querySelectorAll('input[name="p-line"]')) r.addEventListener("change", () => { showLineFields(); solvePlane(false); });
     for (const id of ["p-frame", "p-reverse", "p-exact"]) $(id).addEventListener("change", typed);
     $("p-preset").addEventListener("change", () => {
