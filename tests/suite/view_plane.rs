@@ -332,6 +332,56 @@ fn view_takes_disk_radii_with_units_as_solve_does() {
 }
 
 #[test]
+fn the_page_names_the_field_at_fault_in_its_own_words() {
+    let base = json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(4,0)", "v2": "(0,0)",
+                      "normal": "30deg", "line": "normal"});
+    let with = |pairs: &[(&str, &str)]| {
+        let mut c = base.clone();
+        for (k, v) in pairs {
+            c[*k] = (*v).into();
+        }
+        c
+    };
+    let none = |e: &str| with(&[("normal", ""), ("line", "none"), ("e", e)]);
+    for (case, field, words) in [
+        // A result beyond binary64 from the largest value typed, not from m1.
+        (with(&[("v1", "(1e300,0)")]), "v1", "beyond binary64"),
+        (with(&[("e", "1e300")]), "e", "beyond binary64"),
+        // The line of impact chosen but left empty is missing, not "1 more known value".
+        (with(&[("normal", "")]), "normal", "the line of impact n is missing"),
+        (none("1"), "e", "only e = 0 (the pucks stick)"),
+        (none("0.5"), "e", "only e = 0 (the pucks stick)"),
+        // Disks with v1 = v2: the page's words for b, no command-line flag.
+        (
+            json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(1,0)", "r1": "1",
+                   "r2": "1", "b": "1", "line": "disks"}),
+            "v2",
+            "the impact parameter b needs both initial velocities",
+        ),
+        (with(&[("m1", "")]), "m1", "m1 is empty: give a mass"),
+        (with(&[("v1", "")]), "v1", "v1 is empty: give a velocity"),
+        (with(&[("v2", " ")]), "v2", "v2 is empty: give a velocity"),
+        (with(&[("e", "1e309")]), "e", "too large for binary64 (|x| must be below 1.8e308): expected a number >= 0"),
+        (with(&[("e", "0/0")]), "e", "'0/0' divides by zero: expected a number >= 0"),
+    ] {
+        let a = ask(case.clone());
+        assert_eq!(a["ok"], false, "{case}");
+        let error = a["error"].as_str().unwrap();
+        assert_eq!(a["field"], field, "{case}: {error}");
+        assert!(error.contains(words), "{case}: {error}");
+        assert!(!error.contains("--"), "a flag in the page's message: {error}");
+    }
+    // The two-body panel: V1 = 1e300 overflows the quadratic forms, at v1.
+    let a = ask(json!({"op": "solve", "m1": "4", "m2": "1", "v1": "1e300", "v2": "10"}));
+    assert_eq!((a["ok"].clone(), a["field"].clone()), (json!(false), json!("v1")), "{a}");
+    assert!(!a["error"].as_str().unwrap().contains("--show"), "{a}");
+    // The command line: three masses for the page's two bodies, and where to run them.
+    let (code, out, err) = run(&["view", "-m", "1,2,3", "-v", "1,2,3"]);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(err.contains("collide view draws two bodies") && err.contains("collide solve"), "{err}");
+}
+
+#[test]
 fn view_opens_the_plane_from_flags_and_scenes() {
     // Flags: the page opens on the plane with the case, whose JSON is `collide solve`'s.
     for flags in [

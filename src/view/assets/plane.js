@@ -26,6 +26,7 @@
     const r = { op: "plane" };
     for (const f of ["m1", "m2", "v1", "v2", "e"]) r[f] = $("p-" + f).value;
     const mode = lineMode();
+    r.line = mode;
     if (mode === "normal") r.normal = $("p-normal").value;
     if (mode === "disks") for (const f of ["r1", "r2", "b"]) r[f] = $("p-" + f).value;
     r.frame = $("p-frame").value;
