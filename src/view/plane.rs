@@ -426,7 +426,11 @@ impl PlaneInput {
             impulse: collides.then(|| pair(&o.impulse(1))),
             approaching,
             phi_deg: o.normal.as_ref().and_then(|n| angle_between(&relative, n)),
-            normal_parts: if collides { normal_parts(&o) } else { None },
+            normal_parts: if collides {
+                normal_parts(&o, self.reverse)
+            } else {
+                None
+            },
         })
     }
 }
@@ -466,8 +470,9 @@ pub(super) fn page_words(message: &str) -> String {
 
 /// The velocity plane of the normal parts: the masses, the velocities' components along the
 /// unit normal and the same e, as a collision on a rail (physics.md section 7: the tangential
-/// parts pass unchanged). `None` where a value does not fit binary64.
-fn normal_parts(o: &Outcome) -> Option<RailPicture> {
+/// parts pass unchanged), with its time reverse when asked (not for e = 0, which has none).
+/// `None` where a value does not fit binary64.
+fn normal_parts(o: &Outcome, reverse: bool) -> Option<RailPicture> {
     let parts = o.normal_parts()?;
     let q = |x: &Q| to_f64(x).filter(|v| v.is_finite());
     let mass = |i: usize| Mass::from_f64(q(&o.masses[i])?).ok();
@@ -475,5 +480,6 @@ fn normal_parts(o: &Outcome) -> Option<RailPicture> {
     let inertia = InertiaTensor::diagonal(&mass(0)?, &mass(1)?).ok()?;
     let e = Restitution::new(Number::from_f64(q(o.e.as_ref()?)?).ok()?).ok()?;
     let case = Case::new(inertia, [speed(&parts.v_in[0])?, speed(&parts.v_in[1])?], e);
-    super::two_body::picture(&case.collision, &Frame::Lab, false).ok()
+    let reverse = reverse && o.e.as_ref().is_some_and(|e| !e.is_zero());
+    super::two_body::picture(&case.collision, &Frame::Lab, reverse).ok()
 }

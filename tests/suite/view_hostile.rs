@@ -180,3 +180,114 @@ fn browser_disk_fields_take_lengths_with_units() {
     let ny = r["state"]["normal"][1].as_f64().unwrap().abs();
     assert!((ny - 0.508).abs() <= 1e-15, "{r}");
 }
+
+/// Boxes `[name, x, y, width, height]` (picture units) that overlap, as pairs of names.
+fn overlaps(boxes: &Value) -> Vec<(String, String)> {
+    let b: Vec<(String, [f64; 4])> = boxes
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| {
+            let n = |k: usize| x[k].as_f64().unwrap();
+            (x[0].as_str().unwrap().to_string(), [n(1), n(2), n(3), n(4)])
+        })
+        .collect();
+    let mut out = Vec::new();
+    for (i, (na, a)) in b.iter().enumerate() {
+        for (nb, c) in &b[i + 1..] {
+            // Inside each other's extent on both axes by more than half a unit (not touching).
+            let x = a[0] < c[0] + c[2] - 0.5 && c[0] < a[0] + a[2] - 0.5;
+            let y = a[1] < c[1] + c[3] - 0.5 && c[1] < a[1] + a[3] - 0.5;
+            if x && y && a[2] > 0.0 && c[2] > 0.0 {
+                out.push((na.clone(), nb.clone()));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn browser_a_body_at_rest_before_is_not_said_to_turn() {
+    let Some(b) = browser() else { return };
+    // Disks: v1 = (1, 0), v2 = 0, b = 1 = (R1 + R2) / 2: phi = 30 degrees, v1' = v1 - (v1.n) n
+    // turns v1 by 90 - 30 = 60 degrees; body 2 was at rest, so it did not "turn" (collide
+    // solve's text leaves the line out; its JSON's turned_deg says 0).
+    let text = read(b, "p11").as_str().unwrap();
+    assert!(text.contains("body 1 turned 60\u{b0}"), "{text}");
+    assert!(!text.contains("body 2 turned"), "{text}");
+}
+
+#[test]
+fn browser_momentum_labels_do_not_cover_each_other() {
+    let Some(b) = browser() else { return };
+    // v1 = (4, 0), v2 = 0 (m = 1, 1, n at 30 degrees): p2 = 0 ends on P; its label would
+    // cover P's. No label overlaps another or an axis name, P is labelled, p2 (zero) is not.
+    let boxes = read(b, "p13");
+    assert_eq!(overlaps(boxes), vec![], "{boxes}");
+    let names: Vec<&str> = boxes
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x[0].as_str().unwrap())
+        .collect();
+    assert!(
+        names.contains(&"P") && !names.contains(&"p\u{2082}"),
+        "{names:?}"
+    );
+}
+
+#[test]
+fn browser_the_time_reverse_is_drawn_in_the_plane_pictures() {
+    let Some(b) = browser() else { return };
+    // m = 1, 1, v1 = (4, 0), v2 = 0, n at 30 degrees, elastic: the normal parts (v1.n, v2.n)
+    // go from IN = (4 cos 30, 0) = (3.464, 0) to FIN = (0, 3.464) (equal masses swap them), so
+    // the reverse starts at IN' = -FIN = (0, -3.464) and ends at FIN' = -IN = (-3.464, 0).
+    let r = read(b, "p15");
+    assert_eq!(r["arrows"], serde_json::json!(["rev-1", "rev-2"]), "{r}");
+    assert_eq!(
+        r["points"],
+        serde_json::json!(["n-point-rev-in", "n-point-rev-fin"]),
+        "{r}"
+    );
+    let labels = r["labels"].to_string();
+    assert!(labels.contains("IN\u{2032} (0, \u{2212}3.464)"), "{labels}");
+    assert!(labels.contains("FIN\u{2032} (\u{2212}3.464, 0)"), "{labels}");
+}
+
+#[test]
+fn browser_arrows_moved_by_keys_stay_in_the_picture() {
+    let Some(b) = browser() else { return };
+    // e = 3 (superelastic), v1 pushed up by Shift+ArrowUp six times: FIN grows past the scale
+    // the picture had; every arrow and label must stay inside the 560 x 460 picture.
+    let boxes = read(b, "p12");
+    for x in boxes.as_array().unwrap() {
+        let n = |k: usize| x[k].as_f64().unwrap();
+        assert!(
+            n(1) >= 0.0 && n(2) >= 0.0 && n(1) + n(3) <= 560.0 && n(2) + n(4) <= 460.0,
+            "{x} outside the picture"
+        );
+    }
+}
+
+#[test]
+fn browser_the_normal_parts_zoom_in_and_keep_their_axis_names() {
+    let Some(b) = browser() else { return };
+    // m = 1e6, 1, n at 30 degrees, elastic, v2 = 0: along n, IN = (a, 0), COM = 1e6 a / (1e6 +
+    // 1) ~ a on both axes, FIN = 2 COM - IN ~ (a, 2a), with a = v1.n: zoomed in, the three
+    // points are apart (each pair > 20 units; unzoomed they sat in one dot), and no label
+    // covers another or an axis name.
+    let r = read(b, "p14");
+    let p: Vec<[f64; 2]> = r["points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(pair)
+        .collect();
+    for i in 0..3 {
+        for j in i + 1..3 {
+            let d = (p[i][0] - p[j][0]).hypot(p[i][1] - p[j][1]);
+            assert!(d > 20.0, "{r}");
+        }
+    }
+    assert_eq!(overlaps(&r["labels"]), vec![], "{r}");
+}

@@ -172,6 +172,19 @@
     }
   }
 
+  // A text in `parent` at `attrs`, moved down a line at a time while it would overlap a box of
+  // `placed` (measured, not estimated); its box is added to `placed`.
+  function placeText(parent, placed, attrs, text) {
+    const t = el(parent, "text", attrs, text);
+    const hits = (b) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width && b.y < q.y + q.height && q.y < b.y + b.height);
+    for (let k = 0; k < 12 && hits(t.getBBox()); k++) t.setAttribute("y", r2(Number(t.getAttribute("y")) + 15));
+    const b = t.getBBox();
+    placed.push({ x: b.x, y: b.y, width: b.width, height: b.height });
+    return t;
+  }
+  // The boxes of the texts already in `svg` (axis names) that labels must not cover.
+  const boxesOf = (svg) => [...svg.querySelectorAll("text.label")].map((t) => { const b = t.getBBox(); return { x: b.x, y: b.y, width: b.width, height: b.height }; });
+
   // ---------------------------------------------------------------- the velocity plane
   // The data box of a velocity plane (lecture Figs. 1.3, 2.3): square, around the origin, the
   // pictures' IN, COM and FIN and their energy ellipses (with `zoom`, around the points only);
@@ -278,20 +291,16 @@
     if (opts.under) opts.under(g, X, Y);
     // The points and their coordinates (the IN-FIN chord lies on the momentum line).
     const labels = el(svg, "g", {});
-    // Labels beside their points, moved down a line where they would overlap another.
-    const placed = [];
+    // Labels beside their points, moved down a line where they would overlap another or an
+    // axis name.
+    const placed = boxesOf(svg);
     const point = (v, colour, name, id, r) => {
       const sx = X(v[0]), sy = Y(v[1]);
       el(svg, "circle", { id: prefix + id, cx: r2(sx), cy: r2(sy), r, fill: colour, stroke: "#fff", "stroke-width": 2 });
       const text = name + " (" + short(v[0]) + ", " + short(v[1]) + ")";
       const right = sx < a.x + a.w - 150;
-      const width = 7.2 * text.length;
-      const x0 = right ? sx + 10 : sx - 10 - width;
-      let y = sy - 9;
-      while (placed.some((q) => Math.abs(q.y - y) < 14 && x0 < q.x1 && q.x0 < x0 + width)) y += 15;
-      placed.push({ x0, x1: x0 + width, y });
-      el(labels, "text", {
-        x: r2(sx + (right ? 10 : -10)), y: r2(y), "text-anchor": right ? "start" : "end",
+      placeText(labels, placed, {
+        x: r2(sx + (right ? 10 : -10)), y: r2(sy - 9), "text-anchor": right ? "start" : "end",
         class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4,
       }, text);
     };

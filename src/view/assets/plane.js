@@ -108,6 +108,7 @@
     const c = [[C[0] - gap[0] * d[0], C[1] + gap[0] * d[1]], [C[0] + gap[1] * d[0], C[1] - gap[1] * d[1]]];
     const vs = [[0, p.in[0]], [1, p.in[1]]];
     if (p.fin) vs.push([0, p.fin[0]], [1, p.fin[1]]);
+    if (p.fin && $("p-reverse").checked) vs.push([0, p.fin[0].map((x) => -x)], [1, p.fin[1].map((x) => -x)]);
     let s = Infinity;
     const margin = 26;
     for (const [i, v] of vs) {
@@ -124,9 +125,21 @@
     return { W, H, C, d, c, radii, s };
   }
 
+  // Whether every arrow's tip (IN, FIN, and the reverse's) is inside the picture at map `m`.
+  function pucksFit(m, p) {
+    const vs = [[0, p.in[0]], [1, p.in[1]]];
+    if (p.fin) vs.push([0, p.fin[0]], [1, p.fin[1]]);
+    if (p.fin && $("p-reverse").checked) vs.push([0, p.fin[0].map((x) => -x)], [1, p.fin[1].map((x) => -x)]);
+    return vs.every(([i, v]) => {
+      const x = m.c[i][0] + m.s * v[0], y = m.c[i][1] - m.s * v[1];
+      return x > 10 && x < m.W - 10 && y > 10 && y < m.H - 10;
+    });
+  }
+
   function drawPucks(p) {
     const svg = $("pucks-svg");
-    if (!pucks.keep || !pucks.map) pucks.map = fitPucks(p);
+    // The scale kept while an arrow is dragged (or after a move, while every tip fits).
+    if (!pucks.keep || !pucks.map || (pucks.dragging < 0 && !pucksFit(pucks.map, p))) pucks.map = fitPucks(p);
     const m = pucks.map;
     const step = snapStep(m);
     // For tests and the curious: where the pucks are drawn (their centres and radii in the
@@ -191,6 +204,15 @@
         arrow(svg, m.c[i], to, planeColours[i], { id: "fin-" + (i + 1), dash: "7 4", width: 2.2 });
         label(to, names[i][1] + " " + vec(p.fin[i]), planeColours[i]);
       }
+      if ($("p-reverse").checked) {
+        // The time reverse: IN' = -FIN (FIN' = -IN, the IN arrows turned round).
+        for (let i = 0; i < 2; i++) {
+          const back = [-p.fin[i][0], -p.fin[i][1]];
+          const to = tip(i, back);
+          arrow(svg, m.c[i], to, "var(--rev)", { id: "rev-" + (i + 1), dash: "2 3", width: 2 });
+          label(to, names[i][0] + " rev. = \u2212" + names[i][1] + " " + vec(back), "var(--rev)");
+        }
+      }
     } else {
       el(svg, "text", { x: 12, y: 40, class: "label", fill: "var(--bad)" }, "They do not approach along n: no collision, no FIN.");
     }
@@ -235,22 +257,32 @@
     const S = (q) => [ax.X(q[0]), ax.Y(q[1])];
     const g = el(svg, "g", {});
     const names = [["p\u2081", "p\u2081\u2032"], ["p\u2082", "p\u2082\u2032"]];
-    const note = (q, text, colour, dy) => el(g, "text", { x: r2(q[0] + 6), y: r2(q[1] + dy), class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, text);
+    // Labels placed last, each clear of the axis names and the labels before it (P first); an
+    // arrow of zero length gets none (p2 = 0 would sit on P).
+    const notes = [];
+    const note = (q, text, colour, dy, from, to) => {
+      if (from && to && Math.hypot(to[0] - from[0], to[1] - from[1]) < 0.5) return;
+      notes.push([q, text, colour, dy]);
+    };
     const mid = (a, b) => [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
     arrow(g, S([0, 0]), S(P), "var(--com)", { id: "momentum-total", width: 3 });
     note(S(P), "P", "var(--com)", -6);
     if (p.p_fin) {
       arrow(g, S([0, 0]), S(p.p_fin[0]), planeColours[0], { dash: "7 4" });
       arrow(g, S(p.p_fin[0]), S(P), planeColours[1], { dash: "7 4" });
-      note(mid(S([0, 0]), S(p.p_fin[0])), names[0][1], planeColours[0], 14);
-      note(mid(S(p.p_fin[0]), S(P)), names[1][1], planeColours[1], 14);
+      note(mid(S([0, 0]), S(p.p_fin[0])), names[0][1], planeColours[0], 14, S([0, 0]), S(p.p_fin[0]));
+      note(mid(S(p.p_fin[0]), S(P)), names[1][1], planeColours[1], 14, S(p.p_fin[0]), S(P));
       arrow(g, S(p.p_fin[0]), S(p.p_in[0]), "var(--rev)", { id: "momentum-impulse", width: 1.8, dash: "2 3" });
-      note(mid(S(p.p_fin[0]), S(p.p_in[0])), "J", "var(--rev)", -4);
+      note(mid(S(p.p_fin[0]), S(p.p_in[0])), "J", "var(--rev)", -4, S(p.p_fin[0]), S(p.p_in[0]));
     }
     arrow(g, S([0, 0]), S(p.p_in[0]), planeColours[0], {});
     arrow(g, S(p.p_in[0]), S(P), planeColours[1], {});
-    note(mid(S([0, 0]), S(p.p_in[0])), names[0][0], planeColours[0], -6);
-    note(mid(S(p.p_in[0]), S(P)), names[1][0], planeColours[1], -6);
+    note(mid(S([0, 0]), S(p.p_in[0])), names[0][0], planeColours[0], -6, S([0, 0]), S(p.p_in[0]));
+    note(mid(S(p.p_in[0]), S(P)), names[1][0], planeColours[1], -6, S(p.p_in[0]), S(P));
+    const placed = boxesOf(svg);
+    for (const [q, text, colour, dy] of notes) {
+      placeText(g, placed, { x: r2(q[0] + 6), y: r2(q[1] + dy), class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, text);
+    }
   }
 
   // The lecture's velocity plane of the normal parts (v1.n, v2.n), |n| = 1: along the line of
@@ -262,10 +294,21 @@
     // Without a line of impact (or a collision) there is no rail to draw.
     $("normal-figure").hidden = !np;
     if (!np) return;
-    const map = fitVelocityPlane([np], false);
+    const map = fitVelocityPlane([np], $("p-zoom").checked, (q, add) => { if (q.reverse) [q.reverse.in, q.reverse.fin].forEach(add); });
     velocityPlane(svg, np, map, {
       prefix: "n-", axes: ["v\u2081\u00b7n", "v\u2082\u00b7n"],
       title: "along n: M = diag(" + short(p.masses[0]) + ", " + short(p.masses[1]) + "), e = " + short(np.e),
+      under: (g, X, Y) => {
+        // The time reverse: IN' = -FIN, FIN' = -IN, on the same momentum line through -P.
+        if (!np.reverse) return;
+        const rv = np.reverse;
+        el(g, "line", { x1: r2(X(rv.in[0])), y1: r2(Y(rv.in[1])), x2: r2(X(rv.fin[0])), y2: r2(Y(rv.fin[1])), stroke: "var(--rev)", "stroke-dasharray": "4 4", "stroke-width": 1.5 });
+      },
+      more: (point) => {
+        if (!np.reverse) return;
+        point(np.reverse.in, "var(--rev)", "IN\u2032", "point-rev-in", 4);
+        point(np.reverse.fin, "var(--rev)", "FIN\u2032", "point-rev-fin", 4);
+      },
     });
   }
 
@@ -329,7 +372,9 @@
     }
     const angles = [];
     if (s.angle_between_deg !== undefined && s.angle_between_deg !== null) angles.push("between v<sub>1</sub>&prime; and v<sub>2</sub>&prime; <span class=\"num\">" + num(s.angle_between_deg) + "&deg;</span>");
-    if (s.turned_deg) s.turned_deg.forEach((a, i) => { if (a !== null) angles.push("body " + (i + 1) + " turned <span class=\"num\">" + num(a) + "&deg;</span>"); });
+    // As collide solve's text: no "turned" for a body at rest before or after (its JSON says 0).
+    const moving = (v) => Number(v[0]) !== 0 || Number(v[1]) !== 0;
+    if (s.turned_deg) s.turned_deg.forEach((a, i) => { if (a !== null && moving(s.in[i]) && moving(s.fin[i])) angles.push("body " + (i + 1) + " turned <span class=\"num\">" + num(a) + "&deg;</span>"); });
     if (angles.length) para("Angles: " + angles.join("; "));
     if (p.normal) {
       let line = "Line of impact n = (<span class=\"num\">" + num(p.normal[0]) + ", " + num(p.normal[1]) + "</span>) at <span class=\"num\">" + num(p.normal_deg) + "&deg;</span>";
@@ -441,6 +486,8 @@
         pucks.dragging = -1;
         svg.classList.remove("dragging");
       }
+      // Rescaled once the drag ends if an arrow left the picture.
+      if (!pucksFit(pucks.map, planeAnswer.picture)) drawPucks(planeAnswer.picture);
     };
     svg.addEventListener("pointerup", end);
     svg.addEventListener("pointercancel", end);
@@ -461,11 +508,7 @@
       // a refused value); else from the case on screen.
       const v = pucks.pending && pucks.pending.i === i ? pucks.pending.v : planeAnswer.picture.in[i];
       const next = [v[0] + d[0] * step, v[1] + d[1] * step];
-      const m = pucks.map;
-      const x = m.c[i][0] + m.s * next[0], y = m.c[i][1] - m.s * next[1];
-      const inside = x > 10 && x < m.W - 10 && y > 10 && y < m.H - 10;
       moveTip(i, next);
-      if (!inside) { pucks.keep = false; pucks.map = null; renderPlane(); }
     });
     for (const r of document.querySelectorAll('input[name="p-key"]')) r.addEventListener("change", () => { if (r.checked) selectTip(Number(r.value)); });
   }
@@ -532,6 +575,7 @@
     });
     for (const r of document.querySelectorAll('input[name="p-line"]')) r.addEventListener("change", () => { showLineFields(); solvePlane(false); });
     for (const id of ["p-frame", "p-reverse", "p-exact"]) $(id).addEventListener("change", typed);
+    $("p-zoom").addEventListener("change", () => drawNormalParts(planeAnswer.picture));
     $("p-preset").addEventListener("change", () => {
       const p = planePresets[$("p-preset").value];
       if (!p) return;
