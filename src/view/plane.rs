@@ -161,7 +161,13 @@ impl PlaneInput {
         let (radii, b) = crate::space::pose::geometry([&r1, &r2], &b).map_err(|e| {
             // The field whose unit is missing, or extra.
             let unit = [r1.unit.is_some(), r2.unit.is_some(), b.unit.is_some()];
-            let odd = if unit[0] == unit[1] { "b" } else if unit[0] == unit[2] { "r2" } else { "r1" };
+            let odd = if unit[0] == unit[1] {
+                "b"
+            } else if unit[0] == unit[2] {
+                "r2"
+            } else {
+                "r1"
+            };
             InputError::new(odd, e)
         })?;
         Ok(Some(NormalGiven::Geometry { radii, b }))
@@ -208,7 +214,10 @@ impl PlaneInput {
                 } else {
                     "a velocity, e.g. (4,0) or '6 @ 30deg'"
                 };
-                return Err(InputError::new(field, format!("{field} is empty: give {what}")));
+                return Err(InputError::new(
+                    field,
+                    format!("{field} is empty: give {what}"),
+                ));
             }
             match split_bodies(text) {
                 Ok(list) if list.len() == 1 => Ok(list[0]),
@@ -280,10 +289,11 @@ impl PlaneInput {
     /// flags named as the page's fields.
     fn in_page_words(&self, e: InputError) -> InputError {
         let no_line = t(&self.normal).is_empty()
-            && [&self.r1, &self.r2, &self.b].iter().all(|s| t(s).is_empty());
+            && [&self.r1, &self.r2, &self.b]
+                .iter()
+                .all(|s| t(s).is_empty());
         if no_line
-            && (e.error.contains("unknowns and")
-                || e.error.contains("without a line of impact"))
+            && (e.error.contains("unknowns and") || e.error.contains("without a line of impact"))
         {
             return InputError::new(
                 "e",
@@ -455,17 +465,16 @@ pub(super) fn largest_field(fields: &[(&'static str, &String)]) -> &'static str 
 /// A command line's message in the page's words: its flags named as the page's fields.
 pub(super) fn page_words(message: &str) -> String {
     [
-        (
-            "--impact-parameter",
-            "the impact parameter b",
-        ),
+        ("--impact-parameter", "the impact parameter b"),
         ("--radii", "the radii R1, R2"),
         ("--normal", "the line of impact n"),
         ("--exact", "'exact (fractions)'"),
         ("--show", "the report's sections"),
     ]
     .iter()
-    .fold(message.to_string(), |m, (flag, words)| m.replace(flag, words))
+    .fold(message.to_string(), |m, (flag, words)| {
+        m.replace(flag, words)
+    })
 }
 
 /// The velocity plane of the normal parts: the masses, the velocities' components along the

@@ -484,15 +484,30 @@ fn a_finally_at_rest_frame_without_a_collision_is_initially_at_rest() {
         json(&a)
     };
     for (frame, same, w, seen) in [
-        ("rest-fin:1", "rest-in:1", [-4.0, 0.0], [[0.0, 0.0], [4.0, 0.0]]),
-        ("rest-fin:2", "rest-in:2", [0.0, 0.0], [[-4.0, 0.0], [0.0, 0.0]]),
+        (
+            "rest-fin:1",
+            "rest-in:1",
+            [-4.0, 0.0],
+            [[0.0, 0.0], [4.0, 0.0]],
+        ),
+        (
+            "rest-fin:2",
+            "rest-in:2",
+            [0.0, 0.0],
+            [[-4.0, 0.0], [0.0, 0.0]],
+        ),
     ] {
         let j = with(frame);
         assert_eq!(j["approaching"], false, "{frame}: {j}");
         assert_eq!(vecs(&j["in"]), seen.map(Vec::from).to_vec(), "{frame}: {j}");
         assert_eq!(j["frame"]["name"], frame, "{j}");
         assert_eq!(
-            j["frame"]["w"].as_array().unwrap().iter().map(f).collect::<Vec<_>>(),
+            j["frame"]["w"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(f)
+                .collect::<Vec<_>>(),
             w.to_vec(),
             "{frame}: {j}"
         );

@@ -40,15 +40,30 @@ fn browser_an_input_error_greys_out_and_labels_the_last_valid_case() {
     // m1 = -1 in the plane panel: the pucks, the numbers, the momentum triangle and the normal
     // parts are the previous case's, so each is marked and labelled; a valid m1 takes it away.
     let bad = read(b, "p1_bad");
-    assert_eq!(bad["stale"], serde_json::json!([true, true, true, true]), "{bad}");
+    assert_eq!(
+        bad["stale"],
+        serde_json::json!([true, true, true, true]),
+        "{bad}"
+    );
     let notes = bad["notes"].as_array().unwrap();
     assert_eq!(notes.len(), 4, "{bad}");
-    assert!(notes.iter().all(|n| n.as_str().unwrap().contains("Last valid case")));
+    assert!(
+        notes
+            .iter()
+            .all(|n| n.as_str().unwrap().contains("Last valid case"))
+    );
     assert!(bad["error"].as_str().unwrap().contains("mass -1"), "{bad}");
-    assert_eq!(read(b, "p1_good"), &serde_json::json!({"stale": 0, "notes": 0}));
+    assert_eq!(
+        read(b, "p1_good"),
+        &serde_json::json!({"stale": 0, "notes": 0})
+    );
     // The two-body panel the same: its velocity plane, numbers, rail and diagrams.
     let bad = read(b, "c1_bad");
-    assert_eq!(bad["stale"], serde_json::json!([true, true, true, true]), "{bad}");
+    assert_eq!(
+        bad["stale"],
+        serde_json::json!([true, true, true, true]),
+        "{bad}"
+    );
     assert_eq!(bad["notes"], 1, "{bad}");
     assert_eq!(read(b, "c1_good"), 0);
     assert_eq!(read(b, "end"), 0);
@@ -77,7 +92,10 @@ fn browser_the_impulse_is_listed_under_a_momentum_unit() {
         .iter()
         .find(|t| t["caption"] == "Velocities (m/s)")
         .expect("a velocities table");
-    assert!(!velocities["rows"].to_string().contains('J'), "{velocities}");
+    assert!(
+        !velocities["rows"].to_string().contains('J'),
+        "{velocities}"
+    );
     let impulse = tables
         .iter()
         .find(|t| t["rows"].to_string().contains("J on body 2"))
@@ -154,7 +172,12 @@ fn browser_drags_in_a_moving_frame_put_the_arrow_under_the_mouse() {
     // finally at rest, FIN depends on both: neither, and the picture says why.
     let rest_in = read(b, "p3_rest_in");
     assert_eq!(rest_in["tips"], serde_json::json!(["tip-2"]), "{rest_in}");
-    assert!(rest_in["note"].as_str().unwrap().starts_with("v\u{2081} moves with this frame"));
+    assert!(
+        rest_in["note"]
+            .as_str()
+            .unwrap()
+            .starts_with("v\u{2081} moves with this frame")
+    );
     let rest_fin = read(b, "p3_rest_fin");
     assert_eq!(rest_fin["tips"], serde_json::json!([]), "{rest_fin}");
     assert!(
@@ -251,7 +274,10 @@ fn browser_the_time_reverse_is_drawn_in_the_plane_pictures() {
     );
     let labels = r["labels"].to_string();
     assert!(labels.contains("IN\u{2032} (0, \u{2212}3.464)"), "{labels}");
-    assert!(labels.contains("FIN\u{2032} (\u{2212}3.464, 0)"), "{labels}");
+    assert!(
+        labels.contains("FIN\u{2032} (\u{2212}3.464, 0)"),
+        "{labels}"
+    );
 }
 
 #[test]
@@ -277,12 +303,7 @@ fn browser_the_normal_parts_zoom_in_and_keep_their_axis_names() {
     // points are apart (each pair > 20 units; unzoomed they sat in one dot), and no label
     // covers another or an axis name.
     let r = read(b, "p14");
-    let p: Vec<[f64; 2]> = r["points"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(pair)
-        .collect();
+    let p: Vec<[f64; 2]> = r["points"].as_array().unwrap().iter().map(pair).collect();
     for i in 0..3 {
         for j in i + 1..3 {
             let d = (p[i][0] - p[j][0]).hypot(p[i][1] - p[j][1]);

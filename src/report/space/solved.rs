@@ -372,7 +372,10 @@ fn receding(
             frame.describe()
         );
         if let Frame::RestFin(i) = frame {
-            let _ = writeln!(text, "  (no collision: FIN = IN, so body {i} initially at rest)");
+            let _ = writeln!(
+                text,
+                "  (no collision: FIN = IN, so body {i} initially at rest)"
+            );
         }
     }
     text.push_str(&wrap(
