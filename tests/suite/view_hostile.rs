@@ -312,3 +312,48 @@ fn browser_the_normal_parts_zoom_in_and_keep_their_axis_names() {
     }
     assert_eq!(overlaps(&r["labels"]), vec![], "{r}");
 }
+
+#[test]
+fn without_javascript_the_page_says_where_its_numbers_are() {
+    // The page as written (no script run): the status names what is shown without JavaScript
+    // (was: "loading its WebAssembly core..." for ever), each panel has a note, and the plane's
+    // JSON is in the page, byte for byte `collide solve`'s.
+    let page = crate::common::stdout(&[
+        "view",
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),(0,0)",
+        "--normal",
+        "30deg",
+    ]);
+    let status = &page[page.find("<p id=\"status\"").unwrap()..];
+    let status = &status[..status.find("</p>").unwrap()];
+    assert!(
+        status.contains("Without JavaScript this page shows only the numbers"),
+        "{status}"
+    );
+    assert!(!status.contains("loading"), "{status}");
+    assert_eq!(page.matches("<noscript>").count(), 3);
+    let solve = crate::common::stdout(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),(0,0)",
+        "--normal",
+        "30deg",
+        "--format",
+        "json",
+    ]);
+    assert!(page.contains(&format!(
+        "<pre id=\"plane-state\" class=\"json\">{solve}</pre>"
+    )));
+}
+
+#[test]
+fn browser_with_javascript_the_status_says_ready() {
+    let Some(b) = browser() else { return };
+    let status = read(b, "status").as_str().unwrap();
+    assert!(status.starts_with("Ready:"), "{status}");
+}
