@@ -357,3 +357,16 @@ fn browser_with_javascript_the_status_says_ready() {
     let status = read(b, "status").as_str().unwrap();
     assert!(status.starts_with("Ready:"), "{status}");
 }
+
+#[test]
+fn browser_the_pucks_title_keeps_the_mass_unit_and_edits_leave_the_preset() {
+    let Some(b) = browser() else { return };
+    // The car and the van: m1 = 1500 kg, m2 = 2500 kg, e = 0, as typed (units included).
+    let title = read(b, "p17_title").as_str().unwrap();
+    assert!(
+        title.starts_with("m\u{2081} = 1500 kg, m\u{2082} = 2500 kg, e = 0"),
+        "{title}"
+    );
+    // e typed: no longer the preset; the menu says "(as given)".
+    assert_eq!(read(b, "p17_preset"), "");
+}

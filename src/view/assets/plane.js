@@ -148,8 +148,9 @@
     clear(svg);
     const tip = (i, v) => [m.c[i][0] + m.s * v[0], m.c[i][1] - m.s * v[1]];
     const unit = p.velocity_unit ? " " + p.velocity_unit : "";
+    const massUnit = planeState && planeState.units && planeState.units.mass ? " " + planeState.units.mass : "";
     el(svg, "text", { x: 12, y: 20, class: "title" },
-      "m\u2081 = " + short(p.masses[0]) + ", m\u2082 = " + short(p.masses[1]) + (p.e === null ? "" : ", e = " + short(p.e)) +
+      "m\u2081 = " + short(p.masses[0]) + massUnit + ", m\u2082 = " + short(p.masses[1]) + massUnit + (p.e === null ? "" : ", e = " + short(p.e)) +
       ", " + $("p-frame").selectedOptions[0].textContent + " frame");
     el(svg, "text", { x: 12, y: m.H - 10, class: "tick" }, "solid: before (IN), dashed: after (FIN); arrows in one velocity scale");
     // Labels beside their points (the arrows' tips), moved down a line where they would overlap another.
@@ -558,7 +559,8 @@
     }
     $("p-reverse").checked = !!c.reverse;
     $("p-exact").checked = !!c.exact;
-    const typed = () => { pucks.pending = null; solvePlane(false); };
+    // A typed value leaves the preset: the menu no longer names it.
+    const typed = () => { pucks.pending = null; $("p-preset").value = ""; solvePlane(false); };
     for (const f of planeFields) $("p-" + f).addEventListener("input", typed);
     for (const f of ["m1", "m2"]) {
       $("p-" + f + "-range").addEventListener("input", () => {
