@@ -367,6 +367,6 @@ fn browser_the_pucks_title_keeps_the_mass_unit_and_edits_leave_the_preset() {
         title.starts_with("m\u{2081} = 1500 kg, m\u{2082} = 2500 kg, e = 0"),
         "{title}"
     );
-    // e typed: no longer the preset; the menu says "(as given)".
+    // e typed: no longer the preset; the menu says "(as given or typed)".
     assert_eq!(read(b, "p17_preset"), "");
 }
