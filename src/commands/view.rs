@@ -129,7 +129,8 @@ fn two(text: &str, flag: &str, what: &str) -> Result<[String; 2]> {
     match fields[..] {
         [a, b] => Ok([a.to_string(), b.to_string()]),
         _ => bail!(
-            "{flag} '{}': expected {what}, two comma-separated values",
+            "{flag} '{}': expected {what}, two comma-separated values (collide view draws two \
+             bodies; run more with collide solve or collide scene)",
             text.trim()
         ),
     }

@@ -25,7 +25,10 @@ pub enum RestitutionError {
          inelastic) to 1 (elastic)"
     )]
     Superelastic(String),
-    #[error("restitution {0}, or the words 'elastic' (1) or 'inelastic' (0)")]
+    #[error(
+        "restitution {0}: expected a number >= 0 such as 2/3, or the words 'elastic' (1) or \
+         'inelastic' (0)"
+    )]
     Number(NumberError),
 }
 

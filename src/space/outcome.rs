@@ -222,6 +222,32 @@ impl Outcome {
         )
     }
 
+    /// Whether bodies 1 and 2 keep their distance or move apart along a given line of impact
+    /// before, `n.(v1 - v2) <= 0`: they do not collide (`false` without a line, or for other
+    /// than two bodies).
+    pub fn receding(&self) -> bool {
+        match &self.normal {
+            Some(n) if self.bodies() == 2 => {
+                !dot(n, &sub(&self.v_in[0], &self.v_in[1])).is_positive()
+            }
+            _ => false,
+        }
+    }
+
+    /// The event as it happens: bodies that do not approach along the line of impact do not
+    /// collide, so FIN = IN (and a frame "finally at rest" is the one "initially at rest", never
+    /// the FIN of a collision that does not happen); any other outcome as it is.
+    pub fn as_happens(&self) -> Outcome {
+        if self.receding() {
+            Outcome {
+                fin: self.v_in.clone(),
+                ..self.clone()
+            }
+        } else {
+            self.clone()
+        }
+    }
+
     /// The line of impact, or where none was given, the direction of the impulse on body 2
     /// (`None` without an impulse).
     pub fn impulse_line(&self) -> Option<Vec<Q>> {

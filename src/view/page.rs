@@ -78,6 +78,7 @@ impl Setup {
                 frame: "lab".into(),
                 reverse: false,
                 exact: false,
+                line: String::new(),
             },
             track: TrackInput {
                 masses: "1,0.01".into(),

@@ -52,6 +52,10 @@ pub struct PlaneInput {
     pub reverse: bool,
     #[serde(default)]
     pub exact: bool,
+    /// The page's choice of line of impact (`normal`, `disks` or `none`), when it sends one:
+    /// a chosen line left empty is named as missing.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub line: String,
 }
 
 /// The answer to two pucks.
@@ -130,27 +134,43 @@ impl PlaneInput {
                 .map(Some)
                 .map_err(|e| InputError::new("normal", format!("--normal: {e}")));
         }
-        if !disks {
+        if self.line == "normal" {
+            return Err(InputError::new(
+                "normal",
+                "the line of impact n is missing: give its angle (30deg, N30E) or its direction \
+                 ((1,1)), or choose none (then only e = 0 fixes the outcome)",
+            ));
+        }
+        if !disks && self.line != "disks" {
             return Ok(None);
         }
-        let number = |field: &'static str, text: &str, what: &str| {
+        // Numbers, or lengths with units (`2.5 cm`), read as `collide solve --radii` reads them.
+        let length = |field: &'static str, text: &str, what: &str| {
             if t(text).is_empty() {
                 return Err(InputError::new(
                     field,
                     format!("{what} is missing: the disks need R1, R2 and the impact parameter B"),
                 ));
             }
-            t(text)
-                .parse::<Number>()
+            crate::values::units::parse(t(text), crate::values::units::Dimension::Length)
                 .map_err(|e| InputError::new(field, format!("{what} '{}': {e}", t(text))))
         };
-        Ok(Some(NormalGiven::Geometry {
-            radii: [
-                number("r1", &self.r1, "radius R1")?,
-                number("r2", &self.r2, "radius R2")?,
-            ],
-            b: number("b", &self.b, "impact parameter B")?,
-        }))
+        let r1 = length("r1", &self.r1, "radius R1")?;
+        let r2 = length("r2", &self.r2, "radius R2")?;
+        let b = length("b", &self.b, "impact parameter B")?;
+        let (radii, b) = crate::space::pose::geometry([&r1, &r2], &b).map_err(|e| {
+            // The field whose unit is missing, or extra.
+            let unit = [r1.unit.is_some(), r2.unit.is_some(), b.unit.is_some()];
+            let odd = if unit[0] == unit[1] {
+                "b"
+            } else if unit[0] == unit[2] {
+                "r2"
+            } else {
+                "r1"
+            };
+            InputError::new(odd, e)
+        })?;
+        Ok(Some(NormalGiven::Geometry { radii, b }))
     }
 
     /// The typed fields with their names.
@@ -188,6 +208,17 @@ impl PlaneInput {
     fn input(&self) -> Result<Input, InputError> {
         self.no_unknowns()?;
         fn one<'a>(field: &'static str, text: &'a str) -> Result<&'a str, InputError> {
+            if t(text).is_empty() {
+                let what = if field.starts_with('m') {
+                    "a mass, e.g. 1 or 1500 kg"
+                } else {
+                    "a velocity, e.g. (4,0) or '6 @ 30deg'"
+                };
+                return Err(InputError::new(
+                    field,
+                    format!("{field} is empty: give {what}"),
+                ));
+            }
             match split_bodies(text) {
                 Ok(list) if list.len() == 1 => Ok(list[0]),
                 Ok(list) => Err(InputError::new(
@@ -248,8 +279,37 @@ impl PlaneInput {
     }
 
     /// Solves the case as `collide solve` does and answers with its JSON, command line, scene
-    /// and picture.
+    /// and picture; an error in the page's words (its fields, not the command line's flags).
     pub fn solve(&self) -> Result<PlaneSolved, InputError> {
+        self.solve_typed().map_err(|e| self.in_page_words(e))
+    }
+
+    /// An error of the command line's path as the page says it: a case without a line of
+    /// impact that needs one, a result beyond binary64 at the largest value typed, and the
+    /// flags named as the page's fields.
+    fn in_page_words(&self, e: InputError) -> InputError {
+        let no_line = t(&self.normal).is_empty()
+            && [&self.r1, &self.r2, &self.b]
+                .iter()
+                .all(|s| t(s).is_empty());
+        if no_line
+            && (e.error.contains("unknowns and") || e.error.contains("without a line of impact"))
+        {
+            return InputError::new(
+                "e",
+                "without a line of impact only e = 0 (the pucks stick) fixes the outcome: set \
+                 e = 0, or give the line of impact (at an angle, or disks)",
+            );
+        }
+        let field = if e.error.contains("beyond binary64") || e.error.contains("representable") {
+            largest_field(&self.fields())
+        } else {
+            e.field
+        };
+        InputError::new(field, page_words(&e.error))
+    }
+
+    fn solve_typed(&self) -> Result<PlaneSolved, InputError> {
         let input = self.input()?;
         let frame: Frame = t(&self.frame)
             .parse()
@@ -324,7 +384,13 @@ impl PlaneInput {
             .find(|o| Verdict::of(o, &posed.statement) == Verdict::Physical)
             .or_else(|| all.first().map(|(o, _)| o))
             .ok_or_else(|| InputError::new("m1", RenderError::NoSolution))?;
-        let w = lab
+        // Pucks that do not approach do not collide: FIN = IN for a "finally at rest" frame.
+        let seen = if Verdict::of(lab, &posed.statement) == Verdict::Physical {
+            lab.clone()
+        } else {
+            lab.as_happens()
+        };
+        let w = seen
             .observer(frame, posed.typed_values)
             .map_err(|e| InputError::new("frame", e))?;
         let o = lab.boost(&w);
@@ -370,15 +436,52 @@ impl PlaneInput {
             impulse: collides.then(|| pair(&o.impulse(1))),
             approaching,
             phi_deg: o.normal.as_ref().and_then(|n| angle_between(&relative, n)),
-            normal_parts: if collides { normal_parts(&o) } else { None },
+            normal_parts: if collides {
+                normal_parts(&o, self.reverse)
+            } else {
+                None
+            },
         })
     }
 }
 
+/// The field whose typed numbers are the largest or smallest in size (the likeliest cause of a
+/// result beyond binary64), by the exponent of each number in it.
+pub(super) fn largest_field(fields: &[(&'static str, &String)]) -> &'static str {
+    let size = |text: &str| -> f64 {
+        text.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e' || c == 'E' || c == '-'))
+            .filter_map(|w| w.trim_matches('-').parse::<f64>().ok())
+            .filter(|x| *x != 0.0)
+            .map(|x| x.abs().log10().abs())
+            .fold(0.0, f64::max)
+    };
+    fields
+        .iter()
+        .map(|(f, text)| (*f, size(text)))
+        .fold(("m1", -1.0), |best, x| if x.1 > best.1 { x } else { best })
+        .0
+}
+
+/// A command line's message in the page's words: its flags named as the page's fields.
+pub(super) fn page_words(message: &str) -> String {
+    [
+        ("--impact-parameter", "the impact parameter b"),
+        ("--radii", "the radii R1, R2"),
+        ("--normal", "the line of impact n"),
+        ("--exact", "'exact (fractions)'"),
+        ("--show", "the report's sections"),
+    ]
+    .iter()
+    .fold(message.to_string(), |m, (flag, words)| {
+        m.replace(flag, words)
+    })
+}
+
 /// The velocity plane of the normal parts: the masses, the velocities' components along the
 /// unit normal and the same e, as a collision on a rail (physics.md section 7: the tangential
-/// parts pass unchanged). `None` where a value does not fit binary64.
-fn normal_parts(o: &Outcome) -> Option<RailPicture> {
+/// parts pass unchanged), with its time reverse when asked (not for e = 0, which has none).
+/// `None` where a value does not fit binary64.
+fn normal_parts(o: &Outcome, reverse: bool) -> Option<RailPicture> {
     let parts = o.normal_parts()?;
     let q = |x: &Q| to_f64(x).filter(|v| v.is_finite());
     let mass = |i: usize| Mass::from_f64(q(&o.masses[i])?).ok();
@@ -386,5 +489,6 @@ fn normal_parts(o: &Outcome) -> Option<RailPicture> {
     let inertia = InertiaTensor::diagonal(&mass(0)?, &mass(1)?).ok()?;
     let e = Restitution::new(Number::from_f64(q(o.e.as_ref()?)?).ok()?).ok()?;
     let case = Case::new(inertia, [speed(&parts.v_in[0])?, speed(&parts.v_in[1])?], e);
-    super::two_body::picture(&case.collision, &Frame::Lab, false).ok()
+    let reverse = reverse && o.e.as_ref().is_some_and(|e| !e.is_zero());
+    super::two_body::picture(&case.collision, &Frame::Lab, reverse).ok()
 }

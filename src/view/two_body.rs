@@ -200,6 +200,27 @@ impl CaseInput {
         InputError::new(self.quoted(&message, default), message)
     }
 
+    /// A report that cannot be printed (a value beyond binary64), at the field typed with the
+    /// largest or smallest number (not always m1), in the page's words.
+    fn beyond_binary64(&self, e: impl std::fmt::Display) -> InputError {
+        let message = e.to_string().replace(
+            "use --exact, rescale the units, or ask only for other sections with --show",
+            "rescale the units (collide solve --exact computes it in fractions)",
+        );
+        let field = if self.reverse {
+            "reverse"
+        } else {
+            super::plane::largest_field(&[
+                ("m1", &self.m1),
+                ("m2", &self.m2),
+                ("v1", &self.v1),
+                ("v2", &self.v2),
+                ("e", &self.e),
+            ])
+        };
+        InputError::new(field, message)
+    }
+
     /// Solves the case as `collide solve` does and answers with its JSON, command line, scene
     /// and picture.
     pub fn solve(&self) -> Result<Solved, InputError> {
@@ -229,7 +250,7 @@ impl CaseInput {
         sections.force_scale = case.units.force_scale();
         let frame = &typed.frame;
         let report = AnyReport::of(&case, frame, false, &sections, self.reverse)
-            .map_err(|e| InputError::new(if self.reverse { "reverse" } else { "m1" }, e))?;
+            .map_err(|e| self.beyond_binary64(e))?;
         let mut value = report.json();
         solved::annotate(&mut value, &case.units, None, false);
         Ok(Solved {

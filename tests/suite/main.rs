@@ -33,5 +33,6 @@ mod tables;
 mod track;
 mod units;
 mod view;
+mod view_hostile;
 mod view_plane;
 mod width;

@@ -486,3 +486,54 @@ fn an_exact_zero_among_approximations_is_printed_as_zero() {
     assert!(line.contains(", 0)"), "{line}");
     assert!(!line.contains("≈0)"), "{line}");
 }
+
+#[test]
+fn a_finally_at_rest_frame_without_a_collision_is_initially_at_rest() {
+    // v1 = (-4, 0), v2 = (0, 0), n at 30 degrees: n.(v1 - v2) = -4 cos 30 < 0, no collision, so
+    // FIN = IN and "body 1 finally at rest" moves with v1 = (-4, 0): seen from it v1 = (0, 0),
+    // v2 = (0, 0) - (-4, 0) = (4, 0), exactly (was: shifted by the FIN of the collision that
+    // does not happen, v1 = (-3, -1.732)). The same as rest-in:1; rest-fin:2 is rest-in:2,
+    // which moves with v2 = (0, 0): the lab's velocities.
+    let case = ["-m", "1,1", "-v", "(-4,0),(0,0)", "--normal", "30deg"];
+    let with = |frame: &str| {
+        let mut a = case.to_vec();
+        a.extend(["--frame", frame]);
+        json(&a)
+    };
+    for (frame, same, w, seen) in [
+        (
+            "rest-fin:1",
+            "rest-in:1",
+            [-4.0, 0.0],
+            [[0.0, 0.0], [4.0, 0.0]],
+        ),
+        (
+            "rest-fin:2",
+            "rest-in:2",
+            [0.0, 0.0],
+            [[-4.0, 0.0], [0.0, 0.0]],
+        ),
+    ] {
+        let j = with(frame);
+        assert_eq!(j["approaching"], false, "{frame}: {j}");
+        assert_eq!(vecs(&j["in"]), seen.map(Vec::from).to_vec(), "{frame}: {j}");
+        assert_eq!(j["frame"]["name"], frame, "{j}");
+        assert_eq!(
+            j["frame"]["w"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(f)
+                .collect::<Vec<_>>(),
+            w.to_vec(),
+            "{frame}: {j}"
+        );
+        let k = with(same);
+        assert_eq!(j["in"], k["in"], "{frame} against {same}");
+        let mut a = vec!["solve"];
+        a.extend_from_slice(&case);
+        a.extend(["--frame", frame]);
+        let text = stdout(&a);
+        assert!(text.contains("no collision: FIN = IN"), "{text}");
+    }
+}

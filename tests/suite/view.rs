@@ -445,6 +445,7 @@ fn drive_browser() -> Result<Value, String> {
             ]
         },
         "plane": super::view_plane::browser_plan(&dir),
+        "steps": super::view_hostile::steps(),
         "stack": [
             {},
             {"preset": "3"},

@@ -5,7 +5,8 @@ The plan: `cases` (inputs to type: m1, m2, v1, v2, e, inertia), `drag` (a case, 
 the velocity plane to drag IN to), `keys` (arrow keys pressed on the plane), `frame` (a frame
 to switch to, sampling the animation), `reverse`, `screenshot` (where to save a picture of the
 plane, and points to probe for colours), `stack` (presets and inputs of the superball stack),
-`plane` (two pucks: `cases` to type, an arrow `drag`, `keys`, a `screenshot` of the pucks).
+`plane` (two pucks: `cases` to type, an arrow `drag`, `keys`, a `screenshot` of the pucks),
+`steps` (scripted actions and reads, for the hostile review's defects: see run_steps).
 Needs Playwright for Python and a Chromium (COLLIDE_CHROMIUM, default /usr/bin/chromium); the
 browser is launched with a fresh profile and no network use of its own."""
 import json, math, os, struct, sys, tempfile, time, zlib
@@ -146,6 +147,54 @@ def drive_plane(page, plan):
     return out
 
 
+def run_steps(page, steps, errors):
+    """Scripted checks in one page session: each step one action (`fill`, `select`, `check`,
+    `uncheck`, `press` [selector, key, times], `drag_tip` {body, by (picture units), steps},
+    `hover` selector) and optionally `read` [name, JS function]: what the function returns, with
+    the page errors seen so far, under `name` in the result."""
+    out = {}
+    for step in steps:
+        if "fill" in step:
+            page.fill(step["fill"][0], step["fill"][1])
+        if "select" in step:
+            page.select_option(step["select"][0], step["select"][1])
+        if "check" in step:
+            page.check(step["check"])
+        if "uncheck" in step:
+            page.uncheck(step["uncheck"])
+        if "press" in step:
+            sel, key, times = step["press"]
+            page.focus(sel)
+            for _ in range(times):
+                page.keyboard.press(key)
+        if "drag_tip" in step:
+            d = step["drag_tip"]
+            page.eval_on_selector("#pucks-svg", "s => s.scrollIntoView({block: 'center', behavior: 'instant'})")
+            # The picture still (no smooth scroll under way) before the mouse goes down.
+            top, still = None, 0
+            while still < 3:
+                now = page.eval_on_selector("#pucks-svg", "s => s.getBoundingClientRect().top")
+                still = still + 1 if now == top else 0
+                top = now
+                page.wait_for_timeout(30)
+            at = page.eval_on_selector("#pucks-svg", """(s, i) => { const r = s.getBoundingClientRect(), t = s.querySelector('#tip-' + i)
+                || s.querySelector('#in-' + i + ' polygon'), k = r.width / s.viewBox.baseVal.width;
+                const b = t.getBBox(); return [r.left + (b.x + b.width / 2) * k, r.top + (b.y + b.height / 2) * k, k]; }""", d["body"])
+            page.mouse.move(at[0], at[1])
+            page.mouse.down()
+            n = d.get("steps", 10)
+            for k in range(1, n + 1):
+                page.mouse.move(at[0] + d["by"][0] * at[2] * k / n, at[1] + d["by"][1] * at[2] * k / n)
+                page.wait_for_timeout(20)
+            page.mouse.up()
+        if "hover" in step:
+            page.hover(step["hover"])
+        if "read" in step:
+            name, js = step["read"]
+            out[name] = {"value": page.evaluate(js), "errors": list(errors)}
+    return out
+
+
 def main():
     page_path, plan_path = sys.argv[1], sys.argv[2]
     plan = json.load(open(plan_path))
@@ -258,6 +307,8 @@ def main():
                                      "error": page.eval_on_selector("#track-error", "e => e.hidden ? '' : e.textContent")})
         if "plane" in plan:
             out["plane"] = drive_plane(page, plan["plane"])
+        if "steps" in plan:
+            out["steps"] = run_steps(page, plan["steps"], out["errors"])
         out["seconds"] = time.time() - started
         ctx.close()
     json.dump(out, sys.stdout, allow_nan=False)

@@ -213,6 +213,21 @@ fn plane_fin_follows_the_impulse_formula_and_the_closed_forms() {
 }
 
 #[test]
+fn the_page_sees_pucks_that_do_not_collide_from_their_initial_velocities() {
+    // v1 = (-4, 0), v2 = 0, n at 30 degrees: n.(v1 - v2) < 0, no collision, FIN = IN, so body 1
+    // "finally at rest" moves at w = v1 = (-4, 0), and the page draws v1 = (0, 0), v2 = (4, 0)
+    // (the state byte for byte as `collide solve`, which checks the same hand values).
+    let case = json!({"m1": "1", "m2": "1", "v1": "(-4,0)", "v2": "(0,0)", "normal": "30deg",
+                      "frame": "rest-fin:1"});
+    let a = ask(plane_request(&case));
+    assert_eq!(a["ok"], true, "{a}");
+    assert_eq!(a["picture"]["w"], json!([-4.0, 0.0]), "{a}");
+    assert_eq!(a["picture"]["in"], json!([[0.0, 0.0], [4.0, 0.0]]), "{a}");
+    assert_eq!(a["picture"]["fin"], Value::Null, "{a}");
+    assert_eq!(a["state"].as_str().unwrap(), cli_json(&solve_args(&case)));
+}
+
+#[test]
 fn the_plane_refuses_what_it_cannot_draw_by_name() {
     let base = json!({"m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(0,0)", "normal": "30deg"});
     let with = |k: &str, v: &str| {
@@ -275,6 +290,146 @@ fn written_state(page: &str) -> String {
         .replace("&lt;", "<")
         .replace("&gt;", ">")
         .replace("&amp;", "&")
+}
+
+#[test]
+fn view_takes_disk_radii_with_units_as_solve_does() {
+    // R1 = R2 = 2.5 cm, b = 1 in = 2.54 cm: sin phi = b / (R1 + R2) = 2.54 / 5 = 0.508, only the
+    // ratio enters; the page's JSON is `collide solve`'s for the same flags (was: exit 2,
+    // "radius R1 '2.5 cm': not a number"). The picture's lengths are in metres.
+    let flags = [
+        "-m",
+        "1,1",
+        "-v",
+        "(4,0),0",
+        "--radii",
+        "2.5 cm,2.5 cm",
+        "--impact-parameter",
+        "1 in",
+    ];
+    let page = stdout(&[&["view"][..], &flags].concat());
+    let solve = stdout(&[&["solve"][..], &flags, &["--format", "json"]].concat());
+    assert_eq!(written_state(&page), solve);
+    let a = ask(
+        json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(4,0)", "v2": "0",
+                       "r1": "2.5 cm", "r2": "2.5 cm", "b": "1 in"}),
+    );
+    assert_eq!(a["ok"], true, "{a}");
+    assert_eq!(a["picture"]["radii"], json!([0.025, 0.025]), "{a}");
+    assert_eq!(a["picture"]["b"], json!(0.0254), "{a}");
+    let sin_phi = a["picture"]["b"].as_f64().unwrap() / 0.05;
+    assert_close(sin_phi, 0.508, 4.0 * f64::EPSILON, "sin phi");
+    // A scene with lengths: the same state.
+    let dir = scratch("radii-units");
+    let scene = dir.join("disks.toml");
+    std::fs::write(
+        &scene,
+        "masses = [1, 1]\nvelocities = [\"(4,0)\", \"0\"]\nradii = [\"2.5 cm\", \"2.5 cm\"]\n\
+         impact_parameter = \"1 in\"\n",
+    )
+    .unwrap();
+    let page = stdout(&["view", scene.to_str().unwrap()]);
+    let report: Value = serde_json::from_str(&stdout(&[
+        "scene",
+        scene.to_str().unwrap(),
+        "--format",
+        "json",
+    ]))
+    .map(|v: Value| v["report"].clone())
+    .unwrap();
+    assert_eq!(
+        serde_json::from_str::<Value>(&written_state(&page)).unwrap(),
+        report
+    );
+    // Some with a unit, some without: refused, at the field that differs.
+    let a = ask(
+        json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(4,0)", "v2": "0",
+                       "r1": "2.5 cm", "r2": "2.5 cm", "b": "1"}),
+    );
+    assert_eq!(
+        (a["ok"].clone(), a["field"].clone()),
+        (json!(false), json!("b")),
+        "{a}"
+    );
+    assert!(
+        a["error"]
+            .as_str()
+            .unwrap()
+            .contains("all with a length unit"),
+        "{a}"
+    );
+}
+
+#[test]
+fn the_page_names_the_field_at_fault_in_its_own_words() {
+    let base = json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(4,0)", "v2": "(0,0)",
+                      "normal": "30deg", "line": "normal"});
+    let with = |pairs: &[(&str, &str)]| {
+        let mut c = base.clone();
+        for (k, v) in pairs {
+            c[*k] = (*v).into();
+        }
+        c
+    };
+    let none = |e: &str| with(&[("normal", ""), ("line", "none"), ("e", e)]);
+    for (case, field, words) in [
+        // A result beyond binary64 from the largest value typed, not from m1.
+        (with(&[("v1", "(1e300,0)")]), "v1", "beyond binary64"),
+        (with(&[("e", "1e300")]), "e", "beyond binary64"),
+        // The line of impact chosen but left empty is missing, not "1 more known value".
+        (
+            with(&[("normal", "")]),
+            "normal",
+            "the line of impact n is missing",
+        ),
+        (none("1"), "e", "only e = 0 (the pucks stick)"),
+        (none("0.5"), "e", "only e = 0 (the pucks stick)"),
+        // Disks with v1 = v2: the page's words for b, no command-line flag.
+        (
+            json!({"op": "plane", "m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(1,0)", "r1": "1",
+                   "r2": "1", "b": "1", "line": "disks"}),
+            "v2",
+            "the impact parameter b needs both initial velocities",
+        ),
+        (with(&[("m1", "")]), "m1", "m1 is empty: give a mass"),
+        (with(&[("v1", "")]), "v1", "v1 is empty: give a velocity"),
+        (with(&[("v2", " ")]), "v2", "v2 is empty: give a velocity"),
+        (
+            with(&[("e", "1e309")]),
+            "e",
+            "too large for binary64 (|x| must be below 1.8e308): expected a number >= 0",
+        ),
+        (
+            with(&[("e", "0/0")]),
+            "e",
+            "'0/0' divides by zero: expected a number >= 0",
+        ),
+    ] {
+        let a = ask(case.clone());
+        assert_eq!(a["ok"], false, "{case}");
+        let error = a["error"].as_str().unwrap();
+        assert_eq!(a["field"], field, "{case}: {error}");
+        assert!(error.contains(words), "{case}: {error}");
+        assert!(
+            !error.contains("--"),
+            "a flag in the page's message: {error}"
+        );
+    }
+    // The two-body panel: V1 = 1e300 overflows the quadratic forms, at v1.
+    let a = ask(json!({"op": "solve", "m1": "4", "m2": "1", "v1": "1e300", "v2": "10"}));
+    assert_eq!(
+        (a["ok"].clone(), a["field"].clone()),
+        (json!(false), json!("v1")),
+        "{a}"
+    );
+    assert!(!a["error"].as_str().unwrap().contains("--show"), "{a}");
+    // The command line: three masses for the page's two bodies, and where to run them.
+    let (code, out, err) = run(&["view", "-m", "1,2,3", "-v", "1,2,3"]);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(
+        err.contains("collide view draws two bodies") && err.contains("collide solve"),
+        "{err}"
+    );
 }
 
 #[test]

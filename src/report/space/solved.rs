@@ -205,7 +205,14 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     let mut judged: Vec<(Outcome, Vec<Check>, Verdict, Vec<Q>)> = Vec::new();
     for (o, c) in all {
         let v = Verdict::of(&o, &posed.statement);
-        let w = o.observer(opts.frame, posed.typed_values)?;
+        // Bodies that do not approach along the line of impact (a collision asked outright) do
+        // not collide: the observer of a "finally at rest" frame moves with FIN = IN.
+        let seen = if asked.is_empty() && v == Verdict::Unphysical {
+            o.as_happens()
+        } else {
+            o.clone()
+        };
+        let w = seen.observer(opts.frame, posed.typed_values)?;
         judged.push((o.boost(&w), c, v, w));
     }
     let keep: Vec<&(Outcome, Vec<Check>, Verdict, Vec<Q>)> =
@@ -226,12 +233,12 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     {
         return Err(RenderError::NegativeRestitution(style.show(e, o.approx)));
     }
-    if let [(o, _, Verdict::Unphysical, _)] = keep.as_slice()
+    if let [(o, _, Verdict::Unphysical, w)] = keep.as_slice()
         && asked.is_empty()
         && let Some(n) = &o.normal
     {
         let along = dot(n, &sub(&o.v_in[0], &o.v_in[1]));
-        return receding(o, &along, &style, &units);
+        return receding(o, &along, &style, &units, opts.frame, w);
     }
     let frame_line = (*opts.frame != Frame::Lab).then(|| {
         format!(
@@ -348,8 +355,29 @@ fn annotate_units(json: &mut Value, units: &Units) {
 }
 
 /// Bodies that do not approach along the line of impact: the note alone.
-fn receding(o: &Outcome, along: &Q, style: &Style, units: &Units) -> Result<Rendered, RenderError> {
+fn receding(
+    o: &Outcome,
+    along: &Q,
+    style: &Style,
+    units: &Units,
+    frame: &Frame,
+    w: &[Q],
+) -> Result<Rendered, RenderError> {
     let mut text = header(o, style, units);
+    if *frame != Frame::Lab {
+        // No collision: FIN = IN, so "finally at rest" is "initially at rest".
+        let _ = writeln!(
+            text,
+            "Seen from: {} (every velocity less the observer's)",
+            frame.describe()
+        );
+        if let Frame::RestFin(i) = frame {
+            let _ = writeln!(
+                text,
+                "  (no collision: FIN = IN, so body {i} initially at rest)"
+            );
+        }
+    }
     text.push_str(&wrap(
         &format!(
             "Note: the bodies do not approach along the line of impact: n.(v1 - v2) = {} <= 0, \
@@ -372,6 +400,12 @@ fn receding(o: &Outcome, along: &Q, style: &Style, units: &Units) -> Result<Rend
         "in": vecs,
         "approaching": false,
     });
+    if *frame != Frame::Lab
+        && let Some(m) = json.as_object_mut()
+    {
+        let w: Vec<Value> = w.iter().map(|x| style.json(x, a)).collect();
+        m.insert("frame".into(), json!({ "name": frame.to_string(), "w": w }));
+    }
     annotate_units(&mut json, units);
     Ok(Rendered {
         text,

@@ -135,10 +135,12 @@
   }
 
   // A core's answer in the page: its error shown in the element `box`, the input of its field
-  // (`ids[field]`, else `fallback`) marked invalid, and the outputs `cleared` emptied (they would
-  // show the last good case as if it were this one); no error clears the marks.
-  function showError(answer, ids, fallback, box, cleared) {
+  // (`ids[field]`, else `fallback`) marked invalid, the outputs `cleared` emptied and the
+  // pictures and tables `stale` greyed out and labelled as the last valid case (they would show
+  // the last good case as if it were this one); no error clears the marks.
+  function showError(answer, ids, fallback, box, cleared, stale) {
     for (const id of Object.values(ids)) $(id).removeAttribute("aria-invalid");
+    markStale(stale || [], !answer.ok);
     if (answer.ok) {
       $(box).hidden = true;
       return;
@@ -148,6 +150,40 @@
     $(box).hidden = false;
     for (const id of cleared) $(id).textContent = "";
   }
+
+  // Greys out the outputs `ids` (a picture's figure, or the element) with a note on each that
+  // they show the last valid case, or takes it away.
+  function markStale(ids, on) {
+    for (const id of ids) {
+      const node = $(id).closest("figure") || $(id);
+      node.classList.toggle("stale", on);
+      const old = document.querySelector('.stale-note[data-for="' + id + '"]');
+      if (!on) {
+        if (old) old.remove();
+      } else if (!old) {
+        const note = document.createElement("p");
+        note.className = "stale-note";
+        note.dataset.for = id;
+        note.textContent = "Last valid case (not the inputs above: see the error)";
+        // Inside a figure or a table's box, else before the picture.
+        if (node.tagName.toLowerCase() === "svg") node.parentNode.insertBefore(note, node);
+        else node.insertBefore(note, node.firstChild);
+      }
+    }
+  }
+
+  // A text in `parent` at `attrs`, moved down a line at a time while it would overlap a box of
+  // `placed` (measured, not estimated); its box is added to `placed`.
+  function placeText(parent, placed, attrs, text) {
+    const t = el(parent, "text", attrs, text);
+    const hits = (b) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width && b.y < q.y + q.height && q.y < b.y + b.height);
+    for (let k = 0; k < 12 && hits(t.getBBox()); k++) t.setAttribute("y", r2(Number(t.getAttribute("y")) + 15));
+    const b = t.getBBox();
+    placed.push({ x: b.x, y: b.y, width: b.width, height: b.height });
+    return t;
+  }
+  // The boxes of the texts already in `svg` (axis names) that labels must not cover.
+  const boxesOf = (svg) => [...svg.querySelectorAll("text.label")].map((t) => { const b = t.getBBox(); return { x: b.x, y: b.y, width: b.width, height: b.height }; });
 
   // ---------------------------------------------------------------- the velocity plane
   // The data box of a velocity plane (lecture Figs. 1.3, 2.3): square, around the origin, the
@@ -186,9 +222,37 @@
   const snapStep = (map) => Math.pow(10, Math.ceil(Math.log10(1 / map.s) - 1e-9));
   function snapText(x, step) {
     const decimals = Math.max(0, -Math.round(Math.log10(step)));
-    let t = (Math.round(x / step) * step).toFixed(decimals);
-    if (/^-0(\.0*)?$/.test(t)) t = t.slice(1);
+    const snapped = Math.round(x / step) * step;
+    // Fixed point up to 20 decimals (toFixed takes at most 100); smaller steps in exponent form,
+    // to the digits the step keeps.
+    let t = decimals <= 20 && Math.abs(snapped) < 1e21 ? snapped.toFixed(decimals)
+      : String(Number(snapped.toPrecision(Math.min(21, Math.max(1, Math.floor(Math.log10(Math.abs(snapped) / step)) + 1)))));
+    if (/^-0(\.0*)?$/.test(t) || t === "-0") t = t.replace("-", "");
     return t;
+  }
+
+  // A typed quantity as a number and its unit ("1500 kg" -> [1500, "kg"]); NaN where the number
+  // is not one (a fraction a/b is read).
+  function splitUnit(text) {
+    const m = /^\s*([+-]?[0-9.]+(?:[eE][+-]?[0-9]+)?(?:\/[0-9.]+)?)\s*(.*)$/.exec(text);
+    return m ? [valueOf(m[1]), m[2].trim()] : [NaN, ""];
+  }
+
+  // A logarithmic mass slider (`range`, log10 of the mass) set to the typed mass, its range
+  // widened to hold it; the typed text from the slider keeps the typed unit.
+  function massToSlider(range, text) {
+    const [v] = splitUnit(text);
+    if (!(v > 0) || !isFinite(v)) return;
+    const lg = Math.log10(v);
+    if (lg < Number(range.min) || lg > Number(range.max)) {
+      range.min = String(Math.floor(lg) - 2);
+      range.max = String(Math.floor(lg) + 2);
+    }
+    range.value = String(lg);
+  }
+  function sliderToMass(range, text) {
+    const unit = splitUnit(text)[1];
+    return String(Number(Math.pow(10, Number(range.value)).toPrecision(3))) + (unit ? " " + unit : "");
   }
 
   // A rail's velocity plane (a picture of the core's) in `svg` at `map`: axes, the title, the
@@ -227,20 +291,16 @@
     if (opts.under) opts.under(g, X, Y);
     // The points and their coordinates (the IN-FIN chord lies on the momentum line).
     const labels = el(svg, "g", {});
-    // Labels beside their points, moved down a line where they would overlap another.
-    const placed = [];
+    // Labels beside their points, moved down a line where they would overlap another or an
+    // axis name.
+    const placed = boxesOf(svg);
     const point = (v, colour, name, id, r) => {
       const sx = X(v[0]), sy = Y(v[1]);
       el(svg, "circle", { id: prefix + id, cx: r2(sx), cy: r2(sy), r, fill: colour, stroke: "#fff", "stroke-width": 2 });
       const text = name + " (" + short(v[0]) + ", " + short(v[1]) + ")";
       const right = sx < a.x + a.w - 150;
-      const width = 7.2 * text.length;
-      const x0 = right ? sx + 10 : sx - 10 - width;
-      let y = sy - 9;
-      while (placed.some((q) => Math.abs(q.y - y) < 14 && x0 < q.x1 && q.x0 < x0 + width)) y += 15;
-      placed.push({ x0, x1: x0 + width, y });
-      el(labels, "text", {
-        x: r2(sx + (right ? 10 : -10)), y: r2(y), "text-anchor": right ? "start" : "end",
+      placeText(labels, placed, {
+        x: r2(sx + (right ? 10 : -10)), y: r2(sy - 9), "text-anchor": right ? "start" : "end",
         class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4,
       }, text);
     };

@@ -14,7 +14,8 @@
   let planeAnswer = data.answers.plane; // the last good answer
   let planeState = null; // its JSON, parsed
   // The pucks' map (kept while an arrow is dragged), the arrow being dragged, the one the keys move.
-  const pucks = { map: null, keep: false, dragging: -1, selected: 0 };
+  // The last move of an arrow the core refused, `{i, v}` (v in the frame on screen), else null.
+  const pucks = { map: null, keep: false, dragging: -1, selected: 0, pending: null };
 
   function lineMode() {
     const checked = document.querySelector('input[name="p-line"]:checked');
@@ -25,6 +26,7 @@
     const r = { op: "plane" };
     for (const f of ["m1", "m2", "v1", "v2", "e"]) r[f] = $("p-" + f).value;
     const mode = lineMode();
+    r.line = mode;
     if (mode === "normal") r.normal = $("p-normal").value;
     if (mode === "disks") for (const f of ["r1", "r2", "b"]) r[f] = $("p-" + f).value;
     r.frame = $("p-frame").value;
@@ -48,7 +50,8 @@
   function showPlaneError(answer) {
     const ids = {};
     for (const f of planeFields.concat(["frame", "reverse", "exact"])) ids[f] = "p-" + f;
-    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene"]);
+    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene"],
+      ["pucks-svg", "plane-numbers", "momentum-svg", "normal-svg"]);
   }
 
 
@@ -105,6 +108,7 @@
     const c = [[C[0] - gap[0] * d[0], C[1] + gap[0] * d[1]], [C[0] + gap[1] * d[0], C[1] - gap[1] * d[1]]];
     const vs = [[0, p.in[0]], [1, p.in[1]]];
     if (p.fin) vs.push([0, p.fin[0]], [1, p.fin[1]]);
+    if (p.fin && $("p-reverse").checked) vs.push([0, p.fin[0].map((x) => -x)], [1, p.fin[1].map((x) => -x)]);
     let s = Infinity;
     const margin = 26;
     for (const [i, v] of vs) {
@@ -121,9 +125,21 @@
     return { W, H, C, d, c, radii, s };
   }
 
+  // Whether every arrow's tip (IN, FIN, and the reverse's) is inside the picture at map `m`.
+  function pucksFit(m, p) {
+    const vs = [[0, p.in[0]], [1, p.in[1]]];
+    if (p.fin) vs.push([0, p.fin[0]], [1, p.fin[1]]);
+    if (p.fin && $("p-reverse").checked) vs.push([0, p.fin[0].map((x) => -x)], [1, p.fin[1].map((x) => -x)]);
+    return vs.every(([i, v]) => {
+      const x = m.c[i][0] + m.s * v[0], y = m.c[i][1] - m.s * v[1];
+      return x > 10 && x < m.W - 10 && y > 10 && y < m.H - 10;
+    });
+  }
+
   function drawPucks(p) {
     const svg = $("pucks-svg");
-    if (!pucks.keep || !pucks.map) pucks.map = fitPucks(p);
+    // The scale kept while an arrow is dragged (or after a move, while every tip fits).
+    if (!pucks.keep || !pucks.map || (pucks.dragging < 0 && !pucksFit(pucks.map, p))) pucks.map = fitPucks(p);
     const m = pucks.map;
     const step = snapStep(m);
     // For tests and the curious: where the pucks are drawn (their centres and radii in the
@@ -132,8 +148,9 @@
     clear(svg);
     const tip = (i, v) => [m.c[i][0] + m.s * v[0], m.c[i][1] - m.s * v[1]];
     const unit = p.velocity_unit ? " " + p.velocity_unit : "";
+    const massUnit = planeState && planeState.units && planeState.units.mass ? " " + planeState.units.mass : "";
     el(svg, "text", { x: 12, y: 20, class: "title" },
-      "m\u2081 = " + short(p.masses[0]) + ", m\u2082 = " + short(p.masses[1]) + (p.e === null ? "" : ", e = " + short(p.e)) +
+      "m\u2081 = " + short(p.masses[0]) + massUnit + ", m\u2082 = " + short(p.masses[1]) + massUnit + (p.e === null ? "" : ", e = " + short(p.e)) +
       ", " + $("p-frame").selectedOptions[0].textContent + " frame");
     el(svg, "text", { x: 12, y: m.H - 10, class: "tick" }, "solid: before (IN), dashed: after (FIN); arrows in one velocity scale");
     // Labels beside their points (the arrows' tips), moved down a line where they would overlap another.
@@ -188,6 +205,15 @@
         arrow(svg, m.c[i], to, planeColours[i], { id: "fin-" + (i + 1), dash: "7 4", width: 2.2 });
         label(to, names[i][1] + " " + vec(p.fin[i]), planeColours[i]);
       }
+      if ($("p-reverse").checked) {
+        // The time reverse: IN' = -FIN (FIN' = -IN, the IN arrows turned round).
+        for (let i = 0; i < 2; i++) {
+          const back = [-p.fin[i][0], -p.fin[i][1]];
+          const to = tip(i, back);
+          arrow(svg, m.c[i], to, "var(--rev)", { id: "rev-" + (i + 1), dash: "2 3", width: 2 });
+          label(to, names[i][0] + " rev. = \u2212" + names[i][1] + " " + vec(back), "var(--rev)");
+        }
+      }
     } else {
       el(svg, "text", { x: 12, y: 40, class: "label", fill: "var(--bad)" }, "They do not approach along n: no collision, no FIN.");
     }
@@ -197,7 +223,14 @@
       label(to, names[i][0] + " " + vec(p.in[i]) + unit, planeColours[i]);
     }
     // The handles to drag, on top; the keys move the selected one (ringed while focused).
+    const fixed = [0, 1].filter((i) => !draggable(i));
+    if (fixed.length) {
+      el(svg, "text", { id: "drag-note", x: 12, y: m.H - 26, class: "tick" },
+        (fixed.length === 2 ? "v\u2081 and v\u2082 move" : "v" + (fixed[0] ? "\u2082" : "\u2081") + " moves") +
+        " with this frame: type it, or drag it in another frame");
+    }
     for (let i = 0; i < 2; i++) {
+      if (!draggable(i)) continue;
       const [x, y] = tip(i, p.in[i]);
       if (i === pucks.selected) el(svg, "circle", { class: "tip-ring", cx: r2(x), cy: r2(y), r: 12, fill: "none", stroke: "#111827", "stroke-width": 1.5, "stroke-dasharray": "3 3" });
       el(svg, "circle", { id: "tip-" + (i + 1), class: "tip", cx: r2(x), cy: r2(y), r: 7, fill: planeColours[i], stroke: "#fff", "stroke-width": 2 });
@@ -225,22 +258,32 @@
     const S = (q) => [ax.X(q[0]), ax.Y(q[1])];
     const g = el(svg, "g", {});
     const names = [["p\u2081", "p\u2081\u2032"], ["p\u2082", "p\u2082\u2032"]];
-    const note = (q, text, colour, dy) => el(g, "text", { x: r2(q[0] + 6), y: r2(q[1] + dy), class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, text);
+    // Labels placed last, each clear of the axis names and the labels before it (P first); an
+    // arrow of zero length gets none (p2 = 0 would sit on P).
+    const notes = [];
+    const note = (q, text, colour, dy, from, to) => {
+      if (from && to && Math.hypot(to[0] - from[0], to[1] - from[1]) < 0.5) return;
+      notes.push([q, text, colour, dy]);
+    };
     const mid = (a, b) => [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
     arrow(g, S([0, 0]), S(P), "var(--com)", { id: "momentum-total", width: 3 });
     note(S(P), "P", "var(--com)", -6);
     if (p.p_fin) {
       arrow(g, S([0, 0]), S(p.p_fin[0]), planeColours[0], { dash: "7 4" });
       arrow(g, S(p.p_fin[0]), S(P), planeColours[1], { dash: "7 4" });
-      note(mid(S([0, 0]), S(p.p_fin[0])), names[0][1], planeColours[0], 14);
-      note(mid(S(p.p_fin[0]), S(P)), names[1][1], planeColours[1], 14);
+      note(mid(S([0, 0]), S(p.p_fin[0])), names[0][1], planeColours[0], 14, S([0, 0]), S(p.p_fin[0]));
+      note(mid(S(p.p_fin[0]), S(P)), names[1][1], planeColours[1], 14, S(p.p_fin[0]), S(P));
       arrow(g, S(p.p_fin[0]), S(p.p_in[0]), "var(--rev)", { id: "momentum-impulse", width: 1.8, dash: "2 3" });
-      note(mid(S(p.p_fin[0]), S(p.p_in[0])), "J", "var(--rev)", -4);
+      note(mid(S(p.p_fin[0]), S(p.p_in[0])), "J", "var(--rev)", -4, S(p.p_fin[0]), S(p.p_in[0]));
     }
     arrow(g, S([0, 0]), S(p.p_in[0]), planeColours[0], {});
     arrow(g, S(p.p_in[0]), S(P), planeColours[1], {});
-    note(mid(S([0, 0]), S(p.p_in[0])), names[0][0], planeColours[0], -6);
-    note(mid(S(p.p_in[0]), S(P)), names[1][0], planeColours[1], -6);
+    note(mid(S([0, 0]), S(p.p_in[0])), names[0][0], planeColours[0], -6, S([0, 0]), S(p.p_in[0]));
+    note(mid(S(p.p_in[0]), S(P)), names[1][0], planeColours[1], -6, S(p.p_in[0]), S(P));
+    const placed = boxesOf(svg);
+    for (const [q, text, colour, dy] of notes) {
+      placeText(g, placed, { x: r2(q[0] + 6), y: r2(q[1] + dy), class: "label", fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, text);
+    }
   }
 
   // The lecture's velocity plane of the normal parts (v1.n, v2.n), |n| = 1: along the line of
@@ -252,10 +295,21 @@
     // Without a line of impact (or a collision) there is no rail to draw.
     $("normal-figure").hidden = !np;
     if (!np) return;
-    const map = fitVelocityPlane([np], false);
+    const map = fitVelocityPlane([np], $("p-zoom").checked, (q, add) => { if (q.reverse) [q.reverse.in, q.reverse.fin].forEach(add); });
     velocityPlane(svg, np, map, {
       prefix: "n-", axes: ["v\u2081\u00b7n", "v\u2082\u00b7n"],
       title: "along n: M = diag(" + short(p.masses[0]) + ", " + short(p.masses[1]) + "), e = " + short(np.e),
+      under: (g, X, Y) => {
+        // The time reverse: IN' = -FIN, FIN' = -IN, on the same momentum line through -P.
+        if (!np.reverse) return;
+        const rv = np.reverse;
+        el(g, "line", { x1: r2(X(rv.in[0])), y1: r2(Y(rv.in[1])), x2: r2(X(rv.fin[0])), y2: r2(Y(rv.fin[1])), stroke: "var(--rev)", "stroke-dasharray": "4 4", "stroke-width": 1.5 });
+      },
+      more: (point) => {
+        if (!np.reverse) return;
+        point(np.reverse.in, "var(--rev)", "IN\u2032", "point-rev-in", 4);
+        point(np.reverse.fin, "var(--rev)", "FIN\u2032", "point-rev-fin", 4);
+      },
     });
   }
 
@@ -290,9 +344,13 @@
       rows.push(['<span class="c-1">v<sub>1</sub>&prime;</span>', pair(s.fin[0]), polar(s.fin_speed[0], s.fin_angle_deg[0])]);
       rows.push(['<span class="c-2">v<sub>2</sub>&prime;</span>', pair(s.fin[1]), polar(s.fin_speed[1], s.fin_angle_deg[1])]);
       rows.push(['<span class="c-com">V<sub>COM</sub></span>', pair(s.v_com), polar(p.v_com_polar[0], p.v_com_polar[1])]);
-      if (s.impulse) rows.push(['<span class="c-rev">J</span> on body 2', pair(s.impulse), "m\u2082 (v\u2082\u2032 \u2212 v\u2082)"]);
     }
     table("Velocities" + unit, ["", "components", "speed @ angle"], rows);
+    if (s.fin && s.impulse) {
+      // A momentum, in the mass unit times the velocity unit (collide solve's "kg m/s").
+      const u = s.units ? " (" + (s.units.mass || "mass unit") + " " + (s.units.velocity || "velocity unit") + ")" : "";
+      table("Impulse" + u, ["", "components", ""], [['<span class="c-rev">J</span> on body 2', pair(s.impulse), "m\u2082 (v\u2082\u2032 \u2212 v\u2082)"]]);
+    }
     if (!s.fin) {
       para("The pucks do not approach along the line of impact (n&middot;(v<sub>1</sub> &minus; v<sub>2</sub>) &le; 0): they do not collide.");
       return;
@@ -315,7 +373,9 @@
     }
     const angles = [];
     if (s.angle_between_deg !== undefined && s.angle_between_deg !== null) angles.push("between v<sub>1</sub>&prime; and v<sub>2</sub>&prime; <span class=\"num\">" + num(s.angle_between_deg) + "&deg;</span>");
-    if (s.turned_deg) s.turned_deg.forEach((a, i) => { if (a !== null) angles.push("body " + (i + 1) + " turned <span class=\"num\">" + num(a) + "&deg;</span>"); });
+    // As collide solve's text: no "turned" for a body at rest before or after (its JSON says 0).
+    const moving = (v) => Number(v[0]) !== 0 || Number(v[1]) !== 0;
+    if (s.turned_deg) s.turned_deg.forEach((a, i) => { if (a !== null && moving(s.in[i]) && moving(s.fin[i])) angles.push("body " + (i + 1) + " turned <span class=\"num\">" + num(a) + "&deg;</span>"); });
     if (angles.length) para("Angles: " + angles.join("; "));
     if (p.normal) {
       let line = "Line of impact n = (<span class=\"num\">" + num(p.normal[0]) + ", " + num(p.normal[1]) + "</span>) at <span class=\"num\">" + num(p.normal_deg) + "&deg;</span>";
@@ -324,19 +384,43 @@
     }
     if (s.reverse) {
       para('<span class="c-rev">Time reverse</span>: IN&prime; = &minus;FIN = ' + pair(s.reverse.in[0]) + ", " + pair(s.reverse.in[1]) +
-        "; FIN&prime; = &minus;IN; e&prime; = 1/e = " + cell(s.reverse.restitution));
+        "; FIN&prime; = &minus;IN; e&prime; = " + (typeof s.reverse.restitution === "number"
+          ? "1/e = " + cell(s.reverse.restitution) + (s.reverse.restitution > 1 ? ": an explosion, not a collision" : "")
+          : "undefined: 1/e with e = 0, the stuck bodies fly apart"));
     }
   }
 
+  // Whether body i's arrow can be dragged in the frame on screen: not where the frame moves with
+  // a velocity that depends on it (body i initially at rest: its arrow is always 0; a body
+  // finally at rest: FIN depends on both INs, and may not give every on-screen value).
+  function draggable(i) {
+    const f = $("p-frame").value;
+    return f !== "rest-in:" + (i + 1) && !f.startsWith("rest-fin:");
+  }
+
+  // The lab velocity of body i that the frame on screen shows as `u`: the frame's velocity w
+  // does not depend on v_i (the lab, an observer, the other body initially at rest: v_i = u + w),
+  // or, in the COM frame, u = v_i - (m_i v_i + m_j v_j) / M = (m_j / M) (v_i - v_j), so
+  // v_i = v_j + (M / m_j) u (body j's lab velocity unchanged).
+  function labVelocity(i, u) {
+    const p = planeAnswer.picture;
+    if ($("p-frame").value !== "com") return [u[0] + p.w[0], u[1] + p.w[1]];
+    const j = 1 - i, k = (p.masses[0] + p.masses[1]) / p.masses[j];
+    return [p.in[j][0] + p.w[0] + k * u[0], p.in[j][1] + p.w[1] + k * u[1]];
+  }
+
   // Moves the tip of body i's IN arrow to `v` (a velocity in the frame on screen), snapped to
-  // the step; the typed velocity keeps the case's unit.
+  // the step; the typed velocity keeps the case's unit. A move the core refuses is kept, so the
+  // keys go on from it, not from the last valid case.
   function moveTip(i, v) {
+    if (!draggable(i)) return null;
     const t0 = performance.now();
     const step = snapStep(pucks.map);
-    const w = planeAnswer.picture.w;
+    const lab = labVelocity(i, v);
     const unit = planeAnswer.picture.velocity_unit;
-    $("p-v" + (i + 1)).value = "(" + snapText(v[0] + w[0], step) + "," + snapText(v[1] + w[1], step) + ")" + (unit ? " " + unit : "");
+    $("p-v" + (i + 1)).value = "(" + snapText(lab[0], step) + "," + snapText(lab[1], step) + ")" + (unit ? " " + unit : "");
     const answer = solvePlane(true);
+    pucks.pending = answer && !answer.ok ? { i, v } : null;
     const ms = performance.now() - t0;
     view.lastUpdateMs = ms;
     view.planeTimings.push(ms);
@@ -377,6 +461,7 @@
       // The nearer tip of the two IN arrows, within reach.
       let best = -1, dist = 36;
       for (let i = 0; i < 2; i++) {
+        if (!draggable(i)) continue;
         const d = Math.hypot(m.c[i][0] + m.s * p.in[i][0] - q[0], m.c[i][1] - m.s * p.in[i][1] - q[1]);
         if (d < dist) { best = i; dist = d; }
       }
@@ -396,9 +481,14 @@
     const end = (ev) => {
       if (pucks.dragging < 0) return;
       if (ev.type === "pointerup") pending = ev;
-      flush();
-      pucks.dragging = -1;
-      svg.classList.remove("dragging");
+      try {
+        flush();
+      } finally {
+        pucks.dragging = -1;
+        svg.classList.remove("dragging");
+      }
+      // Rescaled once the drag ends if an arrow left the picture.
+      if (!pucksFit(pucks.map, planeAnswer.picture)) drawPucks(planeAnswer.picture);
     };
     svg.addEventListener("pointerup", end);
     svg.addEventListener("pointercancel", end);
@@ -413,14 +503,13 @@
       if (!d) return;
       ev.preventDefault();
       const i = pucks.selected;
+      if (!draggable(i)) return;
       const step = snapStep(pucks.map) * (ev.shiftKey ? 10 : 1);
-      const v = planeAnswer.picture.in[i];
+      // From where the last key put the arrow, if the core refused it (so the keys can go past
+      // a refused value); else from the case on screen.
+      const v = pucks.pending && pucks.pending.i === i ? pucks.pending.v : planeAnswer.picture.in[i];
       const next = [v[0] + d[0] * step, v[1] + d[1] * step];
-      const m = pucks.map;
-      const x = m.c[i][0] + m.s * next[0], y = m.c[i][1] - m.s * next[1];
-      const inside = x > 10 && x < m.W - 10 && y > 10 && y < m.H - 10;
       moveTip(i, next);
-      if (!inside) { pucks.keep = false; pucks.map = null; renderPlane(); }
     });
     for (const r of document.querySelectorAll('input[name="p-key"]')) r.addEventListener("change", () => { if (r.checked) selectTip(Number(r.value)); });
   }
@@ -434,18 +523,16 @@
 
   // The sliders follow the core's answer (an angle typed as N30E or (1,1) included).
   function syncPlaneSliders(p) {
-    for (const f of ["m1", "m2"]) {
-      const v = valueOf($("p-" + f).value);
-      if (v > 0) $("p-" + f + "-range").value = String(Math.log10(v));
-    }
+    for (const f of ["m1", "m2"]) massToSlider($("p-" + f + "-range"), $("p-" + f).value);
     const e = valueOf($("p-e").value);
     if (e >= 0) $("p-e-range").value = String(e);
     if (p.normal_deg !== null) $("p-normal-range").value = String(Math.round(p.normal_deg));
-    const sum = valueOf($("p-r1").value) + valueOf($("p-r2").value);
+    // Radii and b typed with units (2.5 cm) are read in theirs (the same unit for all three).
+    const sum = splitUnit($("p-r1").value)[0] + splitUnit($("p-r2").value)[0];
     if (sum > 0) {
       const range = $("p-b-range");
       range.min = String(-sum); range.max = String(sum); range.step = String(sum / 200);
-      const b = valueOf($("p-b").value);
+      const b = splitUnit($("p-b").value)[0];
       if (isFinite(b)) range.value = String(b);
     }
   }
@@ -472,19 +559,25 @@
     }
     $("p-reverse").checked = !!c.reverse;
     $("p-exact").checked = !!c.exact;
-    const typed = () => solvePlane(false);
+    // A typed value leaves the preset: the menu no longer names it.
+    const typed = () => { pucks.pending = null; $("p-preset").value = ""; solvePlane(false); };
     for (const f of planeFields) $("p-" + f).addEventListener("input", typed);
     for (const f of ["m1", "m2"]) {
       $("p-" + f + "-range").addEventListener("input", () => {
-        $("p-" + f).value = String(Number(Math.pow(10, Number($("p-" + f + "-range").value)).toPrecision(3)));
+        $("p-" + f).value = sliderToMass($("p-" + f + "-range"), $("p-" + f).value);
         solvePlane(false);
       });
     }
     $("p-e-range").addEventListener("input", () => { $("p-e").value = String(Number($("p-e-range").value)); solvePlane(false); });
     $("p-normal-range").addEventListener("input", () => { $("p-normal").value = $("p-normal-range").value + "deg"; solvePlane(false); });
-    $("p-b-range").addEventListener("input", () => { $("p-b").value = String(Number(Number($("p-b-range").value).toPrecision(3))); solvePlane(false); });
+    $("p-b-range").addEventListener("input", () => {
+      const unit = splitUnit($("p-b").value)[1] || splitUnit($("p-r1").value)[1];
+      $("p-b").value = String(Number(Number($("p-b-range").value).toPrecision(3))) + (unit ? " " + unit : "");
+      solvePlane(false);
+    });
     for (const r of document.querySelectorAll('input[name="p-line"]')) r.addEventListener("change", () => { showLineFields(); solvePlane(false); });
     for (const id of ["p-frame", "p-reverse", "p-exact"]) $(id).addEventListener("change", typed);
+    $("p-zoom").addEventListener("change", () => drawNormalParts(planeAnswer.picture));
     $("p-preset").addEventListener("change", () => {
       const p = planePresets[$("p-preset").value];
       if (!p) return;

@@ -7,6 +7,9 @@
     }
   }
 
+  // With JavaScript on, the page draws everything: the status says the core is loading.
+  $("status").classList.remove("bad");
+  $("status").textContent = "Showing the numbers collide wrote into this page; loading its WebAssembly core\u2026";
   setupCaseInputs();
   setupDrag();
   setupDual();

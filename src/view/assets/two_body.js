@@ -36,7 +36,8 @@
   function showCaseError(answer) {
     const ids = {};
     for (const f of caseFields.concat(["inertia", "reverse"])) ids[f] = f;
-    showError(answer, ids, "m1", "case-error", ["state", "command", "scene"]);
+    showError(answer, ids, "m1", "case-error", ["state", "command", "scene"],
+      ["plane-svg", "case-numbers", "rail-svg", "newton-svg", "minkowski-svg", "space-svg"]);
   }
 
 
@@ -278,7 +279,7 @@
     for (const f of caseFields.concat(["inertia"])) $(f).addEventListener("input", typed);
     for (const f of ["m1", "m2"]) {
       $(f + "-range").addEventListener("input", () => {
-        $(f).value = String(Number(Math.pow(10, Number($(f + "-range").value)).toPrecision(3)));
+        $(f).value = sliderToMass($(f + "-range"), $(f).value);
         solveCase(false);
       });
     }
@@ -290,10 +291,7 @@
   function syncSliders() {
     const tensor = $("inertia").value.trim() !== "";
     for (const f of ["m1", "m2"]) $(f).closest(".field").classList.toggle("unused", tensor);
-    for (const f of ["m1", "m2"]) {
-      const v = valueOf($(f).value);
-      if (v > 0) $(f + "-range").value = String(Math.log10(v));
-    }
+    for (const f of ["m1", "m2"]) massToSlider($(f + "-range"), $(f).value);
     const e = valueOf($("e").value);
     if (e >= 0) $("e-range").value = String(e);
   }
