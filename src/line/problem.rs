@@ -238,12 +238,15 @@ impl Problem {
             return self.solve_wall(wall, &m, &v, units);
         }
         let laws = self.laws(&units)?;
+        // Any known beyond masses and velocities (--released too, which no linear law carries)
+        // makes the final velocities unknowns: `--released E` alone is `--fin '?,?'`.
+        let knowns = self.knowns.first_flag().is_some();
         let e = match &self.restitution {
             Some(r) => r.clone().map(|r| r.number().clone()),
-            None if self.fin.is_some() || laws != Laws::default() => Given::Unknown,
+            None if self.fin.is_some() || knowns => Given::Unknown,
             None => Given::Known(Restitution::elastic().number().clone()),
         };
-        if !(self.fin.is_some() || self.has_unknowns() || laws != Laws::default()) {
+        if !(self.fin.is_some() || self.has_unknowns() || knowns) {
             let case = build(&m, &v, e, inertia, units)?;
             return Ok(Posed::Collision(case, None));
         }
