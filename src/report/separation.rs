@@ -86,6 +86,7 @@ impl<N: Scalar> SeparationReport<N> {
                 fin: s.fin.clone(),
                 crunch: Q::ZERO,
                 mu: s.reduced_mass(),
+                e: None,
             };
             AskedReport::of(&motion, &sections.asked)?
         };

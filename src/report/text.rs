@@ -110,8 +110,14 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         changes(c, &case.units).render(&mut out);
     }
     if let Some(h) = &report.heights {
+        // Always of the lab's speeds (`Report::of`), which a moving frame's vectors are not.
+        let lab = if report.frame.is_some() {
+            "; the lab's speeds"
+        } else {
+            ""
+        };
         let mut b = Block::new(format!(
-            "Heights (v^2 / 2g with g = {} m/s^2, in m)",
+            "Heights (v^2 / 2g with g = {} m/s^2, in m{lab})",
             h.g.show()
         ));
         b.row(

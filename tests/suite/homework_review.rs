@@ -37,3 +37,308 @@ fn released_alone_is_released_with_both_final_velocities_unknown() {
         &["--released 5 J", "start together", "V1 != V2"],
     );
 }
+
+#[test]
+fn a_spring_is_refused_where_it_would_contradict_the_collision() {
+    // Review #2: with e = 0 the bodies stick, so "in contact half a period ... e = 1" was false;
+    // with e = 0.5 the same. An ideal spring gives back all it stores: e != 1 is refused, by
+    // name.
+    let base = [
+        "-m",
+        "2 kg,5 kg",
+        "-v",
+        "10 m/s,3 m/s",
+        "--spring",
+        "1120 N/m",
+    ];
+    solve_refused(
+        &[&base[..], &["-e", "0", "--show", "vectors,energy"]].concat(),
+        &["--spring 1120 N/m", "e = 0", "stick", "e = 1"],
+    );
+    solve_refused(
+        &[&base[..], &["-e", "0.5"]].concat(),
+        &["--spring 1120 N/m", "e = 0.5", "energy lost"],
+    );
+    // Halliday, Resnick & Walker (elastic, the default): crunch = 1/2 (10/7) 7^2 = 35 J,
+    // x_max = sqrt(70 / 1120) = 0.25 m exactly; still answered.
+    let (code, j) = solve_json(&base);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(j["spring"]["compression"], 0.25);
+    // Review #3: V1 = V2, the bodies never meet: no compression of 0 m and half a period.
+    solve_refused(
+        &[
+            "-m",
+            "2 kg,3 kg",
+            "-v",
+            "1 m/s,1 m/s",
+            "--spring",
+            "1120 N/m",
+            "--show",
+            "energy",
+        ],
+        &["--spring 1120 N/m", "V1 = V2 = 1", "never touch"],
+    );
+}
+
+#[test]
+fn slides_beyond_binary64_are_refused_by_name_and_exact_with_exact() {
+    // Review #4: "(NaN, NaN) m" (JSON null). m = (1, 12), V = (1e160, -1e160), e = 1:
+    // V_COM = -11e160/13, f1 = 2 V_COM - v1 = -35e160/13, d1 = f1^2 / (2 0.5 9.80665)
+    // = 1225e320 / (169 9.80665) ~ 7.4e319 m: beyond binary64.
+    let args = [
+        "-m",
+        "1 kg,12 kg",
+        "-v",
+        "1e160 m/s,-1e160 m/s",
+        "--show",
+        "slides",
+        "--friction",
+        "0.5",
+    ];
+    solve_refused(&args, &["slides.fin[0]", "not representable"]);
+    // With --exact, d1 exactly: 1225e320 20000 / (169 196133) = 35e325 / 4735211 (196133 =
+    // 7 28019, 1225 = 25 49).
+    let (code, j) = solve_json(&[&args[..], &["--exact"]].concat());
+    assert_eq!(code, 0, "{j}");
+    let d1 = j["slides"]["fin"][0].as_str().unwrap();
+    let (n, d) = d1.split_once('/').unwrap();
+    let n: collide::values::rational::IBig = n.parse().unwrap();
+    let ten = collide::values::rational::IBig::from(10u8);
+    assert_eq!((n, d), (ten.pow(325) * 35u8, "4735211"));
+}
+
+#[test]
+fn released_energies_far_from_one_keep_their_roots() {
+    // Review #5: sqrt(2 E / mu) with 2 E / mu outside binary64's range. Equal masses m: mu =
+    // m/2 and each piece takes half the relative speed, |f| = sqrt(2 E / mu) / 2.
+    // 1e-300 kg, 3e10 J: 2 E / mu = 6e10 / 5e-301 = 1.2e311, |f| = sqrt(3) 1e155
+    // = 1.7320508075688772935e155 (40-digit decimal; 2^1023 was printed).
+    // 1e300 kg, 2e-300 J: 2 E / mu = 4e-300 / 5e299 = 8e-600, |f| = sqrt(2) 1e-300
+    // = 1.4142135623730950488e-300 (0 was printed, labelled f1 < f2).
+    for (m, e, speed) in [
+        ("1e-300 kg,1e-300 kg", "3e10 J", 1.7320508075688772935e155),
+        ("1e300 kg,1e300 kg", "2e-300 J", 1.4142135623730950488e-300),
+    ] {
+        let (code, j) = solve_json(&[
+            "-m",
+            m,
+            "-v",
+            "0,0 m/s",
+            "--fin",
+            "?,?",
+            "--released",
+            e,
+            "--show",
+            "energy",
+        ]);
+        assert_eq!(code, 0, "{j}");
+        let s = &j["solutions"];
+        // Within an ulp: the root of 2 E / mu rounded once, halved exactly.
+        common::assert_ulps(f(&s[0]["fin"][1]), speed, 1.0, "f2, body 1 on the left");
+        common::assert_ulps(-f(&s[0]["fin"][0]), speed, 1.0, "-f1, body 1 on the left");
+        common::assert_ulps(f(&s[1]["fin"][0]), speed, 1.0, "f1, body 1 on the right");
+        let typed: f64 = e.trim_end_matches(" J").parse().unwrap();
+        assert_close(f(&s[0]["energy"]["released"]), typed, REL, "released");
+    }
+}
+
+#[test]
+fn small_pendulum_angles_keep_every_digit() {
+    // Review #6. theta = 2 asin(sqrt(h / 2L)) = 2 asin(f / (2 sqrt(g L))), and for these
+    // angles (below 1e-29 rad) asin(x) = x to 1e-58 relative: theta = f / sqrt(g L).
+    let swing = |args: &[&str]| -> serde_json::Value {
+        let (code, j) = solve_json(args);
+        assert_eq!(code, 0, "{j}");
+        j["pendulum"]["swings"][0].clone()
+    };
+    let g: f64 = 9.80665;
+    // A proton (1 u = 1.66053906892e-27 kg) at 1 m/s against 1000 kg at rest, elastic:
+    // f2 = 2 m1 / (m1 + m2) = 3.32107813784e-30 m/s; L = 1 m: theta = 1.0605197382230e-30 rad
+    // = 6.07633050904949e-29 deg (was 6.0763305089179e-29: rounded to 1e-40 rad).
+    let m1 = 1.66053906892e-27;
+    let f2 = 2.0 * m1 / (1000.0 + m1);
+    let s = swing(&["-m", "1 u,1000 kg", "-v", "1 m/s,0", "--length", "1 m"]);
+    assert_close(
+        f(&s["angle_deg"]),
+        (f2 / g.sqrt()).to_degrees(),
+        1e-15,
+        "theta, 1 u",
+    );
+    // Its own x = L sin(theta) = L theta here.
+    assert_close(
+        f(&s["angle_deg"]).to_radians(),
+        f(&s["horizontal"]),
+        1e-15,
+        "x = L theta",
+    );
+    // Equal masses, f2 = 1 m/s, L = 1e75 m: theta = 1 / sqrt(9.80665e75) = 1.00981e-38 rad
+    // = 5.78578504541421e-37 deg (was exactly 1e-38 rad); L = 1e100: 3.19330e-51 rad (was 0).
+    for (l, gl) in [("1e75", 9.80665e75f64), ("1e100", 9.80665e100)] {
+        let s = swing(&["-m", "1 kg,1 kg", "-v", "1 m/s,0", "--length", l]);
+        assert_close(f(&s["angle_deg"]), (1.0 / gl.sqrt()).to_degrees(), 1e-15, l);
+    }
+}
+
+#[test]
+fn nonzero_values_that_underflow_are_refused_not_printed_as_0() {
+    // Review #7: x_max = sqrt(2 crunch / k), crunch = 1/2 (5e-301) (1e-300)^2 = 2.5e-901 J,
+    // k = 1e300: x = sqrt(5e-1201) = 7.0710678118654752440e-601 m, printed as 0.
+    let spring = [
+        "-m",
+        "1e-300 kg,1e-300 kg",
+        "-v",
+        "1e-300 m/s,0",
+        "--spring",
+        "1e300 N/m",
+        "--show",
+        "vectors",
+    ];
+    solve_refused(&spring, &["spring.compression", "not representable"]);
+    let (code, j) = solve_json(&[&spring[..], &["--exact"]].concat());
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(j["spring"]["compression"], "7.071067811865475244e-601");
+    // f2 = 1e-170 m/s: h = 1e-340 / (2 9.80665), below binary64's normal range: the pendulum,
+    // the heights and the slides said 0 while x = 3.19e-171 m.
+    let tiny = ["-m", "1 kg,1 kg", "-v", "1e-170 m/s,0"];
+    for (extra, name) in [
+        (
+            &["--length", "1", "--show", "vectors"][..],
+            "pendulum.swings[0].height",
+        ),
+        (&["--show", "heights"][..], "heights.in[0]"),
+        (
+            &["--show", "slides", "--friction", "0.5"][..],
+            "slides.fin[1]",
+        ),
+    ] {
+        solve_refused(&[&tiny[..], extra].concat(), &[name, "not representable"]);
+    }
+}
+
+#[test]
+fn speeds_from_heights_at_both_ends_of_binary64() {
+    // Review #8: v = sqrt(2 g h), g = 9.80665, by 40-digit decimal arithmetic:
+    // h = 1e308 m: 4.428690551393267079595e154 (was refused as too large);
+    // h = 1e-320 m: 4.428690551393267079595e-160 (was 4.428703874567118e-160);
+    // h = 5e-324 m: 9.902853124226371156262e-162 (was 9.9405e-162).
+    for (h, v) in [
+        ("1e308 m", 4.428690551393267079595e154),
+        ("1e-320 m", 4.428690551393267079595e-160),
+        ("5e-324 m", 9.902853124226371156262e-162),
+    ] {
+        let (code, j) = solve_json(&[
+            "-m",
+            "1,1",
+            "-v",
+            &format!("height {h},0"),
+            "--show",
+            "vectors",
+        ]);
+        assert_eq!(code, 0, "{h}: {j}");
+        common::assert_ulps(f(&j["in"][0]), v, 1.0, h);
+    }
+    // A slide's height beyond binary64 is named as typed and in metres, in 80 columns (it was
+    // a 310-digit "velocity").
+    let out = common::collide_at_default_width()
+        .args(["solve", "-m", "1,1", "-v", "slide 1e308 m mu 10,0"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("1e309 m") && err.contains("'slide 1e308 m mu 10'"),
+        "{err}"
+    );
+    assert!(err.lines().all(|l| l.chars().count() <= 80), "{err}");
+}
+
+#[test]
+fn heights_are_the_labs_under_any_frame() {
+    // Review #9: 1 kg at 2 m/s sticks to 1 kg at rest (g = 10): FIN 1 m/s in the lab,
+    // h = 1 / 20 = 0.05 m, and IN 2^2 / 20 = 0.2 m; the com frame printed FIN (0, 0).
+    let args = [
+        "-m",
+        "1 kg,1 kg",
+        "-v",
+        "2 m/s,0",
+        "-e",
+        "0",
+        "--gravity",
+        "10",
+        "--show",
+        "vectors,heights",
+    ];
+    for frame in ["lab", "com", "4", "-3"] {
+        let (code, j) = solve_json(&[&args[..], &["--frame", frame]].concat());
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["heights"]["fin"], json!([0.05, 0.05]), "--frame {frame}");
+        assert_eq!(j["heights"]["in"], json!([0.2, 0.0]), "--frame {frame}");
+    }
+    let (_, text, _) = run(&[&args[..], &["--frame", "com"]].concat());
+    assert!(text.contains("in m; the lab's speeds)"), "{text}");
+    // The pendulum and the heights agree under --frame 4 (they said 0.8 m and 3.4e-34).
+    let (code, j) = solve_json(&[
+        "-m",
+        "1 kg,1 kg",
+        "-v",
+        "?,0",
+        "--fin",
+        "4 m/s,4 m/s",
+        "-e",
+        "0",
+        "--gravity",
+        "10",
+        "--length",
+        "1.6",
+        "--frame",
+        "4",
+        "--show",
+        "heights",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(j["heights"]["fin"][1], 0.8, "16 / 20");
+    assert_eq!(j["pendulum"]["swings"][0]["height"], 0.8);
+}
+
+#[test]
+fn a_slack_string_gives_the_real_peak() {
+    // Review #10: 10 g into 2 kg, FIN 4 m/s, g = 10, L = 0.5 m: h = 16/20 = 0.8 m > L. The
+    // string goes slack where cos(theta) = 2 (L - h) / 3L = -2/5, at L (1 - c) = 0.7 m with
+    // u^2 = -g L c = 2; the bob flies on and rises u^2 sin^2(theta) / 2g = 2 (21/25) / 20 =
+    // 0.084 m more: the peak is 0.784 = 98/125 m, not 4/5.
+    let args = [
+        "-m",
+        "10 g,2 kg",
+        "-v",
+        "?,0",
+        "-e",
+        "0",
+        "--fin",
+        "4 m/s,4 m/s",
+        "--gravity",
+        "10",
+        "--length",
+        "0.5",
+    ];
+    let (code, j) = solve_json(&[&args[..], &["--exact"]].concat());
+    assert_eq!(code, 0, "{j}");
+    let s = &j["pendulum"]["swings"][0];
+    assert_eq!(
+        (&s["height"], &s["slack"], &s["peak"]),
+        (&json!("4/5"), &json!(true), &json!("98/125"))
+    );
+    let (_, j) = solve_json(&args);
+    assert_close(f(&j["pendulum"]["swings"][0]["peak"]), 0.784, REL, "peak");
+    let (_, text, _) = run(&args);
+    assert!(
+        text.contains("the height energy alone would give"),
+        "{text}"
+    );
+    assert!(
+        !text.contains("how high the bob rises\n") || text.contains("peak, string slack"),
+        "{text}"
+    );
+    // A string that stays taut has no peak key: 1 m string, h = 0.8.
+    let (_, j) = solve_json(&[&args[..10], &["--length", "1"]].concat());
+    assert!(j["pendulum"]["swings"][0].get("peak").is_none(), "{j}");
+}
