@@ -658,12 +658,21 @@ impl AnyReport {
             let lab = ExactCollision::from_case(case);
             AnyReport::Exact(Box::new(Report::of(&lab, frame, sections, reverse)?))
         } else {
-            AnyReport::Binary64(Box::new(Report::of(
-                &case.collision,
-                frame,
-                sections,
-                reverse,
-            )?))
+            let mut r = Report::of(&case.collision, frame, sections, reverse)?;
+            // Whether the bodies approach, and which is behind, from the values as typed (or
+            // carried exactly from an earlier stage), as a chain of stages decides it: two
+            // velocities that differ may round to one binary64 (0.6666666666666666 and the
+            // binary64 of 2/3), and "V1 = V2: the bodies never meet" would then be false. The
+            // order is the same in every frame (both velocities shift by w).
+            let order = crate::line::order::Order::before(
+                &case.velocities[0].exact(),
+                &case.velocities[1].exact(),
+            );
+            if let Some(v) = r.vectors.as_mut() {
+                v.approaching = order.meet();
+                v.left = order.left_when_body_2();
+            }
+            AnyReport::Binary64(Box::new(r))
         })
     }
 

@@ -342,3 +342,106 @@ fn a_slack_string_gives_the_real_peak() {
     let (_, j) = solve_json(&[&args[..10], &["--length", "1"]].concat());
     assert!(j["pendulum"]["swings"][0].get("peak").is_none(), "{j}");
 }
+
+#[test]
+fn an_impulse_against_a_wall_is_the_balls_own_law() {
+    // Review #11: 2 kg at 3 m/s against a wall (body 2), "the impulse on the wall is 8 N s":
+    // on the ball -8 = 2 (f - 3), f = -1 m/s; e = -(f - 0) / (3 - 0) = 1/3 (the A-level
+    // answer). It was refused ("momentum says nothing").
+    let (code, j) = solve_json(&[
+        "-m",
+        "2 kg,wall",
+        "-v",
+        "3 m/s,0",
+        "--impulse",
+        "8 N s",
+        "--exact",
+        "--show",
+        "vectors",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(j["solved"], json!({"f1": "-1", "e": "1/3"}));
+    assert_eq!(j["fin"], json!(["-1", "0"]));
+    // The wall as body 1, the ball (body 2) at -3 m/s: the impulse on body 2 is the ball's,
+    // +8 = 2 (f + 3), f = 1; e = 1/3 again (swapped bodies, the same bounce).
+    let (code, j) = solve_json(&[
+        "-m",
+        "wall,2 kg",
+        "-v",
+        "0,-3 m/s",
+        "--impulse",
+        "8 N s",
+        "--exact",
+    ]);
+    assert_eq!(
+        (code, &j["solved"]),
+        (0, &json!({"f2": "1", "e": "1/3"})),
+        "{j}"
+    );
+    // Given FIN too, the impulse is checked: f = -1 needs 8 N s; 6 N s misses by
+    // 2 (-1 - 3) + 6 = -2 (the ball's impulse, -8, less the typed -6): exit 1.
+    let (code, j) = solve_json(&[
+        "-m",
+        "2 kg,wall",
+        "-v",
+        "3 m/s,0",
+        "--fin",
+        "-1 m/s,0",
+        "--impulse",
+        "6 N s",
+        "--exact",
+    ]);
+    assert_eq!((code, &j["check"]["impulse1"]), (1, &json!("-2")), "{j}");
+    // A pass-through and a released energy still need two movable bodies.
+    solve_refused(
+        &[
+            "-m",
+            "2 kg,wall",
+            "-v",
+            "3 m/s,0",
+            "--fin",
+            "?,0",
+            "--pass-through",
+        ],
+        &["--pass-through", "wall"],
+    );
+}
+
+#[test]
+fn a_stage_the_chain_says_approaches_is_reported_approaching() {
+    // Review #13 (binary64 scene): stage 1, m = (1, 2), V = (1, 0), e = 1: f2 = 2/3, carried
+    // as its binary64 0.66666666666666662965... Stage 2 has that body (2 kg) at it and a third
+    // (1 kg) at the typed 0.6666666666666666 exactly, smaller by 2.97e-17: the chain says they
+    // approach (the carried body behind), but the report said "V1 = V2: the bodies never
+    // meet" (approaching: false).
+    let path = common::scratch("review").join("approach.toml");
+    std::fs::write(
+        &path,
+        "[[stage]]\nmasses = [1, 2]\nvelocities = [1, 0]\n\n\
+         [[stage]]\nmasses = [2, 1]\nvelocities = [\"stage1.fin2\", 0.6666666666666666]\n",
+    )
+    .unwrap();
+    let p = path.to_str().unwrap();
+    let (code, out, err) = common::run(&["scene", p, "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let stage2 = &j["report"]["stages"][1]["report"];
+    assert_eq!(stage2["approaching"], true, "{stage2}");
+    assert!(
+        stage2.get("left").is_none(),
+        "A (body 1) is behind: {stage2}"
+    );
+    let (_, text, _) = common::run(&["scene", p]);
+    assert!(!text.contains("never meet"), "{text}");
+    // The same two values typed on the command line: they differ, so they approach, and the
+    // binary64 FIN (= IN within rounding) is printed without "never meet".
+    let (code, j) = solve_json(&[
+        "-m",
+        "2,1",
+        "-v",
+        "0.66666666666666662965923251249478198587894439697265625,0.6666666666666666",
+        "--show",
+        "vectors",
+    ]);
+    assert_eq!((code, &j["approaching"]), (0, &json!(true)), "{j}");
+}

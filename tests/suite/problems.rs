@@ -433,7 +433,14 @@ fn walls_forward_moving_and_refused() {
         (
             // 2 g h = 3.4e616 is no square, and its root 1.84e308 m/s is past binary64 (2 g h
             // itself may be: 6e308 gives 2.45e154 m/s, review #8).
-            vec!["-m", "1,1", "-v", "height 1.7e308 m,0", "--gravity", "1e308"],
+            vec![
+                "-m",
+                "1,1",
+                "-v",
+                "height 1.7e308 m,0",
+                "--gravity",
+                "1e308",
+            ],
             "sqrt(2 g h)",
         ),
         (
