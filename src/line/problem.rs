@@ -275,7 +275,7 @@ impl Problem {
             .collect();
         let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
         if let Some(released) = &self.knowns.released {
-            let e = released.in_case(units.energy_si().as_ref())?;
+            let e = released.in_units(units.energy_si().as_ref(), &units)?;
             return self.solve_released(&known, exact, (released, e), &laws, units);
         }
         let solved = crate::line::knowns::solve(exact, &laws)?;
@@ -301,7 +301,7 @@ impl Problem {
     /// The laws the knowns bring, in the case's units.
     fn laws(&self, units: &Units) -> Result<Laws, ProblemError> {
         let impulse = match &self.knowns.impulse {
-            Some(j) => Some(j.in_case(units.force_scale().as_ref())?),
+            Some(j) => Some(j.in_units(units.force_scale().as_ref(), units)?),
             None => None,
         };
         Ok(Laws {
@@ -416,7 +416,7 @@ impl Problem {
         // `--impulse J` is the impulse on body 2: on the ball it is J when the ball is body 2,
         // -J when it is body 1 (the wall, body 2, takes J).
         let impulse = match &self.knowns.impulse {
-            Some(j) => Some(j.in_case(units.force_scale().as_ref())?),
+            Some(j) => Some(j.in_units(units.force_scale().as_ref(), &units)?),
             None => None,
         };
         let j_ball = impulse.map(|j| if ball == 1 { j } else { -j });

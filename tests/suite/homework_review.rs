@@ -445,3 +445,81 @@ fn a_stage_the_chain_says_approaches_is_reported_approaching() {
     ]);
     assert_eq!((code, &j["approaching"]), (0, &json!(true)), "{j}");
 }
+
+#[test]
+fn a_wrong_next_is_a_failed_check_not_bad_input() {
+    // Review #14: scenarios/stages-no-further.toml ends with no further collision (next = []);
+    // expecting a first meeting there is a wrong answer: exit 1, expected against actual (it was
+    // "the report has no quantity", exit 2).
+    let text = std::fs::read_to_string("scenarios/stages-no-further.toml").unwrap();
+    let path = common::scratch("review").join("next.toml");
+    std::fs::write(&path, format!("{text}\"next.0.bodies\" = [\"A\", \"B\"]\n")).unwrap();
+    let (code, out, err) = common::run(&["scene", path.to_str().unwrap()]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        out.contains("FAIL") && out.contains("next.0.bodies") && out.contains("next has 0 entries"),
+        "{out}"
+    );
+}
+
+#[test]
+fn control_characters_in_scenes_are_escaped_in_errors() {
+    // Review #15: a body's name and an [expect] key with ESC (U+001B) put it raw on stderr.
+    let dir = common::scratch("review");
+    let bodies = dir.join("esc-bodies.toml");
+    // B (on the right, slower) is typed first and never caught: the stage is refused by name.
+    std::fs::write(
+        &bodies,
+        "[[stage]]\nbodies = [\"A\\u001b[31mX\", \"B\"]\nmasses = [1, 1]\nvelocities = [0, 1]\n\
+         [[stage]]\nmasses = [1, 1]\nvelocities = [\"stage1.fin1\", \"stage1.fin2\"]\n",
+    )
+    .unwrap();
+    let key = dir.join("esc-key.toml");
+    std::fs::write(
+        &key,
+        "masses = [1, 1]\nvelocities = [1, 0]\n[expect]\n\"fin\\u001b\" = 1\n",
+    )
+    .unwrap();
+    for path in [bodies, key] {
+        let (code, _, err) = common::run(&["scene", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{err}");
+        assert!(!err.contains('\u{1b}'), "raw ESC: {err:?}");
+        assert!(err.contains("\\u{1b}"), "{err}");
+    }
+}
+
+#[test]
+fn messages_name_what_is_missing() {
+    // Review #16: the masses have units here, the velocities do not.
+    solve_refused(
+        &[
+            "-m",
+            "1 kg,2 kg",
+            "-v",
+            "0,0",
+            "--fin",
+            "?,?",
+            "--released",
+            "1 J",
+        ],
+        &["--released '1 J' has a unit, but the velocities do not"],
+    );
+    solve_refused(
+        &[
+            "-m",
+            "?,?",
+            "-v",
+            "6 m/s,0",
+            "--impulse",
+            "12 N s",
+            "--fin",
+            "2 m/s,6 m/s",
+        ],
+        &["but the masses (a '?' has none) do not"],
+    );
+    // One law fixes (not "fix") one unknown, and a pass-through with no FIN is pointed to --fin.
+    solve_refused(
+        &["-m", "0.01,2", "-v", "500,0", "--pass-through"],
+        &["momentum fixes at most 1", "--fin"],
+    );
+}
