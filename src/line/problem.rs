@@ -275,7 +275,12 @@ impl Problem {
             .collect();
         let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
         if let Some(released) = &self.knowns.released {
-            let e = released.in_units(units.energy_si().as_ref(), &units)?;
+            let e = match (&released.unit_si, units.energy_scale()) {
+                // A plain number is in the unit energies are printed in (`--energy-unit kJ`),
+                // as the Units line says; the report's energies are that unit over `scale`.
+                (None, Some(scale)) => released.number.exact() / scale,
+                _ => released.in_units(units.energy_si().as_ref(), &units)?,
+            };
             return self.solve_released(&known, exact, (released, e), &laws, units);
         }
         let solved = crate::line::knowns::solve(exact, &laws)?;

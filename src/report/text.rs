@@ -25,8 +25,10 @@ pub fn header(case: &Case) -> String {
 /// 3/7` in the header), not as `≈` digits.
 pub fn header_in(case: &Case, exact: bool) -> String {
     let e = case.restitution();
+    // Typed (or solved) text as it is; a binary64-born value (the default e = 1) as a header
+    // shows it, not as its Debug digits ("1.0").
     let shown = |n: &crate::values::number::Number| match n.text() {
-        t if exact && t.len() <= 40 => t.into_owned(),
+        std::borrow::Cow::Borrowed(t) if exact && t.len() <= 40 => t.to_string(),
         _ => typed(n),
     };
     let e_text = shown(e.number());
@@ -453,10 +455,11 @@ pub fn changes<N: Scalar>(c: &ChangeReport<N>, units: &crate::values::units::Uni
         b.row(
             "transferred",
             t.show(),
-            format!(
-                "{}: KE_FIN of the body at rest / KE_IN of the other",
-                percent(t)
-            ),
+            match percent(t) {
+                // Exact mode prints the fraction alone (8/9): no percentage, no orphan ':'.
+                p if p.is_empty() => "KE_FIN of the body at rest / KE_IN of the other".into(),
+                p => format!("{p}: KE_FIN of the body at rest / KE_IN of the other"),
+            },
         );
     }
     if let Some(f) = &c.average_force {

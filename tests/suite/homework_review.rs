@@ -523,3 +523,59 @@ fn messages_name_what_is_missing() {
         &["momentum fixes at most 1", "--fin"],
     );
 }
+
+#[test]
+fn cosmetics_of_exact_mode_and_energy_units() {
+    // Review #17. The default e under --exact is printed as 1 (it was "e = 1.0").
+    let (_, text, _) = run(&["-m", "3,5", "-v", "1,0", "--exact", "--show", "vectors"]);
+    assert!(
+        text.starts_with("M = diag(3, 5)   V_IN = (1, 0)   e = 1 (elastic"),
+        "{text}"
+    );
+    // Exact mode's transferred fraction has no percentage, and no orphan ':' line: m = (1, 2),
+    // V = (3, 0), e = 1/2: f2 = (1 + 1/2) 1 = 3/2, KE 1/2 2 (9/4) = 9/4 of 9/2: 1/2.
+    let (_, text, _) = run(&[
+        "-m", "1,2", "-v", "3,0", "-e", "1/2", "--exact", "--show", "changes",
+    ]);
+    assert!(
+        text.contains("transferred             1/2")
+            && text.contains("KE_FIN of the body at rest")
+            && !text.contains(": KE_FIN of the body at rest"),
+        "{text}"
+    );
+    // A plain --released with --energy-unit kJ is in kJ, as the Units line says: 0.048 kJ is
+    // the 48 J of the 1 kg and 2 kg pieces, (-8, 4) m/s, released printed as 0.048 = 6/125 kJ.
+    let (code, j) = solve_json(&[
+        "-m",
+        "1 kg,2 kg",
+        "-v",
+        "0,0 m/s",
+        "--released",
+        "0.048",
+        "--energy-unit",
+        "kJ",
+        "--exact",
+        "--show",
+        "energy",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(j["solutions"][0]["fin"], json!(["-8", "4"]));
+    assert_eq!(j["solutions"][0]["energy"]["released"], "6/125");
+    // A pass-through that loses nothing (the relative speed 4 kept: FIN = (4, 0) from (4, 0))
+    // does not say the energy turned into heat.
+    let (_, text, _) = run(&[
+        "-m",
+        "1,1",
+        "-v",
+        "4,0",
+        "--fin",
+        "4,?",
+        "--pass-through",
+        "--show",
+        "energy",
+    ]);
+    assert!(
+        text.contains("nothing lost") && !text.contains("turned into heat"),
+        "{text}"
+    );
+}
