@@ -72,11 +72,12 @@ pub fn answer<N: Scalar>(case: &Case, report: &Report<N>) -> Option<String> {
         v.fin[0].snap(own.fin[0]).show(),
         v.fin[1].snap(own.fin[1]).show(),
     ];
-    Some(if case.restitution().is_totally_inelastic() {
-        format!("FIN: v1' = v2' = {f1} {unit} (the bodies stick)\n")
+    // Wrapped to the terminal like every line of text (COLUMNS=40 too).
+    Some(paragraph(&if case.restitution().is_totally_inelastic() {
+        format!("FIN: v1' = v2' = {f1} {unit} (the bodies stick)")
     } else {
-        format!("FIN: v1' = {f1} {unit}, v2' = {f2} {unit}\n")
-    })
+        format!("FIN: v1' = {f1} {unit}, v2' = {f2} {unit}")
+    }))
 }
 
 /// Renders the report of `case` as text.
@@ -516,16 +517,17 @@ fn products<N: Scalar>(p: &Products<N>) -> Block {
     let mut b = Block::new("Products");
     b.row("V_FIN . V_IN", p.dot_fin_in.show(), "plain dot product");
     let o = &p.outer_in_fin;
-    b.row(
-        "V_IN (x) V_FIN",
-        format!(
-            "[[{}, {}], [{}, {}]]",
-            o[0][0].show(),
-            o[0][1].show(),
-            o[1][0].show(),
-            o[1][1].show()
-        ),
-        "outer product",
-    );
+    let rows = [
+        format!("[{}, {}]", o[0][0].show(), o[0][1].show()),
+        format!("[{}, {}]", o[1][0].show(), o[1][1].show()),
+    ];
+    let whole = format!("[{}, {}]", rows[0], rows[1]);
+    // The label and a matrix of long numbers pass 80 columns on one line: a row a line then.
+    if "  V_IN (x) V_FIN  ".len() + whole.chars().count() <= crate::values::terminal::width() {
+        b.row("V_IN (x) V_FIN", whole, "outer product");
+    } else {
+        b.row("V_IN (x) V_FIN", format!("[{},", rows[0]), "outer product");
+        b.row("", format!(" {}]", rows[1]), "");
+    }
     b
 }

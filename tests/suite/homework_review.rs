@@ -579,3 +579,66 @@ fn cosmetics_of_exact_mode_and_energy_units() {
         "{text}"
     );
 }
+
+#[test]
+fn long_answers_and_matrices_fit_the_terminal() {
+    // Review #17: the FIN answer line was not wrapped under COLUMNS=40, and the products' outer
+    // matrix of long numbers ran to 95 columns at the default 80.
+    let out = common::collide_at_default_width()
+        .env("COLUMNS", "40")
+        .args([
+            "solve",
+            "-m",
+            "1500 kg,900 kg",
+            "-v",
+            "72.123456789 km/h,0.987654321 km/h",
+            "-e",
+            "0.3",
+            "--show",
+            "vectors",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("FIN: v1' = "), "{text}");
+    let answer: Vec<&str> = text.lines().take_while(|l| !l.is_empty()).collect();
+    assert!(
+        answer.len() == 2 && answer.iter().all(|l| l.chars().count() <= 40),
+        "{text}"
+    );
+    let out = common::collide_at_default_width()
+        .args([
+            "solve",
+            "-m",
+            "3,7",
+            "-v",
+            "1.234567890123,-9.87654321012",
+            "-e",
+            "0.3",
+            "--show",
+            "products",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.lines().all(|l| l.chars().count() <= 80), "{text}");
+    // Both rows of V_IN (x) V_FIN are there, [[v1 f1, v1 f2], [v2 f1, v2 f2]], against the
+    // impulse form by hand: V_COM = (3 v1 + 7 v2) / 10, f = (1 + e) V_COM - e v (to 1e-13).
+    let (v1, v2) = (1.234567890123, -9.87654321012);
+    let vc = (3.0 * v1 + 7.0 * v2) / 10.0;
+    let (f1, f2) = (1.3 * vc - 0.3 * v1, 1.3 * vc - 0.3 * v2);
+    let numbers: Vec<f64> = text
+        .lines()
+        .skip_while(|l| !l.contains("V_IN (x) V_FIN"))
+        .take(2)
+        .flat_map(|l| {
+            l.split(['[', ']', ',', ' '])
+                .filter_map(|w| w.parse::<f64>().ok())
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    assert_eq!(numbers.len(), 4, "{text}");
+    for (got, want) in numbers.iter().zip([v1 * f1, v1 * f2, v2 * f1, v2 * f2]) {
+        assert_close(*got, want, 1e-13, "outer product");
+    }
+}
