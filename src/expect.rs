@@ -151,16 +151,33 @@ impl Expectation {
         self
     }
 
-    /// Checks against the report as JSON. `Err` when the key names nothing in the report.
+    /// Checks against the report as JSON. `Err` when the key names nothing in the report; an
+    /// entry past the end of a list (`next.0.bodies` when `next` is empty) is a wrong answer, a
+    /// failed check: the list is the report's, its length the answer.
     pub fn check(&self, report: &Json) -> Result<Check, ExpectError> {
         let mut node = report;
+        let mut path: Vec<&str> = Vec::new();
         for seg in self.key.split('.') {
             node = match node {
                 Json::Object(o) => o.get(seg),
-                Json::Array(a) => seg.parse::<usize>().ok().and_then(|i| a.get(i)),
+                Json::Array(a) => match seg.parse::<usize>() {
+                    Ok(i) if i >= a.len() => {
+                        return Ok(Check {
+                            key: self.key.clone(),
+                            line: self.line,
+                            passed: false,
+                            expected: show_expected(&self.expected),
+                            actual: format!("nothing: {} has {} entries", path.join("."), a.len()),
+                            tolerance: self.tolerance,
+                        });
+                    }
+                    Ok(i) => a.get(i),
+                    Err(_) => None,
+                },
                 _ => None,
             }
             .ok_or_else(|| ExpectError::Missing(self.key.clone()))?;
+            path.push(seg);
         }
         Ok(Check {
             key: self.key.clone(),

@@ -18,8 +18,8 @@ pub struct KnownArgs {
     pub impulse: Option<collide::values::derived::Derived>,
 
     /// The energy released when bodies that start together are pushed apart (an explosion),
-    /// e.g. '48 J', '7.11e8 J', or plain in the case's units: with --fin '?,?' both ways the
-    /// pieces can part are printed
+    /// e.g. '48 J', '7.11e8 J', or plain in the case's units: with --fin '?,?' (or no --fin)
+    /// both ways the pieces can part are printed
     #[arg(long, value_name = "E", help_heading = "Homework knowns", allow_hyphen_values = true,
           conflicts_with_all = ["pass_through", "impulse", "restitution"],
           value_parser = |s: &str| collide::values::derived::parse(s, collide::values::derived::Kind::Energy))]

@@ -87,11 +87,20 @@ pub fn solve(known: [Option<Q>; 7], laws: &Laws) -> Result<Solved, UnknownError>
     let laws_named = || names_of(&named);
     if unknowns.len() > named.len() {
         return Err(UnknownError::Many(format!(
-            "{} unknowns ({}), and {} fix at most {}",
+            "{} unknowns ({}), and {} {} at most {}{}",
             unknowns.len(),
             names(&unknowns),
             laws_named(),
-            named.len()
+            if named.len() == 1 { "fixes" } else { "fix" },
+            named.len(),
+            if laws.pass_through
+                && known[Var::F1 as usize].is_none()
+                && known[Var::F2 as usize].is_none()
+            {
+                ": give a final velocity with --fin (a pass-through has no restitution to fix it)"
+            } else {
+                ""
+            }
         )));
     }
     let mut x: [Q; 7] = known.map(|v| v.unwrap_or_default());

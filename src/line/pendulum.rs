@@ -9,7 +9,7 @@
 
 use num_traits::Signed;
 
-use crate::line::spring::{DIGITS, PI, root};
+use crate::line::spring::{PI, root};
 use crate::values::rational::{Q, int};
 
 /// How a swing ends.
@@ -22,6 +22,8 @@ pub enum Swing {
         horizontal: Result<Q, Q>,
         /// `h > L`: a string goes slack before this angle (a rod would reach it).
         slack: bool,
+        /// With `slack`, the height the bob really reaches on a string (`peak`), exact.
+        peak: Option<Q>,
     },
     /// `h > 2L`: over the top.
     OverTheTop,
@@ -54,7 +56,20 @@ pub fn swing(h: &Q, l: &Q) -> Swing {
         degrees,
         horizontal,
         slack: h > l,
+        peak: (h > l).then(|| peak(h, l)),
     }
+}
+
+/// The highest point of a bob whose string goes slack (`L < h <= 2L`): the string's tension
+/// vanishes where `u^2 = -g L cos(theta)` with `u^2 = 2 g h - 2 g L (1 - cos(theta))` (energy),
+/// at `c = cos(theta) = 2 (L - h) / 3L`, the height `L (1 - c)`; the bob then flies free with
+/// the vertical speed `u sin(theta)` and rises `u^2 sin^2(theta) / 2g = -(L c / 2)(1 - c^2)`
+/// more. Exact (no root: only squares appear). Ballistic pendulum with L = 0.5 m, h = 0.8 m:
+/// `c = -2/5`, slack at 0.7 m, peak 0.7 + 0.1 (21/25) = 0.784 m.
+pub fn peak(h: &Q, l: &Q) -> Q {
+    let c = int(2) * (l - h) / (int(3) * l);
+    let one_less = Q::ONE - &c * &c;
+    l * (Q::ONE - &c) - l * &c / int(2) * one_less
 }
 
 fn q(s: &str) -> Q {
@@ -63,12 +78,21 @@ fn q(s: &str) -> Q {
         .unwrap_or_default()
 }
 
-/// `x` rounded to a multiple of `10^-(DIGITS + 10)`, so the series below keep short numbers.
+/// `x` rounded to `TRIM_BITS` significant bits (about `DIGITS + 10` digits), so the series
+/// below keep short numbers. Relative, not to a fixed number of decimals: an angle of 1e-30 rad
+/// (a proton against a tonne) or 1e-51 (a 1e100 m string) keeps all its digits (it was
+/// rounded to a multiple of 1e-40 and printed as 6.07633050891e-29 or 0 degrees).
 fn trim(x: &Q) -> Q {
-    let scale = Q::from(crate::values::rational::pow10(DIGITS + 10));
-    let n = (x * &scale).round();
-    Q::from(n) / scale
+    let Some(bits) = crate::values::rational::log2(x) else {
+        return Q::ZERO;
+    };
+    let shift = TRIM_BITS - bits;
+    let n = (x * crate::values::rational::pow2(shift)).round();
+    Q::from(n) * crate::values::rational::pow2(-shift)
 }
+
+/// Significant bits `trim` keeps: 136, above `(DIGITS + 10) log2(10)`.
+const TRIM_BITS: isize = 136;
 
 /// `asin(s)` for `0 <= s <= 1`, as `atan(s / sqrt(1 - s^2))` with the argument halved
 /// (`atan t = 2 atan(t / (1 + sqrt(1 + t^2)))`) until it is below 1/8, then Taylor's series, to
@@ -115,6 +139,7 @@ mod tests {
             degrees,
             horizontal,
             slack,
+            ..
         } = swing(&q("0.1"), &q("5"))
         else {
             panic!("swings")
@@ -157,6 +182,11 @@ mod tests {
             assert_eq!((degrees, slack), (Ok(q(deg)), slack_expected), "h = {h}");
         }
         assert_eq!(swing(&q("2.01"), &q("1")), Swing::OverTheTop);
+        // Slack: L = 0.5, h = 0.8 (g = 10, f = 4): c = 2 (0.5 - 0.8) / 1.5 = -2/5, slack at
+        // 0.5 (7/5) = 0.7 m with u^2 = 10 0.5 2/5 = 2, then up 2 (21/25) / 20 = 0.084: 0.784 m.
+        assert_eq!(peak(&q("0.8"), &q("0.5")), q("0.784"));
+        // h = 2L on L = 1: c = -2/3, slack at 5/3 with u^2 = 2g/3, up (1/3)(5/9) = 5/27: 50/27.
+        assert_eq!(peak(&q("2"), &q("1")), q("50/27"));
         // A tiny swing, where 1 - h/L rounds to 1 in binary64: 1e-20 m on 1 m,
         // theta = 2 asin(sqrt(5e-21)) = 2 sqrt(5e-21) rad to 1e-40 relative.
         let Swing::Angle { degrees, .. } = swing(&q("1e-20"), &q("1")) else {

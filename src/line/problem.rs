@@ -232,18 +232,26 @@ impl Problem {
             if inertia.is_some() {
                 return Err(ProblemError::WallNeedsMasses);
             }
-            if let Some(flag) = self.knowns.first_flag() {
+            // An impulse is the ball's own law; the others need two movable bodies.
+            let beyond_impulse = Knowns {
+                impulse: None,
+                ..self.knowns.clone()
+            };
+            if let Some(flag) = beyond_impulse.first_flag() {
                 return Err(ProblemError::KnownWithWall(flag));
             }
             return self.solve_wall(wall, &m, &v, units);
         }
         let laws = self.laws(&units)?;
+        // Any known beyond masses and velocities (--released too, which no linear law carries)
+        // makes the final velocities unknowns: `--released E` alone is `--fin '?,?'`.
+        let knowns = self.knowns.first_flag().is_some();
         let e = match &self.restitution {
             Some(r) => r.clone().map(|r| r.number().clone()),
-            None if self.fin.is_some() || laws != Laws::default() => Given::Unknown,
+            None if self.fin.is_some() || knowns => Given::Unknown,
             None => Given::Known(Restitution::elastic().number().clone()),
         };
-        if !(self.fin.is_some() || self.has_unknowns() || laws != Laws::default()) {
+        if !(self.fin.is_some() || self.has_unknowns() || knowns) {
             let case = build(&m, &v, e, inertia, units)?;
             return Ok(Posed::Collision(case, None));
         }
@@ -267,7 +275,12 @@ impl Problem {
             .collect();
         let exact: [Option<Q>; 7] = std::array::from_fn(|i| known[i].known().map(Number::exact));
         if let Some(released) = &self.knowns.released {
-            let e = released.in_case(units.energy_si().as_ref())?;
+            let e = match (&released.unit_si, units.energy_scale()) {
+                // A plain number is in the unit energies are printed in (`--energy-unit kJ`),
+                // as the Units line says; the report's energies are that unit over `scale`.
+                (None, Some(scale)) => released.number.exact() / scale,
+                _ => released.in_units(units.energy_si().as_ref(), &units)?,
+            };
             return self.solve_released(&known, exact, (released, e), &laws, units);
         }
         let solved = crate::line::knowns::solve(exact, &laws)?;
@@ -293,7 +306,7 @@ impl Problem {
     /// The laws the knowns bring, in the case's units.
     fn laws(&self, units: &Units) -> Result<Laws, ProblemError> {
         let impulse = match &self.knowns.impulse {
-            Some(j) => Some(j.in_case(units.force_scale().as_ref())?),
+            Some(j) => Some(j.in_units(units.force_scale().as_ref(), units)?),
             None => None,
         };
         Ok(Laws {
@@ -405,15 +418,28 @@ impl Problem {
         let mass = m[ball].known().cloned().ok_or(ProblemError::WallBallMass)?;
         let mass = Mass::new(mass)?;
         let q = |x: Option<&Given<Number>>| x.and_then(Given::known).map(Number::exact);
+        // `--impulse J` is the impulse on body 2: on the ball it is J when the ball is body 2,
+        // -J when it is body 1 (the wall, body 2, takes J).
+        let impulse = match &self.knowns.impulse {
+            Some(j) => Some(j.in_units(units.force_scale().as_ref(), &units)?),
+            None => None,
+        };
+        let j_ball = impulse.map(|j| if ball == 1 { j } else { -j });
         let e = match &self.restitution {
             Some(r) => r.known().map(|r| r.number().exact()),
-            None if self.fin.is_some() => None,
+            None if self.fin.is_some() || j_ball.is_some() => None,
             None => Some(crate::values::rational::int(1)),
         };
         let given_fin = self.fin.is_some();
         let fin = |i: usize| if given_fin { q(v.get(2 + i)) } else { None };
+        let (ball_v, ball_f, impulse_check) = impulse_on_ball(
+            q(v.get(ball)),
+            fin(ball),
+            j_ball.as_ref(),
+            &mass.number().exact(),
+        );
         let problem = WallProblem {
-            ball: (q(v.get(ball)), fin(ball)),
+            ball: (ball_v, ball_f),
             wall: (q(v.get(wall)), fin(wall)),
             e: e.clone(),
             side: wall,
@@ -443,7 +469,7 @@ impl Problem {
             restitution,
             units,
         };
-        if !(given_fin || self.has_unknowns()) {
+        if !(given_fin || self.has_unknowns() || j_ball.is_some()) {
             return Ok(Posed::Wall(case, None));
         }
         // What was solved, in the two-body variables (the wall's mass means nothing).
@@ -463,10 +489,13 @@ impl Problem {
             _ => false,
         };
         let unknowns = Var::ALL.into_iter().filter(|x| was_unknown(*x)).collect();
-        let checks = s
+        let mut checks: Vec<(&'static str, Q)> = s
             .residual
             .map(|r| vec![("restitution", r)])
             .unwrap_or_default();
+        if let Some(r) = impulse_check {
+            checks.push((if ball == 0 { "impulse1" } else { "impulse2" }, r));
+        }
         let solved = Solved {
             values,
             unknowns,
@@ -476,6 +505,29 @@ impl Problem {
             pass_through: false,
         };
         Ok(Posed::Wall(case, Some(solved)))
+    }
+}
+
+/// The ball's law of an impulse `j` on it (`j = m (f - v)`): its unknown velocity from the
+/// other, or, with both given, the residual `m (f - v) - j` to check. No impulse, or neither
+/// velocity given: as they are.
+fn impulse_on_ball(
+    v: Option<Q>,
+    f: Option<Q>,
+    j: Option<&Q>,
+    m: &Q,
+) -> (Option<Q>, Option<Q>, Option<Q>) {
+    match (v, f, j) {
+        (Some(v), None, Some(j)) => {
+            let f = &v + j / m;
+            (Some(v), Some(f), None)
+        }
+        (None, Some(f), Some(j)) => (Some(&f - j / m), Some(f), None),
+        (Some(v), Some(f), Some(j)) => {
+            let r = m * (&f - &v) - j;
+            (Some(v), Some(f), Some(r))
+        }
+        (v, f, _) => (v, f, None),
     }
 }
 

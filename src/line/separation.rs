@@ -109,8 +109,8 @@ impl Separation {
 /// speed `|d| = sqrt(2 e / mu)`, `d = f1 - f2`, but not its sign. `f1 = v + (m2 / M) d`,
 /// `f2 = v - (m1 / M) d`; first body 1 on the left (`d < 0`), then on the right. Exact when
 /// `2 e / mu` is a rational square; otherwise `Err` with it when `exact`, else `d` is its
-/// correctly rounded binary64 root (of `2 e / mu` rounded once: within an ulp), and the
-/// velocities follow from that `d` exactly.
+/// root within an ulp (`rational::sqrt_binary64`, scaled: whatever the size of `2 e / mu`),
+/// and the velocities follow from that `d` exactly.
 pub fn split(m: [&Q; 2], v: &Q, e: &Q, exact: bool) -> Result<[[Q; 2]; 2], Q> {
     let total = m[0] + m[1];
     let mu = m[0] * m[1] / &total;
@@ -118,10 +118,7 @@ pub fn split(m: [&Q; 2], v: &Q, e: &Q, exact: bool) -> Result<[[Q; 2]; 2], Q> {
     let d = match crate::values::rational::sqrt_exact(&square) {
         Some(d) => d,
         None if exact => return Err(square),
-        None => {
-            let d = crate::values::rational::to_f64(&square).map_or(f64::MAX, f64::sqrt);
-            crate::values::rational::from_f64(d)
-        }
+        None => crate::values::rational::sqrt_binary64(&square),
     };
     let fin = |d: &Q| [v + m[1] / &total * d, v - m[0] / &total * d];
     Ok([fin(&-&d), fin(&d)])

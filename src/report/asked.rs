@@ -129,6 +129,10 @@ pub struct SwingReport<N> {
     /// `h > L`: a string goes slack before the bob gets there (a rod would).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub slack: bool,
+    /// With `slack`, the highest point the bob reaches on a string, in metres: the string goes
+    /// slack at `cos(theta) = 2 (L - h) / 3L` and the bob flies free (`line::pendulum::peak`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub peak: Option<N>,
 }
 
 /// `slides`: how far each body slides after the event, `f^2 / (2 mu g)`, in metres.
@@ -154,6 +158,25 @@ pub enum AskedError {
         height: String,
         two_l: String,
     },
+    #[error(
+        "--spring {spring}: the bodies move together (V1 = V2 = {v}), so they never touch and \
+         the spring is never compressed: there is no compression or time of contact (give \
+         velocities that differ, or drop --spring)"
+    )]
+    SpringNoContact { spring: String, v: String },
+    #[error(
+        "--spring {spring}: a spring between the bodies is ideal, it gives back all it stores \
+         (e = 1), but here e = {e}: the bodies {what}, so its compression and time of contact \
+         would describe another collision (drop -e, or give final velocities with e = 1, or \
+         drop --spring)"
+    )]
+    SpringNotElastic {
+        spring: String,
+        e: String,
+        what: &'static str,
+    },
+    #[error(transparent)]
+    Unrepresentable(#[from] super::Unrepresentable),
 }
 
 /// The event the asked sections describe, exact, in the case's units, seen from the lab.
@@ -164,29 +187,31 @@ pub struct Motion {
     pub crunch: Q,
     /// `mu = det M / M_total`.
     pub mu: Q,
+    /// The restitution of a collision (`None`: a separation or pass-through).
+    pub e: Option<Q>,
 }
 
-/// An exact value or an approximation to 30 digits (`line::spring::root`).
+/// An exact value or an approximation to 30 digits (`line::spring::root`), never 0 or a
+/// subnormal in binary64 for a value that is not 0 (`Scalar::unless_underflow`).
 fn either<N: Scalar>(x: Result<Q, Q>) -> N {
     match x {
-        Ok(q) => N::of_rational(&q),
-        Err(q) => N::of_approx(&q),
+        Ok(q) => N::of_rational(&q).unless_underflow(&q),
+        Err(q) => N::of_approx(&q).unless_underflow(&q),
     }
+}
+
+/// An exact value, never 0 or a subnormal in binary64 for a value that is not 0.
+fn nonzero<N: Scalar>(q: &Q) -> N {
+    N::of_rational(q).unless_underflow(q)
 }
 
 impl<N: Scalar> AskedReport<N> {
     /// The sections of `asked` for the event `m`.
     pub fn of(m: &Motion, asked: &Asked) -> Result<AskedReport<N>, AskedError> {
-        let mass = &asked.mass_si;
-        let v2 = &asked.velocity_si * &asked.velocity_si;
-        let spring = asked.spring.as_ref().map(|(k, _)| {
-            use crate::line::spring::{compression, contact_time};
-            SpringReport {
-                k: N::of_rational(k),
-                compression: either(compression(&(&m.crunch * mass * &v2), k)),
-                contact_time: N::of_approx(&contact_time(&(&m.mu * mass), k)),
-            }
-        });
+        let spring = match &asked.spring {
+            Some((k, typed)) => Some(Self::spring(m, asked, k, typed)?),
+            None => None,
+        };
         let pendulum = match &asked.length {
             Some((l, typed)) => Some(Self::pendulum(m, asked, l, typed)?),
             None => None,
@@ -194,7 +219,7 @@ impl<N: Scalar> AskedReport<N> {
         let slides = asked.friction.as_ref().map(|(mu, _)| {
             let d = |f: &Q| {
                 let f = f * &asked.velocity_si;
-                N::of_rational(&(&f * &f / (int(2) * mu * &asked.g)))
+                nonzero(&(&f * &f / (int(2) * mu * &asked.g)))
             };
             SlidesReport {
                 mu: N::of_rational(mu),
@@ -202,11 +227,54 @@ impl<N: Scalar> AskedReport<N> {
                 fin: [d(&m.fin[0]), d(&m.fin[1])],
             }
         });
-        Ok(AskedReport {
+        let report = AskedReport {
             spring,
             pendulum,
             slides,
             asked: Some(asked.clone()),
+        };
+        // Every number a real result, as the report's own (`heights.in[0]`): a slide beyond
+        // binary64 is refused by name, not printed as NaN.
+        let value = serde_json::to_value(&report).expect("a report serializes");
+        if let Some(quantity) = super::first_unrepresentable(&value) {
+            return Err(super::Unrepresentable::new(quantity).into());
+        }
+        Ok(report)
+    }
+
+    /// The spring between colliding bodies: refused when they never touch, or when the
+    /// collision is not elastic (an ideal spring gives back all it stores).
+    fn spring(
+        m: &Motion,
+        asked: &Asked,
+        k: &Q,
+        typed: &str,
+    ) -> Result<SpringReport<N>, AskedError> {
+        use crate::line::spring::{compression, contact_time};
+        if m.v_in[0] == m.v_in[1] {
+            return Err(AskedError::SpringNoContact {
+                spring: typed.to_string(),
+                v: significant(&m.v_in[0], 15),
+            });
+        }
+        if let Some(e) = m.e.as_ref().filter(|e| **e != Q::ONE) {
+            return Err(AskedError::SpringNotElastic {
+                spring: typed.to_string(),
+                e: significant(e, 15),
+                what: if e.is_zero() {
+                    "stick and never separate"
+                } else if e < &Q::ONE {
+                    "separate with energy lost"
+                } else {
+                    "separate with energy released"
+                },
+            });
+        }
+        let v2 = &asked.velocity_si * &asked.velocity_si;
+        Ok(SpringReport {
+            k: N::of_rational(k),
+            compression: either(compression(&(&m.crunch * &asked.mass_si * &v2), k)),
+            contact_time: N::of_approx(&contact_time(&(&m.mu * &asked.mass_si), k)),
         })
     }
 
@@ -240,12 +308,14 @@ impl<N: Scalar> AskedReport<N> {
                     degrees,
                     horizontal,
                     slack,
+                    peak,
                 } => swings.push(SwingReport {
                     body: i as u8 + 1,
-                    height: N::of_rational(&h),
+                    height: nonzero(&h),
                     angle_deg: either(degrees),
                     horizontal: either(horizontal),
                     slack,
+                    peak: peak.as_ref().map(nonzero),
                 }),
             }
         }
@@ -299,8 +369,20 @@ impl<N: Scalar> AskedReport<N> {
                 b.row(
                     format!("{who}h = f^2 / 2g"),
                     format!("{} m", s.height.show()),
-                    "how high the bob rises",
+                    if s.slack {
+                        "the height energy alone would give: the string goes slack first"
+                    } else {
+                        "how high the bob rises"
+                    },
                 );
+                if let Some(peak) = &s.peak {
+                    b.row(
+                        "peak, string slack",
+                        format!("{} m", peak.show()),
+                        "how high the bob rises: slack at cos(theta) = 2 (L - h) / 3L, it \
+                         flies free to this height",
+                    );
+                }
                 b.row(
                     "theta = acos(1 - h / L)",
                     format!("{} deg", s.angle_deg.show()),
@@ -314,7 +396,11 @@ impl<N: Scalar> AskedReport<N> {
                 b.row(
                     "x = L sin(theta)",
                     format!("{} m", s.horizontal.show()),
-                    "= sqrt(h (2L - h)), how far the bob moves sideways",
+                    if s.slack {
+                        "= sqrt(h (2L - h)), how far a rod's bob would move sideways"
+                    } else {
+                        "= sqrt(h (2L - h)), how far the bob moves sideways"
+                    },
                 );
             }
             out.push(b);

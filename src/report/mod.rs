@@ -242,6 +242,23 @@ pub struct Heights<N = f64> {
     pub fin: [N; 2],
 }
 
+impl<N: Scalar> Heights<N> {
+    /// The heights of the speeds of `x` (the lab's: a height is a physical rise), each exact
+    /// and rounded once, never 0 for a speed that is not (`Scalar::unless_underflow`).
+    pub fn of(x: &ExactCollision, h: &crate::values::units::HeightScale) -> Heights<N> {
+        let f = x.v_fin_q();
+        let one = |v: &Q| {
+            let h = h.height(v);
+            N::of_rational(&h).unless_underflow(&h)
+        };
+        Heights {
+            g: N::of_rational(&h.g),
+            at_in: [one(&x.v[0]), one(&x.v[1])],
+            fin: [one(&f[0]), one(&f[1])],
+        }
+    }
+}
+
 /// A solve's own error beside its own run time (`--show diagnostics`).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct Diagnostics {
@@ -412,6 +429,16 @@ impl<N: Scalar> Report<N> {
     ) -> Result<Report<N>, ReportError> {
         let (w, seen) = lab.seen_from(frame);
         let mut r = Report::build(&seen, sections)?;
+        // Heights belong to the lab, whatever frame the vectors are seen from: how high a body
+        // rises is a physical rise (in a moving frame a body that sticks would "rise" 0).
+        if let (Some(h), true, true) = (
+            sections.heights.as_ref(),
+            r.heights.is_some(),
+            *frame != Frame::Lab,
+        ) {
+            r.heights = Some(Heights::of(&lab.seen_from(&Frame::Lab).1.exact(), h));
+            r.check_representable()?;
+        }
         if !sections.asked.is_empty() {
             // Heights and swings belong to the lab; a spring's numbers are the same anywhere.
             let x = lab.seen_from(&Frame::Lab).1.exact();
@@ -419,6 +446,7 @@ impl<N: Scalar> Report<N> {
                 fin: x.v_fin_q(),
                 crunch: x.crunch_q(),
                 mu: (&x.a * &x.b - &x.c * &x.c) / (&x.a + &x.b + Q::from(2) * &x.c),
+                e: Some(x.e.clone()),
                 v_in: x.v,
             };
             r.asked = asked::AskedReport::of(&motion, &sections.asked)?;
@@ -529,16 +557,7 @@ impl<N: Scalar> Report<N> {
                 .heights
                 .as_ref()
                 .filter(|_| has(Section::Heights))
-                .map(|h| {
-                    let x = c.exact();
-                    let f = x.v_fin_q();
-                    let one = |v: &Q| N::of_rational(&h.height(v));
-                    Heights {
-                        g: N::of_rational(&h.g),
-                        at_in: [one(&x.v[0]), one(&x.v[1])],
-                        fin: [one(&f[0]), one(&f[1])],
-                    }
-                }),
+                .map(|h| Heights::of(&c.exact(), h)),
             asked: asked::AskedReport::default(),
             diagnostics: has(Section::Diagnostics).then(|| {
                 let (momentum_residual, energy_residual) = c.residuals();
@@ -639,12 +658,21 @@ impl AnyReport {
             let lab = ExactCollision::from_case(case);
             AnyReport::Exact(Box::new(Report::of(&lab, frame, sections, reverse)?))
         } else {
-            AnyReport::Binary64(Box::new(Report::of(
-                &case.collision,
-                frame,
-                sections,
-                reverse,
-            )?))
+            let mut r = Report::of(&case.collision, frame, sections, reverse)?;
+            // Whether the bodies approach, and which is behind, from the values as typed (or
+            // carried exactly from an earlier stage), as a chain of stages decides it: two
+            // velocities that differ may round to one binary64 (0.6666666666666666 and the
+            // binary64 of 2/3), and "V1 = V2: the bodies never meet" would then be false. The
+            // order is the same in every frame (both velocities shift by w).
+            let order = crate::line::order::Order::before(
+                &case.velocities[0].exact(),
+                &case.velocities[1].exact(),
+            );
+            if let Some(v) = r.vectors.as_mut() {
+                v.approaching = order.meet();
+                v.left = order.left_when_body_2();
+            }
+            AnyReport::Binary64(Box::new(r))
         })
     }
 

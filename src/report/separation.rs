@@ -86,6 +86,7 @@ impl<N: Scalar> SeparationReport<N> {
                 fin: s.fin.clone(),
                 crunch: Q::ZERO,
                 mu: s.reduced_mass(),
+                e: None,
             };
             AskedReport::of(&motion, &sections.asked)?
         };
@@ -190,10 +191,17 @@ impl<N: Scalar> SeparationReport<N> {
                 b.row(
                     "lost = 1/2 mu ((V1 - V2)^2 - (f1 - f2)^2)",
                     lost.show(),
-                    format!(
-                        "mu = M1 M2 / (M1 + M2) = {mu}: turned into heat and deformation in the \
-                         two bodies (a perforation: no restitution)"
-                    ),
+                    if lost.magnitude() == 0.0 {
+                        format!(
+                            "mu = M1 M2 / (M1 + M2) = {mu}: nothing lost, the relative speed is \
+                             unchanged (a perforation: no restitution)"
+                        )
+                    } else {
+                        format!(
+                            "mu = M1 M2 / (M1 + M2) = {mu}: turned into heat and deformation in \
+                             the two bodies (a perforation: no restitution)"
+                        )
+                    },
                 );
             }
             if let Some(released) = &e.released {

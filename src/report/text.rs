@@ -25,8 +25,10 @@ pub fn header(case: &Case) -> String {
 /// 3/7` in the header), not as `≈` digits.
 pub fn header_in(case: &Case, exact: bool) -> String {
     let e = case.restitution();
+    // Typed (or solved) text as it is; a binary64-born value (the default e = 1) as a header
+    // shows it, not as its Debug digits ("1.0").
     let shown = |n: &crate::values::number::Number| match n.text() {
-        t if exact && t.len() <= 40 => t.into_owned(),
+        std::borrow::Cow::Borrowed(t) if exact && t.len() <= 40 => t.to_string(),
         _ => typed(n),
     };
     let e_text = shown(e.number());
@@ -70,11 +72,12 @@ pub fn answer<N: Scalar>(case: &Case, report: &Report<N>) -> Option<String> {
         v.fin[0].snap(own.fin[0]).show(),
         v.fin[1].snap(own.fin[1]).show(),
     ];
-    Some(if case.restitution().is_totally_inelastic() {
-        format!("FIN: v1' = v2' = {f1} {unit} (the bodies stick)\n")
+    // Wrapped to the terminal like every line of text (COLUMNS=40 too).
+    Some(paragraph(&if case.restitution().is_totally_inelastic() {
+        format!("FIN: v1' = v2' = {f1} {unit} (the bodies stick)")
     } else {
-        format!("FIN: v1' = {f1} {unit}, v2' = {f2} {unit}\n")
-    })
+        format!("FIN: v1' = {f1} {unit}, v2' = {f2} {unit}")
+    }))
 }
 
 /// Renders the report of `case` as text.
@@ -110,8 +113,14 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         changes(c, &case.units).render(&mut out);
     }
     if let Some(h) = &report.heights {
+        // Always of the lab's speeds (`Report::of`), which a moving frame's vectors are not.
+        let lab = if report.frame.is_some() {
+            "; the lab's speeds"
+        } else {
+            ""
+        };
         let mut b = Block::new(format!(
-            "Heights (v^2 / 2g with g = {} m/s^2, in m)",
+            "Heights (v^2 / 2g with g = {} m/s^2, in m{lab})",
             h.g.show()
         ));
         b.row(
@@ -447,10 +456,11 @@ pub fn changes<N: Scalar>(c: &ChangeReport<N>, units: &crate::values::units::Uni
         b.row(
             "transferred",
             t.show(),
-            format!(
-                "{}: KE_FIN of the body at rest / KE_IN of the other",
-                percent(t)
-            ),
+            match percent(t) {
+                // Exact mode prints the fraction alone (8/9): no percentage, no orphan ':'.
+                p if p.is_empty() => "KE_FIN of the body at rest / KE_IN of the other".into(),
+                p => format!("{p}: KE_FIN of the body at rest / KE_IN of the other"),
+            },
         );
     }
     if let Some(f) = &c.average_force {
@@ -507,16 +517,17 @@ fn products<N: Scalar>(p: &Products<N>) -> Block {
     let mut b = Block::new("Products");
     b.row("V_FIN . V_IN", p.dot_fin_in.show(), "plain dot product");
     let o = &p.outer_in_fin;
-    b.row(
-        "V_IN (x) V_FIN",
-        format!(
-            "[[{}, {}], [{}, {}]]",
-            o[0][0].show(),
-            o[0][1].show(),
-            o[1][0].show(),
-            o[1][1].show()
-        ),
-        "outer product",
-    );
+    let rows = [
+        format!("[{}, {}]", o[0][0].show(), o[0][1].show()),
+        format!("[{}, {}]", o[1][0].show(), o[1][1].show()),
+    ];
+    let whole = format!("[{}, {}]", rows[0], rows[1]);
+    // The label and a matrix of long numbers pass 80 columns on one line: a row a line then.
+    if "  V_IN (x) V_FIN  ".len() + whole.chars().count() <= crate::values::terminal::width() {
+        b.row("V_IN (x) V_FIN", whole, "outer product");
+    } else {
+        b.row("V_IN (x) V_FIN", format!("[{},", rows[0]), "outer product");
+        b.row("", format!(" {}]", rows[1]), "");
+    }
     b
 }

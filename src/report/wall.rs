@@ -123,9 +123,15 @@ impl<N: Scalar> WallReport<N> {
                 .heights
                 .as_ref()
                 .filter(|_| has(Section::Heights))
-                .map(|h| BallPair {
-                    at_in: one(&h.height(&v[b])),
-                    fin: one(&h.height(&f[b])),
+                .map(|h| {
+                    let height = |v: &Q| {
+                        let h = h.height(v);
+                        one(&h).unless_underflow(&h)
+                    };
+                    BallPair {
+                        at_in: height(&v[b]),
+                        fin: height(&f[b]),
+                    }
                 }),
         }
     }

@@ -78,11 +78,16 @@ pub enum DerivedError {
         expected: &'static str,
     },
     #[error(
-        "{flag} '{}' has a unit, but the masses and velocities do not: give them units too, \
-         or type {flag} as a plain number in the case's units",
+        "{flag} '{}' has a unit, but {missing} do not: give them units too, or type {flag} as \
+         a plain number in the case's units",
         printable(.text)
     )]
-    NoCaseUnits { flag: &'static str, text: String },
+    NoCaseUnits {
+        flag: &'static str,
+        text: String,
+        /// Which of the case's values have no unit ("the masses and velocities").
+        missing: &'static str,
+    },
     #[error("{flag} '{}' must be above 0", printable(.text))]
     NotPositive { flag: &'static str, text: String },
 }
@@ -183,8 +188,30 @@ impl Derived {
             (Some(_), None) => Err(DerivedError::NoCaseUnits {
                 flag: self.kind.flag(),
                 text: self.text.clone(),
+                missing: "the masses and velocities",
             }),
         }
+    }
+
+    /// As [`Derived::in_case`], for a case in `units`: an error names which of the masses and
+    /// velocities have no unit (a `?` has none).
+    pub fn in_units(
+        &self,
+        case_si: Option<&Q>,
+        units: &crate::values::units::Units,
+    ) -> Result<Q, DerivedError> {
+        self.in_case(case_si).map_err(|e| match e {
+            DerivedError::NoCaseUnits { flag, text, .. } => DerivedError::NoCaseUnits {
+                flag,
+                text,
+                missing: match (units.mass, units.velocity) {
+                    (Some(_), None) => "the velocities",
+                    (None, Some(_)) => "the masses (a '?' has none)",
+                    _ => "the masses and velocities",
+                },
+            },
+            e => e,
+        })
     }
 }
 

@@ -13,8 +13,9 @@ impl Quantity {
     /// A height as the speed of a fall from rest through it (or needed to rise it),
     /// `sqrt(2 g h)` in m/s with the height's sign, and whether that speed is exact: when `2 g h`
     /// is the square of a rational (g = 10, h = 0.2 m: 2 m/s) the speed is that rational;
-    /// otherwise it is irrational, and `2 g h` is computed exactly, rounded once, then given a
-    /// correctly rounded square root (within an ulp of the exact speed). Other quantities are
+    /// otherwise it is irrational, and `2 g h` is computed exactly and given a binary64 root
+    /// scaled by an even power of two (`rational::sqrt_binary64`: within an ulp of the exact
+    /// speed, whatever the size of `2 g h`). Other quantities are
     /// returned as they are (exact).
     pub fn with_gravity(&self, g: &Q) -> Result<(Quantity, bool), NumberError> {
         if !self.height {
@@ -33,15 +34,19 @@ impl Quantity {
             };
             return Ok((quantity, true));
         }
-        let speed = crate::values::quantity::to_f64(&two_gh)
-            .map(f64::sqrt)
-            .ok_or_else(|| {
-                NumberError::Overflow(format!(
-                    "sqrt(2 g h) for h = {} m, g = {} m/s^2",
-                    crate::values::quantity::significant(&num_traits::Signed::abs(&h), 15),
-                    crate::values::quantity::significant(g, 15)
-                ))
-            })?;
+        let what = || {
+            format!(
+                "sqrt(2 g h) for h = {} m, g = {} m/s^2",
+                crate::values::quantity::significant(&num_traits::Signed::abs(&h), 15),
+                crate::values::quantity::significant(g, 15)
+            )
+        };
+        let speed =
+            crate::values::quantity::to_f64(&crate::values::rational::sqrt_binary64(&two_gh))
+                .ok_or_else(|| NumberError::Overflow(what()))?;
+        if speed == 0.0 {
+            return Err(NumberError::Underflow(what()));
+        }
         let speed = if negative { -speed } else { speed };
         let quantity = Quantity {
             number: Number::from_f64(speed)?,
@@ -133,8 +138,16 @@ pub(crate) fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
             return Err(QuantityError::NegativeHeight(t.to_string()));
         }
         let text = format!("{sign}{}", crate::values::quantity::fraction(&metres));
+        // A height out of range is named as typed and in metres, not by its hundreds of digits.
+        let number = text.parse().map_err(|e| match e {
+            NumberError::Overflow(_) | NumberError::Underflow(_) => QuantityError::HeightRange {
+                typed: t.to_string(),
+                metres: crate::values::quantity::significant(&metres, 6),
+            },
+            other => other.into(),
+        })?;
         Ok(Quantity {
-            number: text.parse()?,
+            number,
             unit: None,
             height: true,
         })

@@ -493,7 +493,17 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
 /// terminal's width ([`crate::values::terminal::width`]; a wrapped line goes on indented by two spaces);
 /// a closed or full stderr is ignored, never a panic (`eprintln!` panics there).
 pub fn diagnostic(line: std::fmt::Arguments) {
-    let line = line.to_string();
+    // Control characters a message echoes from the input (a body's name, a key in a scene) are
+    // escaped (`\u{1b}`), never sent raw to the terminal; line breaks stay.
+    let line: String = line
+        .to_string()
+        .chars()
+        .map(|c| match c {
+            '\n' => c.to_string(),
+            c if c.is_control() => c.escape_default().to_string(),
+            c => c.to_string(),
+        })
+        .collect();
     let text = crate::values::terminal::wrap(&cut(&line), crate::values::terminal::width(), "  ");
     let _ = io::stderr().lock().write_all(text.as_bytes());
 }

@@ -35,6 +35,13 @@ pub trait Scalar: Clone + Debug + PartialEq + Serialize + Default {
     fn of_approx(q: &Q) -> Self {
         Self::of_rational(q)
     }
+    /// `self`, the value of the exact `q`; for a binary64, NaN (reported by name) when `q` is not
+    /// 0 but `self` came out below the normal range: it underflowed, and printing 0 or a
+    /// subnormal for a height, a distance or an angle would be wrong (energies are refused the
+    /// same way).
+    fn unless_underflow(self, _q: &Q) -> Self {
+        self
+    }
     /// `|x|`, as a binary64 (for choosing a scale).
     fn magnitude(&self) -> f64;
     /// `x q`: for a binary64, the exact product rounded once (a change of unit).
@@ -69,6 +76,13 @@ impl Scalar for f64 {
     }
     fn of_rational(q: &Q) -> f64 {
         to_f64(q).unwrap_or(f64::NAN)
+    }
+    fn unless_underflow(self, q: &Q) -> f64 {
+        if !q.is_zero() && self.abs() < f64::MIN_POSITIVE {
+            f64::NAN
+        } else {
+            self
+        }
     }
     fn magnitude(&self) -> f64 {
         self.abs()

@@ -68,6 +68,39 @@ pub fn scaled(v: &[Q]) -> Vec<Q> {
     v.iter().map(|x| x * &scale).collect()
 }
 
+/// `2^k`, exactly (`k` of either sign).
+pub fn pow2(k: isize) -> Q {
+    if k >= 0 {
+        Q::from(IBig::ONE << k as usize)
+    } else {
+        Q::from_parts(IBig::ONE, UBig::ONE << (-k) as usize)
+    }
+}
+
+/// `log2 |q|` to within one (bits of the numerator less bits of the denominator); `None` for 0.
+pub fn log2(q: &Q) -> Option<isize> {
+    use dashu_int::ops::{BitTest, UnsignedAbs};
+    (q.numerator() != &IBig::ZERO).then(|| {
+        q.numerator().unsigned_abs().bit_len() as isize - q.denominator().bit_len() as isize
+    })
+}
+
+/// `sqrt(q)` for `q >= 0` of any size, within an ulp: `q` is scaled exactly by an even power of
+/// two, `4^-k`, to about 1, rounded once to binary64, given its correctly rounded root, and
+/// scaled back by `2^k` (exactly). The root of `q` rounded to binary64 first is wrong once `q`
+/// leaves binary64's range though its root fits (`2 E / mu = 6e310`: 2^1023 instead of
+/// 2.4e155; 4e-600: 0 instead of 2e-300). The result is a binary64 times a power of two: not
+/// itself in binary64's range when the root is not. Negative `q`: 0.
+pub fn sqrt_binary64(q: &Q) -> Q {
+    let Some(bits) = log2(q).filter(|_| q > &Q::ZERO) else {
+        return Q::ZERO;
+    };
+    let k = bits.div_euclid(2);
+    let scaled = q * pow2(-2 * k);
+    let root = to_f64(&scaled).map_or(0.0, f64::sqrt);
+    from_f64(root) * pow2(k)
+}
+
 /// `sqrt(q)` when it is rational (`q >= 0` in lowest terms with a square numerator and
 /// denominator), else `None`.
 pub fn sqrt_exact(q: &Q) -> Option<Q> {

@@ -341,6 +341,12 @@ pub enum QuantityError {
         printable(.0)
     )]
     Slide(String),
+    #[error(
+        "'{}': the height is {metres} m (mu d for a slide), beyond binary64 (it must be below \
+         1.8e308 m and above 4.9e-324 m)",
+        printable(.typed)
+    )]
+    HeightRange { typed: String, metres: String },
 }
 
 /// Splits `4 t`, `60mph`, `12 N s` or `1e3` into its number and the rest (a unit name, trimmed;

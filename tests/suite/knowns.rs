@@ -348,9 +348,11 @@ mod impulse {
             &["-m", "3,2", "-v", "6,0", "--impulse", "-12"],
             &["e = -8/3 < 0", "--pass-through"],
         );
+        // Against a wall the impulse is the ball's own law (review #11): -2 = 2 (f + 6) sends it
+        // on at f = -7, through the wall: e = -(-7) / (-6) = -7/6.
         refused(
-            &["-m", "wall,2", "-v", "0,-6", "--impulse", "12"],
-            &["--impulse", "wall"],
+            &["-m", "wall,2", "-v", "0,-6", "--impulse", "-2"],
+            &["e = -7/6 < 0", "pass through the wall"],
         );
         refused(
             &["--inertia", "3,0;0,2", "-v", "6,0", "--impulse", "12"],

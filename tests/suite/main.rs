@@ -10,6 +10,7 @@ mod contact;
 mod exact_and_accuracy;
 mod frames;
 mod homework;
+mod homework_review;
 mod hostile;
 mod invariants;
 mod knowns;
