@@ -3,7 +3,7 @@
 //! tangencies, values beyond binary64, negative restitutions and typed forms that were
 //! refused. Each expected value is derived in its comment, independently of the program.
 
-use crate::common::{run, stdout};
+use crate::common::{assert_ulps, run, stdout};
 use crate::plane::{f, json, vecs};
 
 /// `collide sweep` or `batch` CSV output as rows of cells.
@@ -12,10 +12,6 @@ fn csv_rows(out: &str) -> Vec<Vec<String>> {
         .skip(1)
         .map(|l| l.split(',').map(String::from).collect())
         .collect()
-}
-
-fn within_ulps(a: f64, b: f64, n: f64) -> bool {
-    (a - b).abs() <= n * f64::EPSILON * a.abs().max(b.abs())
 }
 
 #[test]
@@ -92,7 +88,7 @@ fn disks_of_any_size_give_the_same_line_of_impact() {
         "1",
     ]);
     let fin = vecs(&base["fin"]);
-    assert!(within_ulps(fin[1][1], 3f64.sqrt() / 4.0, 2.0), "{fin:?}");
+    assert_ulps(fin[1][1], 3f64.sqrt() / 4.0, 2.0, "v2'y");
     for r in ["1e154", "1e200", "1e308", "1e-160", "1e-200", "1e-320"] {
         let radii = format!("{r},{r}");
         let j = json(&[
@@ -123,10 +119,8 @@ fn disks_of_any_size_give_the_same_line_of_impact() {
         ]);
         let row = &csv_rows(&out)[0];
         let got: Vec<f64> = row.iter().map(|x| x.parse().unwrap()).collect();
-        assert!(
-            within_ulps(got[0], 0.75, 2.0) && within_ulps(got[1], fin[1][1], 2.0),
-            "{r}: {row:?}"
-        );
+        assert_ulps(got[0], 0.75, 2.0, &format!("{r}: fin2x"));
+        assert_ulps(got[1], fin[1][1], 2.0, &format!("{r}: fin2y"));
     }
     // A disk of 1e300 beside one of 1: b = 1e299 is sin(phi) = 1/10 (5.7392 degrees).
     let j = json(&[
@@ -199,13 +193,18 @@ fn sweep_energies_and_impulses_keep_their_digits() {
         a.extend(cols);
         let row = &csv_rows(&stdout(&a))[0];
         let got: Vec<f64> = row.iter().map(|x| x.parse().unwrap()).collect();
-        assert!(within_ulps(got[0], crunch, 2.0), "{m}: {row:?}");
-        assert!(within_ulps(got[1], lost, 4.0), "{m}: {row:?}");
+        assert_ulps(got[0], crunch, 2.0, &format!("{m}: crunch"));
+        assert_ulps(got[1], lost, 4.0, &format!("{m}: lost"));
         // The impulse on body 2: (1 + e) mu (n.d) = 1.5 mu.
-        assert!(within_ulps(got[2], 1.5 * 2.0 * crunch, 4.0), "{m}: {row:?}");
+        assert_ulps(got[2], 1.5 * 2.0 * crunch, 4.0, &format!("{m}: impulse"));
         // As collide solve prints them (correctly rounded), to a few ulps.
         let j = json(&["-m", m, "-v", "(1,0),0", "--normal", "(1,0)", "-e", "0.5"]);
-        assert!(within_ulps(got[0], f(&j["energy"]["crunch"]), 2.0));
+        assert_ulps(
+            got[0],
+            f(&j["energy"]["crunch"]),
+            2.0,
+            &format!("{m}: crunch vs solve"),
+        );
     }
     // n = (1e-20, 1), v1 = (0, 1), v2 = (3, 0), equal masses, elastic: n.d = -3e-20 + 1, so the
     // impulse on body 2 is (n.d / n.n) n = (1 - 3e-20)/(1 + 1e-40) (1e-20, 1), whose x part

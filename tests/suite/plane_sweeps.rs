@@ -7,10 +7,8 @@ use serde_json::Value;
 use crate::common::{collide, run, stdout};
 use crate::plane::{f, json, vecs};
 
-/// `collide sweep` in the plane: a CSV table as rows of named numbers (empty cells: NaN).
-fn plane_table(args: &[&str]) -> Vec<std::collections::HashMap<String, f64>> {
-    let mut a = vec!["sweep"];
-    a.extend_from_slice(args);
+/// A CSV table printed by `collide ARGS`, as rows of named numbers (empty cells: NaN).
+fn named_rows(a: &[&str]) -> Vec<std::collections::HashMap<String, f64>> {
     let out = stdout(&a);
     let mut r = csv::Reader::from_reader(out.as_bytes());
     let names: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
@@ -24,6 +22,13 @@ fn plane_table(args: &[&str]) -> Vec<std::collections::HashMap<String, f64>> {
                 .collect()
         })
         .collect()
+}
+
+/// `collide sweep` in the plane: a CSV table as rows of named numbers.
+fn plane_table(args: &[&str]) -> Vec<std::collections::HashMap<String, f64>> {
+    let mut a = vec!["sweep"];
+    a.extend_from_slice(args);
+    named_rows(&a)
 }
 
 #[test]
@@ -312,19 +317,7 @@ fn batch_table(csv: &str, args: &[&str]) -> Vec<std::collections::HashMap<String
     std::fs::write(&path, csv).unwrap();
     let mut a = vec!["batch", path.to_str().unwrap()];
     a.extend_from_slice(args);
-    let out = stdout(&a);
-    let mut r = csv::Reader::from_reader(out.as_bytes());
-    let names: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    r.records()
-        .map(|rec| {
-            let rec = rec.unwrap();
-            names
-                .iter()
-                .zip(rec.iter())
-                .map(|(n, v)| (n.clone(), v.parse().unwrap_or(f64::NAN)))
-                .collect()
-        })
-        .collect()
+    named_rows(&a)
 }
 
 #[test]
