@@ -9,7 +9,7 @@ use crate::plane::{f, json, vecs};
 
 /// A CSV table printed by `collide ARGS`, as rows of named numbers (empty cells: NaN).
 fn named_rows(a: &[&str]) -> Vec<std::collections::HashMap<String, f64>> {
-    let out = stdout(&a);
+    let out = stdout(a);
     let mut r = csv::Reader::from_reader(out.as_bytes());
     let names: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
     r.records()
