@@ -384,6 +384,21 @@ fn an_impulse_against_a_wall_is_the_balls_own_law() {
         (0, &json!({"f2": "1", "e": "1/3"})),
         "{j}"
     );
+    // The same bounce in grams and cm/s, the impulse in kg m/s: f = -1 m/s = -100 cm/s exactly,
+    // e = 1/3 (units change the printed velocity by the exact factor 100, never e).
+    let (code, j) = solve_json(&[
+        "-m",
+        "2000 g,wall",
+        "-v",
+        "300 cm/s,0",
+        "--impulse",
+        "8 kg m/s",
+        "--exact",
+        "--show",
+        "vectors",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(j["solved"], json!({"f1": "-100", "e": "1/3"}));
     // Given FIN too, the impulse is checked: f = -1 needs 8 N s; 6 N s misses by
     // 2 (-1 - 3) + 6 = -2 (the ball's impulse, -8, less the typed -6): exit 1.
     let (code, j) = solve_json(&[
