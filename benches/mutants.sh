@@ -1,24 +1,28 @@
 #!/usr/bin/env bash
 # Mutation testing (issue 31): cargo-mutants injects small bugs (a `<` for a `<=`, a `+` for a
 # `-`, a function that returns a default) into the physics the suite is meant to guard, and
-# reports every mutant that no test catches. Too slow for CI (about a thousand mutants, each a
-# rebuild and a test run); run it by hand after changing these files or their tests.
+# reports every mutant that no test catches. Too slow for CI (about 1,250 mutants, 988 of them in
+# contact/, each a rebuild and a test run); run it by hand after changing these files or their
+# tests.
 #
 #   cargo install cargo-mutants --locked     # once (27.x)
 #   benches/mutants.sh                       # every area below, one after the other
 #   benches/mutants.sh motion columns        # some of them
 #   MUTANTS_SHARD=3/8 benches/mutants.sh contact   # one eighth of an area (to pause between)
+#   MUTANTS_SHARD=0/12 MUTANTS_SHARDING=round-robin benches/mutants.sh contact
+#                                            # every twelfth mutant: a sample of the whole area
 #   MUTANTS_ITERATE=1 benches/mutants.sh motion    # only what the last run did not catch
 #
-# Each area mutates its files and runs only the tests that guard them (the lib's unit tests and
-# the suite's modules, selected by name), so a mutant costs its rebuild and seconds of tests. The
-# dev profile (opt-level 1) with incremental builds: a mutant rebuilds the lib and the suite in
-# about 45 s on 2 loaded cores, where the release profile took 150 s (measured; the filtered
-# tests run in about a second either way). MUTANTS_PROFILE=release to mutate what ships. One job at a time:
-# the CI machine has 2 cores. The mutants are made in a copy of this tree, target included, kept
-# between runs in $COLLIDE_MUTANTS_TREE (default /tmp/collide-mutants) and refreshed with
-# `cp -a` (mtimes kept, so only what changed rebuilds; cargo-mutants' own copy rebuilds every
-# dependency). Results: target/mutants/<area>/mutants.out/ (missed.txt, caught.txt, timeout.txt,
+# Each area mutates its files and builds and runs only the tests that guard them (the lib's unit
+# tests and the suite's modules, selected by name; `--cargo-arg`, so that the build step does not
+# compile the examples too), so a mutant costs its rebuild and seconds of tests. The
+# `mutation` profile (dev's opt-level 1 without debug info) with incremental builds: a contact
+# mutant rebuilds the lib, its unit tests and the suite in about 7 s on 2 idle cores (9.7 s with
+# debug info, 45 s on loaded cores, 150 s in release; measured), and its tests take 5.5 s.
+# MUTANTS_PROFILE=release to mutate what ships. One job at a time: the CI machine has 2 cores.
+# The mutants are made in a copy of this tree, target included, kept between runs in
+# $COLLIDE_MUTANTS_TREE (default /tmp/collide-mutants) and refreshed with `cp -a` (mtimes kept,
+# so only what changed rebuilds; cargo-mutants' own copy rebuilds every dependency). Results: target/mutants/<area>/mutants.out/ (missed.txt, caught.txt, timeout.txt,
 # unviable.txt, outcomes.json).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -57,12 +61,12 @@ for area in "${areas[@]}"; do
     out="$here/target/mutants/$area${MUTANTS_SHARD:+-${MUTANTS_SHARD%/*}}"
     mkdir -p "$out"
     extra=()
-    [ -n "${MUTANTS_SHARD:-}" ] && extra+=(--shard "$MUTANTS_SHARD")
+    [ -n "${MUTANTS_SHARD:-}" ] && extra+=(--shard "$MUTANTS_SHARD" --sharding "${MUTANTS_SHARDING:-slice}")
     [ -n "${MUTANTS_ITERATE:-}" ] && extra+=(--iterate)
     # shellcheck disable=SC2086
-    cargo mutants --in-place --no-shuffle --profile "${MUTANTS_PROFILE:-dev}" "${extra[@]}" \
+    cargo mutants --in-place --no-shuffle --profile "${MUTANTS_PROFILE:-mutation}" "${extra[@]}" \
         --file "${FILES[$area]}" --output "$out" --timeout 20 \
-        --cargo-test-arg=--lib --cargo-test-arg=--test --cargo-test-arg=suite \
+        --cargo-arg=--lib --cargo-arg=--test --cargo-arg=suite \
         -- -- ${TESTS[$area]} || status=$?
     # cargo-mutants exits 2 when a mutant was missed and 3 on timeouts: results, not failures.
     case ${status:-0} in

@@ -122,34 +122,66 @@ pub const CHUNK_ROWS: usize = 8192;
 
 /// Solves chunks in parallel, a batch at a time, and writes them in order; reports skipped rows
 /// on stderr as it goes; stops at the first bad row (after writing every row before it).
+///
+/// The writing overlaps the solving: while this thread writes a batch (the kernel's copy into
+/// the page cache, a third of a planar sweep's time to a file), the pool solves the next one.
+/// Two batches are in memory at most.
 pub fn write_chunks<C: Send>(
     chunks: impl Iterator<Item = C>,
     solve: impl Fn(C) -> ChunkOut + Sync + Send,
     out: &mut Sink,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
+    let solve = &solve;
+    let solved = |batch: Vec<C>| -> Vec<ChunkOut> { batch.into_par_iter().map(solve).collect() };
     let mut summary = Summary::default();
-    for batch in batched(chunks) {
-        let done: Vec<ChunkOut> = batch.into_par_iter().map(&solve).collect();
-        for c in done {
-            // A chunk with no rows is no row group.
-            if c.rows > 0 || !matches!(c.body, Ok(Sealed::Group(_))) {
-                out.put(c.body?)?;
-            }
-            summary.rows += c.rows;
-            progress.advance(c.rows + c.skipped.len() as u64);
-            for s in &c.skipped {
-                crate::values::output::diagnostic(format_args!("skipped {s}"));
-            }
-            summary.skipped += c.skipped.len() as u64;
-            if let Some(stop) = c.stop {
+    let mut batches = batched(chunks);
+    let mut next = batches.next().map(solved);
+    while let Some(done) = next.take() {
+        let following = batches.next();
+        let written = std::thread::scope(|s| {
+            let worker = following.map(|b| s.spawn(move || solved(b)));
+            let written = put_batch(done, out, progress, &mut summary);
+            next = worker.map(|w| w.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
+            written
+        });
+        match written {
+            Ok(()) => {}
+            // A bad row stops the run with every row before it written.
+            Err(RowsError::Row(stop)) => {
                 out.flush()?;
                 return Err(stop.into());
             }
+            Err(e) => return Err(e),
         }
     }
     out.flush()?;
     Ok(summary)
+}
+
+/// Writes a solved batch in order, counting its rows; the first chunk that stopped ends it.
+fn put_batch(
+    done: Vec<ChunkOut>,
+    out: &mut Sink,
+    progress: &mut Progress,
+    summary: &mut Summary,
+) -> Result<(), RowsError> {
+    for c in done {
+        // A chunk with no rows is no row group.
+        if c.rows > 0 || !matches!(c.body, Ok(Sealed::Group(_))) {
+            out.put(c.body?)?;
+        }
+        summary.rows += c.rows;
+        progress.advance(c.rows + c.skipped.len() as u64);
+        for s in &c.skipped {
+            crate::values::output::diagnostic(format_args!("skipped {s}"));
+        }
+        summary.skipped += c.skipped.len() as u64;
+        if let Some(stop) = c.stop {
+            return Err(stop.into());
+        }
+    }
+    Ok(())
 }
 
 /// Groups chunks into batches of a few per thread.
@@ -279,6 +311,45 @@ mod tests {
                 4.0, 1.0, 60.0, 10.0, 1.0, 40.0, 90.0, 50.0, 7250.0, 7250.0, 1000.0, 0.0
             ]
         );
+    }
+
+    /// The writer overlaps the solving of the next batch: over many batches the chunks still
+    /// come out in order, whole, and a stop in a late batch ends the output after the chunk
+    /// before it (the batch solved beside it is dropped).
+    #[test]
+    fn overlapped_batches_keep_order_and_stop_where_asked() {
+        let w = RowWriter::new(by_names(&["fin1"]).unwrap(), RowFormat::Csv);
+        let per_batch = 4 * rayon::current_num_threads().max(1);
+        let chunks = 5 * per_batch + 3;
+        let stop_at = 3 * per_batch + 1;
+        let solve = |k: usize| ChunkOut {
+            body: Ok(Sealed::Bytes(format!("{k}\n").into_bytes())),
+            rows: 1,
+            skipped: Vec::new(),
+            stop: (k == stop_at).then(|| RowError {
+                place: format!("chunk {k}"),
+                problem: RowProblem::NotCsv("stop".into()),
+            }),
+        };
+        let run = |n: usize| {
+            let mut bytes = Vec::new();
+            let mut sink = Sink::open(&w, 1, &mut bytes).unwrap();
+            let r = write_chunks(0..n, solve, &mut sink, &mut Progress::new(None));
+            drop(sink);
+            (r, String::from_utf8(bytes).unwrap())
+        };
+        let (r, text) = run(stop_at);
+        assert_eq!(r.unwrap().rows, stop_at as u64);
+        let want: String = (0..stop_at).map(|k| format!("{k}\n")).collect();
+        assert_eq!(text, format!("fin1\n{want}"));
+        let (r, text) = run(chunks);
+        match r {
+            Err(RowsError::Row(e)) => assert_eq!(e.place, format!("chunk {stop_at}")),
+            other => panic!("expected the stop, got {other:?}"),
+        }
+        // The stopping chunk's own rows (before its bad row) are written, nothing after.
+        let want: String = (0..=stop_at).map(|k| format!("{k}\n")).collect();
+        assert_eq!(text, format!("fin1\n{want}"));
     }
 
     #[test]
