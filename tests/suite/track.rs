@@ -1309,6 +1309,15 @@ mod motion {
             first_root(d0, r, a, first_contact(d0, r, a, true));
         }
         assert_eq!(first_contact(1.0, -1.0, 2.0, true), None);
+        // Exactly fast enough (a graze): r^2 = 2 a d0, the double root t = -r / a, where the
+        // gap touches 0 and opens again. A touch is a contact. `q` is formed as the code
+        // forms it, so r^2 - 2 a d0 is 0 in binary64 too; 2 d0 / q = q / a to 4 ulps.
+        for (d0, a) in [(1.0, 2.0), (0.5, 8.0), (3.0, 0.25)] {
+            let q: f64 = (std::f64::consts::SQRT_2 * f64::sqrt(a)) * f64::sqrt(d0);
+            close(first_contact(d0, -q, a, true), Some(q / a), "a graze");
+            // A hair slower: no contact.
+            assert_eq!(first_contact(d0, -q * (1.0 - 1e-9), a, true), None);
+        }
         assert_eq!(first_contact(1.0, 1.0, 2.0, true), None);
         assert_eq!(first_contact(1.0, 0.0, 2.0, true), None);
         // Ill-conditioned for the plain formula (r^2 >> a d0): the stable form keeps every
