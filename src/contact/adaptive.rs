@@ -141,3 +141,43 @@ pub fn stretch(
     ledger.counts.rhs_evals += rhs_evals.get();
     end
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A stop within the solver's rounding of a LATER stretch's start (after an event at
+    /// t0 = 1: `--until` a few ulps past it) is the start's state carried on by its velocity,
+    /// for each method: the bodies move x + v dt with dt = t_stop - t0 = 8 ulps of 1.
+    #[test]
+    fn a_stop_within_rounding_of_a_later_start_is_the_start_carried_on() {
+        let sys = System {
+            m: vec![1.0, 2.0],
+            slots: Vec::new(),
+            active: Vec::new(),
+            d0: Vec::new(),
+        };
+        let tol = Tolerances {
+            rtol: 1e-10,
+            atol_u: 1e-12,
+            atol_v: 1e-12,
+            h0: 1e-3,
+        };
+        let (t0, y0) = (1.0, [0.0, 5.0, 3.0, -1.0]);
+        let t_stop = 1.0 + 8.0 * f64::EPSILON;
+        let dt = t_stop - t0;
+        for method in [Adaptive::Tsit45, Adaptive::Bdf, Adaptive::Sdirk] {
+            let mut ledger = Ledger {
+                steps_left: 1000,
+                energy_cap: f64::INFINITY,
+                ..Ledger::default()
+            };
+            let end = stretch((method, tol), &sys, (t0, &y0), t_stop, &mut ledger)
+                .unwrap_or_else(|_| panic!("{method:?} refused a stop 8 ulps after its start"));
+            assert_eq!(end.t, t_stop);
+            assert_eq!(end.y, vec![3.0 * dt, 5.0 - dt, 3.0, -1.0]);
+            assert_eq!(end.event, None);
+            assert_eq!(ledger.counts.steps, 0, "{method:?} stepped");
+        }
+    }
+}

@@ -150,6 +150,45 @@ mod tests {
         assert!((c.contact_time() - textbook).abs() < 1e-14);
     }
 
+    /// The contact time and deepest overlap in units: a spring of k = 4 N/m on mu = 1 kg has
+    /// omega0 = 2 /s; undamped, t_c = pi / omega0 = pi/2 s and d_max = v / omega0 (e = 1): 1.5 m
+    /// at 3 m/s. At zeta = 0.2, both scale as 1/omega0 from the numbers (the test
+    /// above).
+    #[test]
+    fn contact_time_and_overlap_scale_with_omega0() {
+        let c = Linear::new(4.0, 0.0, 1.0);
+        assert_eq!(c.omega0, 2.0);
+        assert_eq!(c.contact_time(), PI / 2.0);
+        assert_eq!(c.max_overlap(3.0), 1.5);
+        let c = Linear {
+            omega0: 2.0,
+            zeta: 0.2,
+        };
+        assert!((c.contact_time() - 2.795_354_440_734_607_8 / 2.0).abs() < 1e-14);
+        let root_e = 0.571_740_027_584_776_8f64.sqrt();
+        assert!((c.max_overlap(3.0) - 1.5 * root_e).abs() < 1e-15);
+    }
+
+    /// Hertz's deepest overlap `(5 mu v^2 / (4 k))^(2/5)` with numbers chosen so that the
+    /// power is exact: mu = 1 kg, v = 4 m/s, k = 0.625 N/m^1.5 give 5/4 * 16 / 0.625 = 32 and
+    /// 32^(2/5) = 4 m; the contact time is `HERTZ_TIME d_max / v` = HERTZ_TIME s.
+    #[test]
+    fn hertz_overlap_and_time_by_hand() {
+        let d = hertz_max_overlap(0.625, 1.0, 4.0);
+        assert!((d - 4.0).abs() <= 2.0 * 4.0 * f64::EPSILON, "{d}");
+        let t = hertz_contact_time(0.625, 1.0, 4.0);
+        assert!(
+            (t - HERTZ_TIME).abs() <= 4.0 * HERTZ_TIME * f64::EPSILON,
+            "{t}"
+        );
+        // Scaling: d ~ (mu v^2 / k)^(2/5): 32 times the mass, 32^(2/5) = 4 times as deep.
+        let deeper = hertz_max_overlap(0.625, 32.0, 4.0);
+        assert!(
+            (deeper - 16.0).abs() <= 2.0 * 16.0 * f64::EPSILON,
+            "{deeper}"
+        );
+    }
+
     #[test]
     fn continuous_through_critical_damping() {
         for z in [1.0 - 1e-9, 1.0, 1.0 + 1e-9] {

@@ -25,8 +25,6 @@ pub enum ContactError {
         kind: &'static str,
         why: &'static str,
     },
-    #[error("bodies {0} and {next} overlap at the start: start them touching or apart", next = .0 + 1)]
-    Overlap(usize),
     #[error(
         "the shortest contact lasts {0:e}, too short to integrate (below 1e-100): rescale the \
          units (masses, stiffness) so that contact times are nearer 1"

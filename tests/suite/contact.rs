@@ -600,6 +600,99 @@ fn odd_layouts_are_refused_or_handled() {
     );
 }
 
+/// The library refuses bodies that overlap at the start, by number, as the command line does
+/// (sizes 1 and 3 with centres 1.9 apart, under half their sum, 2; sizes 1, 1, 1 with the second
+/// pair 0.9 apart, under 1); touching is allowed, and the contact then starts at once. Apart,
+/// it starts when the gap closes: centres 5 apart, reach 2, closing at 1 m/s: at t = 3 s.
+#[test]
+fn the_library_refuses_overlaps_and_contacts_start_when_the_gap_closes() {
+    use collide::contact::{ContactError, Laws, Settings, Setup, simulate};
+    use collide::line::inertia::Mass;
+    use collide::track::Body;
+    let body = |x: f64, v: f64, size: f64| Body {
+        m: Mass::from_f64(1.0).unwrap(),
+        x,
+        v,
+        size,
+    };
+    let laws = Laws {
+        kind: collide::contact::LawKind::Linear,
+        k: 100.0,
+        damping: None,
+        wall_k: None,
+        wall_damping: None,
+    };
+    let settings = Settings {
+        method: None,
+        dt: None,
+        tol: None,
+        until: None,
+        max_steps: 100_000,
+        trace: false,
+    };
+    let simulated =
+        |bodies: Vec<Body>| simulate(&Setup::new(bodies, (None, None), laws), &settings);
+    let refused = |bodies: Vec<Body>| match simulated(bodies) {
+        Err(e @ ContactError::Track(_)) => e.to_string(),
+        other => panic!("expected an overlap, got {:?}", other.map(|_| "a run")),
+    };
+    let m = refused(vec![body(0.0, 1.0, 1.0), body(1.9, 0.0, 3.0)]);
+    assert!(m.starts_with("bodies 1 and 2 overlap"), "{m}");
+    let m = refused(vec![
+        body(0.0, 0.0, 1.0),
+        body(1.0, 0.0, 1.0),
+        body(1.9, 0.0, 1.0),
+    ]);
+    assert!(m.starts_with("bodies 2 and 3 overlap"), "{m}");
+    let touching = simulated(vec![body(0.0, 1.0, 1.0), body(2.0, 0.0, 3.0)]).unwrap();
+    assert_eq!(touching.contacts[0].start, 0.0);
+    let apart = simulated(vec![body(0.0, 1.0, 1.0), body(5.0, 0.0, 3.0)]).unwrap();
+    let start = apart.contacts[0].start;
+    assert!((start - 3.0).abs() <= 4.0 * f64::EPSILON * 3.0, "{start}");
+}
+
+/// Damping so heavy that the contact ends within 1e-100 s is refused with its numbers, each by
+/// hand: k = 1, mu = 1/2, omega0 = sqrt 2; the fastest rate c/mu = 2 zeta omega0, so the
+/// contact lasts pi / (2 sqrt 2 zeta) = 1.111e-101 at zeta = 1e101; e = 1 / (4 zeta^2) =
+/// 2.500e-203 (overdamped: e = exp(-2 ln(2 zeta)) to first order); the most damping allowed,
+/// zeta = pi / (2 sqrt 2 1e-100) = 1.111e100, and its e = 1 / (4 zeta^2) = 2.026e-201. At zeta
+/// = 1e200 the restitution underflows and is left out of the message.
+#[test]
+fn a_contact_too_damped_to_integrate_is_refused_with_its_numbers() {
+    let message = |zeta: &str| {
+        let line = format!("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta {zeta}");
+        let out = collide().arg("contact").args(args(&line)).output().unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+        // The message is wrapped for the terminal: one line of single spaces.
+        String::from_utf8_lossy(&out.stderr)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let m = message("1e101");
+    for part in [
+        "the shortest contact lasts 1.111e-101",
+        "(zeta = 1.000e101, restitution e = 2.500e-203)",
+        "(e >= 2.026e-201 here, zeta <= 1.111e100)",
+    ] {
+        assert!(m.contains(part), "{m} lacks {part}");
+    }
+    let m = message("1e200");
+    assert!(m.contains("(zeta = 1.000e200) ends it that fast"), "{m}");
+}
+
+/// The JSON names the law the run used, as `--law` spells it.
+#[test]
+fn the_json_names_the_law() {
+    for law in ["linear", "hertz", "hunt-crossley"] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --law {law}"
+        )));
+        assert_eq!(j["law"], law);
+    }
+}
+
 #[test]
 fn a_large_common_velocity_does_not_swamp_the_contact() {
     // Case: zeta = 0.2 between equal bodies, relative speed 1, both moving at about 1e8. The
