@@ -107,3 +107,63 @@ impl Law {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every quantity of both laws at hand-picked values where each is exact or nearly: linear
+    /// k = 4, c = 2; Hertz k = 2, chi = 1/2 at d = 4 (sqrt d = 2), rate 2 (1 + chi rate = 2).
+    #[test]
+    fn forces_slopes_gates_and_energies_by_hand() {
+        let linear = Law::Linear { k: 4.0, c: 2.0 };
+        let hertz = Law::Hertz { k: 2.0, chi: 0.5 };
+        // F = k d + c d' = 4 + 6; Hertz k d^(3/2) (1 + chi d') = 2 * 8 * 2.
+        assert_eq!(linear.force(1.0, 3.0), 10.0);
+        assert_eq!(hertz.force(4.0, 2.0), 32.0);
+        assert_eq!(hertz.force(-1.0, 2.0), 0.0);
+        // dF/dd = 3/2 k d^(1/2) (1 + chi d') = 12; dF/dd' = k d^(3/2) chi = 8.
+        assert_eq!(linear.slopes(1.0, 3.0), (4.0, 2.0));
+        assert_eq!(hertz.slopes(4.0, 2.0), (12.0, 8.0));
+        // The gate: d + (c/k) d' = 1 - 1.5 while separating fast (the force pulls: negative);
+        // d (1 + chi d') = 4 (1 - 2) = -4; approaching, the overlap itself.
+        assert_eq!(linear.gate(1.0, -3.0), -0.5);
+        assert_eq!(linear.gate(1.0, 3.0), 1.0);
+        assert_eq!(hertz.gate(4.0, -4.0), -4.0);
+        assert_eq!(hertz.gate(4.0, 2.0), 4.0);
+        // k d^2 / 2 = 18; 2/5 k d^(5/2) = 0.4 * 2 * 32 = 25.6 (to an ulp: 0.4 is not binary).
+        assert_eq!(linear.potential(3.0), 18.0);
+        assert!((hertz.potential(4.0) - 25.6).abs() <= 25.6 * f64::EPSILON);
+        assert_eq!(linear.potential(-1.0), 0.0);
+        assert_eq!((linear.k(), hertz.k()), (4.0, 2.0));
+        assert!(linear.damped() && hertz.damped());
+        assert!(!Law::Linear { k: 4.0, c: 0.0 }.damped());
+    }
+
+    /// Frequencies: linear sqrt(k/mu) = 2 (k = 4, mu = 1), or c/mu = 10 when damping is faster.
+    /// Hertz with k = 0.625, mu = 1 hit at 4 m/s reaches d = 4 (closed.rs's test): natural
+    /// sqrt(3/2 k d^(1/2) / mu) = sqrt(1.875); with chi = 1 the damping rate k d^(3/2) chi / mu
+    /// = 5 is faster.
+    #[test]
+    fn frequencies_by_hand() {
+        assert_eq!(
+            Law::Linear { k: 4.0, c: 1.0 }.natural_frequency(1.0, 3.0),
+            2.0
+        );
+        assert_eq!(Law::Linear { k: 4.0, c: 1.0 }.frequency(1.0, 3.0), 2.0);
+        assert_eq!(Law::Linear { k: 4.0, c: 10.0 }.frequency(1.0, 3.0), 10.0);
+        let hertz = Law::Hertz { k: 0.625, chi: 1.0 };
+        let natural = hertz.natural_frequency(1.0, 4.0);
+        assert!(
+            (natural - 1.875f64.sqrt()).abs() <= 2.0 * f64::EPSILON,
+            "{natural}"
+        );
+        let fastest = hertz.frequency(1.0, 4.0);
+        assert!((fastest - 5.0).abs() <= 8.0 * f64::EPSILON, "{fastest}");
+        let undamped = Law::Hertz { k: 0.625, chi: 0.0 };
+        assert_eq!(
+            undamped.frequency(1.0, 4.0),
+            undamped.natural_frequency(1.0, 4.0)
+        );
+    }
+}

@@ -651,6 +651,119 @@ fn the_library_refuses_overlaps_and_contacts_start_when_the_gap_closes() {
     assert!((start - 3.0).abs() <= 4.0 * f64::EPSILON * 3.0, "{start}");
 }
 
+/// Work counters: a fixed-step method costs its stages per step (RK4 4, Verlet 2, symplectic
+/// Euler 1), on every step taken and on each step the event search retries (a few per
+/// contact): so a multiple of the stages, at least stages x steps, and not 10% more.
+#[test]
+fn fixed_steps_count_their_stages() {
+    for (method, stages) in [("rk4", 4), ("verlet", 2), ("symplectic-euler", 1)] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --method {method} --dt 1e-3"
+        )));
+        let n = |k: &str| j["stats"][k].as_u64().unwrap();
+        let (steps, evals) = (n("steps"), n("rhs_evals"));
+        // The contact lasts pi / sqrt 2 = 2.22 s: 2,222 steps of 1e-3.
+        assert_eq!(steps, 2222, "{method}");
+        assert_eq!(evals % stages, 0, "{method}: {evals}");
+        assert!(
+            evals >= stages * steps && evals <= stages * steps * 11 / 10,
+            "{method}: {evals} evaluations for {steps} steps"
+        );
+    }
+}
+
+/// The history kept for `--plot` is thinned to every other sample whenever it reaches its cap
+/// (100,000): a contact of pi / sqrt 2 = 2.22 s stepped at 1e-5 (222,000 samples) keeps at most
+/// the cap, spread over the whole contact (no gap of more than 16 steps, as after four
+/// thinnings), in time order.
+#[test]
+fn a_long_history_is_thinned_evenly() {
+    use collide::contact::{Fixed, Laws, Method, Settings, Setup, simulate};
+    use collide::line::inertia::Mass;
+    use collide::track::Body;
+    let body = |x: f64, v: f64| Body {
+        m: Mass::from_f64(1.0).unwrap(),
+        x,
+        v,
+        size: 1.0,
+    };
+    let laws = Laws {
+        kind: collide::contact::LawKind::Linear,
+        k: 1.0,
+        damping: None,
+        wall_k: None,
+        wall_damping: None,
+    };
+    let settings = Settings {
+        method: Some(Method::Fixed(Fixed::Verlet)),
+        dt: Some(1e-5),
+        tol: None,
+        until: None,
+        max_steps: 1_000_000,
+        trace: true,
+    };
+    let setup = Setup::new(vec![body(0.0, 1.0), body(1.0, 0.0)], (None, None), laws);
+    let run = simulate(&setup, &settings).unwrap();
+    let h = &run.history;
+    assert!(
+        h.len() > 50_000 && h.len() <= 100_001,
+        "{} samples",
+        h.len()
+    );
+    let c = &run.contacts[0];
+    let duration = std::f64::consts::PI / 2f64.sqrt();
+    // Each thinning drops the oldest sample too: the first left is a few steps in.
+    assert!(
+        h[0].t - c.start <= 16.0 * 1e-5,
+        "first sample at {}",
+        h[0].t
+    );
+    assert!(
+        (h[h.len() - 1].t - (c.start + duration)).abs() <= 1e-3,
+        "last sample at {}",
+        h[h.len() - 1].t
+    );
+    let widest = h.windows(2).map(|w| w[1].t - w[0].t).fold(0.0, f64::max);
+    assert!(h.windows(2).all(|w| w[1].t > w[0].t), "out of order");
+    assert!(widest <= 16.0 * 1e-5 * (1.0 + 1e-9), "a gap of {widest}");
+}
+
+/// The scales that pick a method and a default step come from the impact speed: two 2 kg
+/// bodies (mu = 1) meeting at 4 m/s with Hertz k = 0.625 reach d = (5/4 mu v^2 / k)^(2/5) = 4
+/// and have the natural frequency sqrt(3/2 k d^(1/2) / mu) = sqrt(1.875) there.
+#[test]
+fn scales_come_from_the_impact_speed() {
+    use collide::contact::{Laws, Scales, Setup};
+    use collide::line::inertia::Mass;
+    use collide::track::Body;
+    let body = |x: f64, v: f64| Body {
+        m: Mass::from_f64(2.0).unwrap(),
+        x,
+        v,
+        size: 1.0,
+    };
+    let laws = Laws {
+        kind: collide::contact::LawKind::Hertz,
+        k: 0.625,
+        damping: None,
+        wall_k: None,
+        wall_damping: None,
+    };
+    let setup = Setup::new(vec![body(0.0, 4.0), body(5.0, 0.0)], (None, None), laws);
+    let scales = Scales::of(&setup, &setup.slots().unwrap());
+    assert_eq!(scales.speed, 4.0);
+    assert!(
+        (scales.overlap - 4.0).abs() <= 8.0 * f64::EPSILON,
+        "{}",
+        scales.overlap
+    );
+    let natural = scales.natural[0];
+    assert!(
+        (natural - 1.875f64.sqrt()).abs() <= 4.0 * f64::EPSILON,
+        "{natural}"
+    );
+}
+
 /// Damping so heavy that the contact ends within 1e-100 s is refused with its numbers, each by
 /// hand: k = 1, mu = 1/2, omega0 = sqrt 2; the fastest rate c/mu = 2 zeta omega0, so the
 /// contact lasts pi / (2 sqrt 2 zeta) = 1.111e-101 at zeta = 1e101; e = 1 / (4 zeta^2) =
