@@ -75,6 +75,8 @@ for area in "${areas[@]}"; do
         while IFS= read -r name; do
             extra+=(--re "^$(printf '%s' "$name" | sed 's/[][\\.*^$()+?{}|]/\\&/g')\$")
         done < <(cat "$MUTANTS_AGAIN/missed.txt" "$MUTANTS_AGAIN/timeout.txt")
+        # Nothing to do again (no --re would mean every mutant).
+        [ ${#extra[@]} -gt 0 ] || { echo "$area: nothing missed in $MUTANTS_AGAIN"; continue; }
     fi
     # shellcheck disable=SC2086
     cargo mutants --in-place --no-shuffle --profile "${MUTANTS_PROFILE:-mutation}" "${extra[@]}" \
