@@ -870,6 +870,30 @@ fn bodies_that_pass_through_each_other_or_a_wall_are_refused_at_the_step_it_happ
         }
         assert!(!err.contains("NaN") && !err.contains("inf"), "{err}");
     }
+    // The positions reported are the lab's at the reported time: the centre of mass moves
+    // uniformly (m = 1, 3 at v = 2, 0: from 3/4 at w = 1/2), whatever the integration did, and
+    // the overlap is (s1 + s2)/2 - (x2 - x1). Both to the 15 digits printed.
+    let (code, _, err) = outcome(&args(
+        "-m 1,3 -x 0,1 --sizes 1,1 -v 2,0 --stiffness 0.1 --method rk4",
+    ));
+    assert_eq!(code, 2, "{err}");
+    let err = err.split_whitespace().collect::<Vec<_>>().join(" ");
+    let after = |key: &str| -> f64 {
+        let rest = &err[err.find(key).unwrap_or_else(|| panic!("{err} lacks {key}")) + key.len()..];
+        let end = rest.find([',', ':', ' ']).unwrap_or(rest.len());
+        rest[..end]
+            .parse()
+            .unwrap_or_else(|_| panic!("{key} in {err}"))
+    };
+    let (t, x1, x2) = (after("at t = "), after("x1 = "), after("x2 = "));
+    let overlap = after("an overlap of ");
+    let com = (x1 + 3.0 * x2) / 4.0;
+    assert!(
+        (com - (0.75 + 0.5 * t)).abs() <= 1e-13,
+        "{err}: centre of mass at {com}"
+    );
+    assert!((overlap - (1.0 - (x2 - x1))).abs() <= 1e-13, "{err}");
+    assert!(x1 > x2, "{err}: not through each other");
     // Through a wall: k = 0.01 against m = 1 at v = 1 needs d_max = 10, past the centre at 0.5.
     let (code, _, err) = outcome(&args(
         "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 0.01",
