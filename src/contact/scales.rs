@@ -165,3 +165,34 @@ pub(super) fn steps_for(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scales(omega: Vec<f64>, natural: Vec<f64>) -> Scales {
+        Scales {
+            speed: 1.0,
+            omega,
+            natural,
+            overlap: 1.0,
+            t_min: 1.0,
+            t_max: 1.0,
+            default_tol: 1e-10,
+        }
+    }
+
+    /// Fastest rate over slowest natural frequency; 1 (not stiff) where there is no natural
+    /// frequency to compare with: none at all, or one that underflowed to 0 (k / mu below
+    /// 2^-1074), which would make every run "infinitely stiff".
+    #[test]
+    fn the_stiffness_ratio_by_hand() {
+        assert_eq!(
+            scales(vec![2.0, 100.0], vec![2.0, 4.0]).stiffness_ratio(),
+            50.0
+        );
+        assert_eq!(scales(vec![3.0], vec![3.0]).stiffness_ratio(), 1.0);
+        assert_eq!(scales(vec![1.0], vec![0.0]).stiffness_ratio(), 1.0);
+        assert_eq!(scales(Vec::new(), Vec::new()).stiffness_ratio(), 1.0);
+    }
+}
