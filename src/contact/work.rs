@@ -117,7 +117,14 @@ fn error(v: &[f64], reference: &[f64], speed: f64) -> f64 {
     v.iter()
         .zip(reference)
         .map(|(a, b)| (a - b).abs())
-        .fold(0.0, |m: f64, d| if d.is_nan() { d } else { m.max(d) })
+        // Once NaN, NaN: `f64::max` of a NaN and a number is the number.
+        .fold(0.0, |m: f64, d| {
+            if m.is_nan() || d.is_nan() {
+                f64::NAN
+            } else {
+                m.max(d)
+            }
+        })
         / speed
 }
 
@@ -249,4 +256,20 @@ pub fn work_precision(
         stiffness_ratio: scales.stiffness_ratio(),
         rows,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The error of a run is its largest velocity difference from the reference over the speed
+    /// scale (a relative error): |3 - 1| / 4 = 1/2; a NaN difference is NaN, never dropped (it
+    /// was when a number followed it: `f64::max(NaN, x)` is x).
+    #[test]
+    fn the_error_is_relative_to_the_speed_and_keeps_a_nan() {
+        assert_eq!(error(&[3.0, 1.0], &[1.0, 1.0], 4.0), 0.5);
+        assert_eq!(error(&[1.0, -5.0], &[1.0, 1.0], 3.0), 2.0);
+        assert!(error(&[f64::NAN, 1.0], &[1.0, 1.0], 2.0).is_nan());
+        assert!(error(&[1.0, 1.0], &[f64::NAN, 9.0], 2.0).is_nan());
+    }
 }
