@@ -318,7 +318,7 @@ mod tests {
             };
             let new_side = |v: f64| sign * v >= 0.0;
             let (a, b) = (1.0, 2.0);
-            let root = locate(&mut f, (a, sign * -1.0), (b, sign * 2.0), &new_side).unwrap();
+            let root = locate(&mut f, (a, -sign), (b, sign * 2.0), &new_side).unwrap();
             let exact = std::f64::consts::SQRT_2;
             assert!((root - exact).abs() <= 4.0 * f64::EPSILON * exact, "{root}");
             assert!(
