@@ -126,3 +126,46 @@ fn a_height_of_zero_is_a_speed_of_zero_and_energy_units_need_both_units() {
     let scale = units.with_energy_unit(j).unwrap().energy_scale().unwrap();
     assert_eq!(scale, collide::values::rational::ratio(25, 324));
 }
+
+/// An energy released typed with a unit (`--released '48 J'`) is converted into the case's
+/// energy unit (mass unit x velocity unit^2): 1 kg and 2 kg pushed apart from rest by 48 J move
+/// at -8 and 4 m/s (momentum 0, 1/2 (1) 64 + 1/2 (2) 16 = 48), printed in the velocities'
+/// unit: -800 and 400 cm/s with masses in grams, -28.8 and 14.4 km/h; 0.048 kJ is the same.
+#[test]
+fn an_energy_released_with_a_unit_is_converted_to_the_case_units() {
+    for (m, v, released, want) in [
+        (
+            "1000 g,2000 g",
+            "0 cm/s,0 cm/s",
+            "48 J",
+            "f1 = -800 cm/s, f2 = 400 cm/s",
+        ),
+        (
+            "1 kg,2 kg",
+            "0 km/h,0 km/h",
+            "48 J",
+            "f1 = -28.8 km/h, f2 = 14.4 km/h",
+        ),
+        (
+            "1 kg,2 kg",
+            "0 km/h,0 km/h",
+            "0.048 kJ",
+            "f1 = -28.8 km/h, f2 = 14.4 km/h",
+        ),
+    ] {
+        let out = common::collide()
+            .args(["solve", "-m", m, "-v", v, "--released", released])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{m} {v} {released}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(
+            text.contains(&format!("Solved: {want}")),
+            "{m} {v} {released}: {text}"
+        );
+    }
+}
