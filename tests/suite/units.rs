@@ -169,3 +169,27 @@ fn an_energy_released_with_a_unit_is_converted_to_the_case_units() {
         );
     }
 }
+
+/// The impulse's unit is named from the units typed: mass unit x velocity unit, each as typed
+/// or described when missing (`--show changes`' header, wrapped for the terminal).
+#[test]
+fn the_impulse_unit_is_named_from_the_units_typed() {
+    for (m, v, want) in [
+        ("1 kg,2 kg", "3 m/s,0 m/s", "impulse in kg m/s,"),
+        ("1 g,2 g", "3 cm/s,0 cm/s", "impulse in g cm/s,"),
+        ("1 kg,2 kg", "3,0", "impulse in kg x velocity unit,"),
+        ("1,2", "3 m/s,0 m/s", "impulse in mass unit x m/s,"),
+        ("1,2", "3,0", "impulse in mass unit x velocity unit,"),
+    ] {
+        let out = common::collide()
+            .args(["solve", "-m", m, "-v", v, "-e", "1", "--show", "changes"])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{m} {v}");
+        let text = String::from_utf8_lossy(&out.stdout)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(text.contains(want), "{m} {v}: {text}");
+    }
+}
