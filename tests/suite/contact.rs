@@ -600,53 +600,75 @@ fn odd_layouts_are_refused_or_handled() {
     );
 }
 
+/// A setup through the library: bodies `(mass, x, v, size)` under one undamped law of
+/// stiffness `k` between them (and default walls' law).
+fn library_setup(
+    bodies: &[(f64, f64, f64, f64)],
+    kind: collide::contact::LawKind,
+    k: f64,
+) -> collide::contact::Setup {
+    use collide::line::inertia::Mass;
+    let bodies = bodies
+        .iter()
+        .map(|&(m, x, v, size)| collide::track::Body {
+            m: Mass::from_f64(m).unwrap(),
+            x,
+            v,
+            size,
+        })
+        .collect();
+    let laws = collide::contact::Laws {
+        kind,
+        k,
+        damping: None,
+        wall_k: None,
+        wall_damping: None,
+    };
+    collide::contact::Setup::new(bodies, (None, None), laws)
+}
+
+/// Settings for a library run: `method` (`None`: auto) with step `dt`, a trace if asked.
+fn library_settings(
+    method: Option<collide::contact::Method>,
+    dt: Option<f64>,
+    trace: bool,
+) -> collide::contact::Settings {
+    collide::contact::Settings {
+        method,
+        dt,
+        tol: None,
+        until: None,
+        max_steps: 1_000_000,
+        trace,
+    }
+}
+
 /// The library refuses bodies that overlap at the start, by number, as the command line does
 /// (sizes 1 and 3 with centres 1.9 apart, under half their sum, 2; sizes 1, 1, 1 with the second
 /// pair 0.9 apart, under 1); touching is allowed, and the contact then starts at once. Apart,
 /// it starts when the gap closes: centres 5 apart, reach 2, closing at 1 m/s: at t = 3 s.
 #[test]
 fn the_library_refuses_overlaps_and_contacts_start_when_the_gap_closes() {
-    use collide::contact::{ContactError, Laws, Settings, Setup, simulate};
-    use collide::line::inertia::Mass;
-    use collide::track::Body;
-    let body = |x: f64, v: f64, size: f64| Body {
-        m: Mass::from_f64(1.0).unwrap(),
-        x,
-        v,
-        size,
+    use collide::contact::{ContactError, LawKind, simulate};
+    let settings = library_settings(None, None, false);
+    let simulated = |bodies: &[(f64, f64, f64, f64)]| {
+        simulate(&library_setup(bodies, LawKind::Linear, 100.0), &settings)
     };
-    let laws = Laws {
-        kind: collide::contact::LawKind::Linear,
-        k: 100.0,
-        damping: None,
-        wall_k: None,
-        wall_damping: None,
-    };
-    let settings = Settings {
-        method: None,
-        dt: None,
-        tol: None,
-        until: None,
-        max_steps: 100_000,
-        trace: false,
-    };
-    let simulated =
-        |bodies: Vec<Body>| simulate(&Setup::new(bodies, (None, None), laws), &settings);
-    let refused = |bodies: Vec<Body>| match simulated(bodies) {
+    let refused = |bodies: &[(f64, f64, f64, f64)]| match simulated(bodies) {
         Err(e @ ContactError::Track(_)) => e.to_string(),
         other => panic!("expected an overlap, got {:?}", other.map(|_| "a run")),
     };
-    let m = refused(vec![body(0.0, 1.0, 1.0), body(1.9, 0.0, 3.0)]);
+    let m = refused(&[(1.0, 0.0, 1.0, 1.0), (1.0, 1.9, 0.0, 3.0)]);
     assert!(m.starts_with("bodies 1 and 2 overlap"), "{m}");
-    let m = refused(vec![
-        body(0.0, 0.0, 1.0),
-        body(1.0, 0.0, 1.0),
-        body(1.9, 0.0, 1.0),
+    let m = refused(&[
+        (1.0, 0.0, 0.0, 1.0),
+        (1.0, 1.0, 0.0, 1.0),
+        (1.0, 1.9, 0.0, 1.0),
     ]);
     assert!(m.starts_with("bodies 2 and 3 overlap"), "{m}");
-    let touching = simulated(vec![body(0.0, 1.0, 1.0), body(2.0, 0.0, 3.0)]).unwrap();
+    let touching = simulated(&[(1.0, 0.0, 1.0, 1.0), (1.0, 2.0, 0.0, 3.0)]).unwrap();
     assert_eq!(touching.contacts[0].start, 0.0);
-    let apart = simulated(vec![body(0.0, 1.0, 1.0), body(5.0, 0.0, 3.0)]).unwrap();
+    let apart = simulated(&[(1.0, 0.0, 1.0, 1.0), (1.0, 5.0, 0.0, 3.0)]).unwrap();
     let start = apart.contacts[0].start;
     assert!((start - 3.0).abs() <= 4.0 * f64::EPSILON * 3.0, "{start}");
 }
@@ -678,31 +700,13 @@ fn fixed_steps_count_their_stages() {
 /// thinnings), in time order.
 #[test]
 fn a_long_history_is_thinned_evenly() {
-    use collide::contact::{Fixed, Laws, Method, Settings, Setup, simulate};
-    use collide::line::inertia::Mass;
-    use collide::track::Body;
-    let body = |x: f64, v: f64| Body {
-        m: Mass::from_f64(1.0).unwrap(),
-        x,
-        v,
-        size: 1.0,
-    };
-    let laws = Laws {
-        kind: collide::contact::LawKind::Linear,
-        k: 1.0,
-        damping: None,
-        wall_k: None,
-        wall_damping: None,
-    };
-    let settings = Settings {
-        method: Some(Method::Fixed(Fixed::Verlet)),
-        dt: Some(1e-5),
-        tol: None,
-        until: None,
-        max_steps: 1_000_000,
-        trace: true,
-    };
-    let setup = Setup::new(vec![body(0.0, 1.0), body(1.0, 0.0)], (None, None), laws);
+    use collide::contact::{Fixed, LawKind, Method, simulate};
+    let setup = library_setup(
+        &[(1.0, 0.0, 1.0, 1.0), (1.0, 1.0, 0.0, 1.0)],
+        LawKind::Linear,
+        1.0,
+    );
+    let settings = library_settings(Some(Method::Fixed(Fixed::Verlet)), Some(1e-5), true);
     let run = simulate(&setup, &settings).unwrap();
     let h = &run.history;
     assert!(
@@ -733,23 +737,12 @@ fn a_long_history_is_thinned_evenly() {
 /// and have the natural frequency sqrt(3/2 k d^(1/2) / mu) = sqrt(1.875) there.
 #[test]
 fn scales_come_from_the_impact_speed() {
-    use collide::contact::{Laws, Scales, Setup};
-    use collide::line::inertia::Mass;
-    use collide::track::Body;
-    let body = |x: f64, v: f64| Body {
-        m: Mass::from_f64(2.0).unwrap(),
-        x,
-        v,
-        size: 1.0,
-    };
-    let laws = Laws {
-        kind: collide::contact::LawKind::Hertz,
-        k: 0.625,
-        damping: None,
-        wall_k: None,
-        wall_damping: None,
-    };
-    let setup = Setup::new(vec![body(0.0, 4.0), body(5.0, 0.0)], (None, None), laws);
+    use collide::contact::{LawKind, Scales};
+    let setup = library_setup(
+        &[(2.0, 0.0, 4.0, 1.0), (2.0, 5.0, 0.0, 1.0)],
+        LawKind::Hertz,
+        0.625,
+    );
     let scales = Scales::of(&setup, &setup.slots().unwrap());
     assert_eq!(scales.speed, 4.0);
     assert!(
