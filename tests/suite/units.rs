@@ -193,3 +193,33 @@ fn the_impulse_unit_is_named_from_the_units_typed() {
         assert!(text.contains(want), "{m} {v}: {text}");
     }
 }
+
+/// Converting (`--si`, or mixed units such as kg beside g) needs a unit on the masses AND on
+/// the velocities: units on one side only are refused by name, exit 2, nothing on stdout.
+#[test]
+fn converting_needs_units_on_both_sides() {
+    for (args, want) in [
+        (
+            &["-m", "1 kg,2 kg", "-v", "3,0", "--si"][..],
+            "--si needs a unit on every mass and velocity",
+        ),
+        (
+            &["-m", "1,2", "-v", "3 m/s,0 m/s", "--si"][..],
+            "--si needs a unit on every mass and velocity",
+        ),
+        (
+            &["-m", "1 kg,500 g", "-v", "3,0"][..],
+            "mixed units need a unit on every mass and velocity",
+        ),
+        (
+            &["-m", "1,2", "-v", "3 m/s,0 km/h"][..],
+            "mixed units need a unit on every mass and velocity",
+        ),
+    ] {
+        let out = common::collide().arg("solve").args(args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert!(err.contains(want), "{args:?}: {err}");
+    }
+}
