@@ -160,6 +160,21 @@ mod tests {
         );
         let fastest = hertz.frequency(1.0, 4.0);
         assert!((fastest - 5.0).abs() <= 8.0 * f64::EPSILON, "{fastest}");
+        // A reduced mass of 2 (every rate above is over mu = 1, where `/ mu` and `* mu`
+        // agree): linear k = 8, c = 10: sqrt(8/2) = 2 against 10/2 = 5. Hertz k = 1.25 hit at
+        // 4 m/s: 5/4 mu v^2 / k = 32, d = 4 again; natural sqrt(3/2 k d^(1/2) / mu) =
+        // sqrt(1.875), damping k d^(3/2) chi / mu = 5.
+        let linear = Law::Linear { k: 8.0, c: 10.0 };
+        assert_eq!(linear.natural_frequency(2.0, 3.0), 2.0);
+        assert_eq!(linear.frequency(2.0, 3.0), 5.0);
+        let hertz = Law::Hertz { k: 1.25, chi: 1.0 };
+        let natural = hertz.natural_frequency(2.0, 4.0);
+        assert!(
+            (natural - 1.875f64.sqrt()).abs() <= 2.0 * f64::EPSILON,
+            "{natural}"
+        );
+        let fastest = hertz.frequency(2.0, 4.0);
+        assert!((fastest - 5.0).abs() <= 8.0 * f64::EPSILON, "{fastest}");
         let undamped = Law::Hertz { k: 0.625, chi: 0.0 };
         assert_eq!(
             undamped.frequency(1.0, 4.0),

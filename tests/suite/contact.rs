@@ -329,6 +329,8 @@ fn explicit_steps_past_the_stability_limit_are_refused() {
         "2.1e-3",
     ]);
     refused(&args, "omega dt = 2.100 > 2.000");
+    // The step it suggests is the limit over omega: 2 / 1000 s.
+    refused(&args, "use --dt below 2.000e-3 or an implicit method");
     let mut args = wall.to_vec();
     args.extend([
         "--wall-stiffness",
@@ -464,6 +466,56 @@ fn work_precision_measures_every_method_against_the_exact_answer() {
         assert!(labels.contains(&m), "{m} not in {labels:?}");
     }
     std::fs::remove_file(&svg).unwrap();
+}
+
+/// A method's ladder stops at the first rung whose error is below 1e-11 (`work::ENOUGH`):
+/// RK4, fourth order, divides its error by about 16 a halving of the step, from 8e-5 at the
+/// first rung: below 1e-11 after 6 halvings, the 7th and last row.
+#[test]
+fn work_precision_stops_a_ladder_once_it_is_accurate_enough() {
+    let j = run(&args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1 --zeta 0.2 --work-precision \
+         --methods rk4",
+    ));
+    let errors: Vec<f64> = j["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["error"].as_f64().unwrap())
+        .collect();
+    let enough = collide::contact::work::ENOUGH;
+    assert_eq!(enough, 1e-11);
+    assert_eq!(errors.len(), 7, "{errors:?}");
+    assert!(errors[6] < enough, "{errors:?}");
+    assert!(errors[..6].iter().all(|e| *e >= enough), "{errors:?}");
+    for w in errors.windows(2) {
+        let ratio = w[0] / w[1];
+        assert!((10.0..25.0).contains(&ratio), "{errors:?}");
+    }
+}
+
+/// Newton's iteration in an implicit step stops when a correction is at rounding level: at
+/// least two iterations a step (the first corrects the predictor by about the step times a
+/// rate, far above rounding), and about two in all (it converges quadratically: on the linear
+/// law the first lands exactly, a linear system). So 2 to 3 Jacobians a step, on both laws
+/// and both implicit one-step methods.
+#[test]
+fn implicit_steps_iterate_newton_to_rounding() {
+    for law in ["linear", "hertz"] {
+        for method in ["implicit-euler", "implicit-midpoint"] {
+            let j = run(&args(&format!(
+                "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1 --law {law} \
+                 --method {method} --dt 1e-3"
+            )));
+            let steps = j["stats"]["steps"].as_f64().unwrap();
+            let jacobians = j["stats"]["jacobians"].as_f64().unwrap();
+            assert!(steps > 2000.0, "{law} {method}: {steps} steps");
+            assert!(
+                (2.0 * steps..=3.0 * steps).contains(&jacobians),
+                "{law} {method}: {jacobians} Jacobians for {steps} steps"
+            );
+        }
+    }
 }
 
 #[test]
@@ -625,6 +677,35 @@ fn library_setup(
         wall_damping: None,
     };
     collide::contact::Setup::new(bodies, (None, None), laws)
+}
+
+/// Work-precision's exact reference (one contact, in closed form): an undamped linear wall
+/// has e = 1, so a body moving towards it leaves with -v; one moving away never touches it
+/// and keeps v. On either wall (the guards on the direction, each way).
+#[test]
+fn the_exact_reference_bounces_only_towards_a_wall() {
+    use collide::contact::{LawKind, work};
+    for (walls, v, want) in [
+        ((None, Some(2.0)), 1.0, -1.0),
+        ((None, Some(2.0)), -1.0, -1.0),
+        ((Some(-2.0), None), -1.0, 1.0),
+        ((Some(-2.0), None), 1.0, 1.0),
+    ] {
+        let bodies = library_setup(&[(1.0, 0.0, v, 1.0)], LawKind::Linear, 1.0).bodies;
+        let setup = collide::contact::Setup::new(
+            bodies,
+            walls,
+            collide::contact::Laws {
+                kind: LawKind::Linear,
+                k: 1.0,
+                damping: None,
+                wall_k: None,
+                wall_damping: None,
+            },
+        );
+        let exact = work::exact(&setup).unwrap().expect("one contact");
+        assert_eq!(exact, vec![want], "walls {walls:?}, v = {v}");
+    }
 }
 
 /// Settings for a library run: `method` (`None`: auto) with step `dt`, a trace if asked.
