@@ -692,19 +692,42 @@ fn the_exact_reference_bounces_only_towards_a_wall() {
         ((Some(-2.0), None), 1.0, 1.0),
     ] {
         let bodies = library_setup(&[(1.0, 0.0, v, 1.0)], LawKind::Linear, 1.0).bodies;
-        let setup = collide::contact::Setup::new(
-            bodies,
-            walls,
-            collide::contact::Laws {
-                kind: LawKind::Linear,
-                k: 1.0,
-                damping: None,
-                wall_k: None,
-                wall_damping: None,
-            },
-        );
+        let setup = collide::contact::Setup::new(bodies, walls, linear_laws());
         let exact = work::exact(&setup).unwrap().expect("one contact");
         assert_eq!(exact, vec![want], "walls {walls:?}, v = {v}");
+    }
+}
+
+/// The speed scale is the largest relative speed at the start: between the bodies (two at 3
+/// and 3: none), and against a wall when there is one, either one (a body's own speed: 3).
+#[test]
+fn the_speed_scale_counts_a_wall_on_either_side() {
+    use collide::contact::{LawKind, Setup};
+    let bodies = library_setup(
+        &[(1.0, 0.0, 3.0, 1.0), (1.0, 2.0, 3.0, 1.0)],
+        LawKind::Linear,
+        1.0,
+    )
+    .bodies;
+    for (walls, want) in [
+        ((None, None), 0.0),
+        ((Some(-5.0), None), 3.0),
+        ((None, Some(5.0)), 3.0),
+        ((Some(-5.0), Some(5.0)), 3.0),
+    ] {
+        let setup = Setup::new(bodies.clone(), walls, linear_laws());
+        assert_eq!(setup.speed_scale(), want, "walls {walls:?}");
+    }
+}
+
+/// The linear law of stiffness 1, undamped, for pairs and walls.
+fn linear_laws() -> collide::contact::Laws {
+    collide::contact::Laws {
+        kind: collide::contact::LawKind::Linear,
+        k: 1.0,
+        damping: None,
+        wall_k: None,
+        wall_damping: None,
     }
 }
 
