@@ -386,7 +386,9 @@ mod tests {
     /// it) in at most 7. Halving took 53 and 25.
     #[test]
     fn the_event_search_steps_off_a_crossing_it_has_found() {
-        let cases: [(fn(f64) -> f64, f64, f64, f64, usize); 3] = [
+        // The function, its bracket, its crossing and the most evaluations allowed.
+        type Case = (fn(f64) -> f64, f64, f64, f64, usize);
+        let cases: [Case; 3] = [
             (|t| t - 0.3, 0.0, 1.0, 0.3, 3),
             (|t| 0.3 - t, 0.0, 1.0, 0.3, 3),
             (|t| -t.cos(), 0.0, 3.0, std::f64::consts::FRAC_PI_2, 7),

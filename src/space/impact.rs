@@ -18,6 +18,9 @@ const U: f64 = f64::EPSILON / 2.0;
 
 /// Values whose size is outside `[2^-900, 2^900]` go to the exact form (products and the
 /// double-double error terms must neither overflow nor underflow).
+// `#[inline(always)]` on this file's binary64 path: it is inlined into the table's row loop,
+// which is compiled for AVX2 and FMA where the processor has them (`table::runs::chunk`).
+#[inline(always)]
 fn in_range(x: f64) -> bool {
     x == 0.0 || (x.abs() > 1e-270 && x.abs() < 1e270)
 }
@@ -30,24 +33,29 @@ struct Bounded {
 }
 
 impl Bounded {
+    #[inline(always)]
     fn exact(v: Dd) -> Bounded {
         Bounded { v, err: 0.0 }
     }
+    #[inline(always)]
     fn mag(&self) -> f64 {
         self.v.hi.abs() * (1.0 + 4.0 * U)
     }
     /// `a + b`: the double-double sum is within `4 u^2 |a + b|`-ish; bounded by the terms.
+    #[inline(always)]
     fn add(self, o: Bounded) -> Bounded {
         let v = self.v + o.v;
         let err = self.err + o.err + 8.0 * U * U * (self.mag() + o.mag());
         Bounded { v, err }
     }
+    #[inline(always)]
     fn mul(self, o: Bounded) -> Bounded {
         let v = self.v * o.v;
         let err =
             self.err * o.mag() + o.err * self.mag() + self.err * o.err + 8.0 * U * U * v.hi.abs();
         Bounded { v, err }
     }
+    #[inline(always)]
     fn div(self, o: Bounded) -> Bounded {
         let v = self.v / o.v;
         let d = o.mag() * (1.0 - 8.0 * U) - o.err;
@@ -59,6 +67,7 @@ impl Bounded {
         Bounded { v, err }
     }
     /// The binary64 nearest the value, when the error bound cannot change it.
+    #[inline(always)]
     fn round(self) -> Option<f64> {
         let r = self.v.hi + self.v.lo;
         let margin = 2.0 * self.err + 4.0 * U * U * r.abs();
@@ -70,6 +79,7 @@ impl Bounded {
 
 /// The final velocities of two bodies of masses `m` with velocities `v` meeting along `n` with
 /// restitution `e`, each component correctly rounded.
+#[inline(always)]
 pub fn general<const D: usize>(
     m: [f64; 2],
     v: [[f64; D]; 2],
@@ -81,6 +91,7 @@ pub fn general<const D: usize>(
 
 /// The double-double evaluation alone: `None` where its error bound cannot decide a rounding
 /// (then `exact` does).
+#[inline(always)]
 pub fn bounded<const D: usize>(
     m: [f64; 2],
     v: [[f64; D]; 2],
@@ -119,6 +130,7 @@ pub fn bounded<const D: usize>(
 }
 
 impl Bounded {
+    #[inline(always)]
     fn neg(self) -> Bounded {
         Bounded {
             v: -self.v,

@@ -239,6 +239,8 @@ impl RowWriter {
 
     /// Writes one row of a table of runs: a NaN value is a missing cell, and `error` goes in
     /// the text column (the value there is ignored).
+    // Inlined into the row loop compiled for AVX2 and FMA (`table::runs::chunk`).
+    #[inline(always)]
     pub fn row_of_run(
         &self,
         values: &[f64],
@@ -486,6 +488,7 @@ impl FieldCache {
     }
 
     /// The text of `v` (finite) in column `i`: a 32-byte slot and the text's length in it.
+    #[inline(always)]
     pub fn slot(&mut self, i: usize, v: f64) -> (&[u8; 32], usize) {
         self.format(i, v);
         let (_, text, len) = &self.last[i];
@@ -493,6 +496,7 @@ impl FieldCache {
     }
 
     /// The text of `v` (finite) in column `i`.
+    #[inline(always)]
     pub fn format(&mut self, i: usize, v: f64) -> &[u8] {
         let (bits, text, len) = &mut self.last[i];
         debug_assert!(v.is_finite(), "tables hold finite values only");
