@@ -890,6 +890,39 @@ fn a_contact_too_damped_to_integrate_is_refused_with_its_numbers() {
     }
     let m = message("1e200");
     assert!(m.contains("(zeta = 1.000e200) ends it that fast"), "{m}");
+    // Where the bound's restitution underflows too it is left out: k = 1e-130, omega0 =
+    // sqrt(2e-130) = 1.414e-65, zeta <= pi / (2e-100 omega0) = 1.111e165, whose e = 1 / (4
+    // zeta^2) is below the smallest subnormal.
+    let line = "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1e-130 --zeta 1e200";
+    let out = collide().arg("contact").args(args(line)).output().unwrap();
+    let m = String::from_utf8_lossy(&out.stderr)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        m.contains("a larger restitution (zeta <= 1.111e165 here);"),
+        "{m}"
+    );
+}
+
+/// The impulse model needs one restitution for all the pairs: a damping coefficient c = 0.4
+/// gives each pair its own (zeta = c / (2 sqrt(k mu)), mu = 2/3 and 6/5), so there is none;
+/// a damping ratio zeta = 0.2 gives every pair the same, e = exp(-2 zeta acos(zeta) /
+/// sqrt(1 - zeta^2)) = 0.57174 (the linear law's contact ends where its force does).
+#[test]
+fn the_impulse_model_needs_one_restitution_for_the_pairs() {
+    let base = "-m 1,2,3 -x 0,2,4 --sizes 1,1,1 -v 1,0,-1 --stiffness 100";
+    let j = run(&args(&format!("{base} --damping 0.4")));
+    assert!(j["impulse_model"].is_null(), "{}", j["impulse_model"]);
+    let j = run(&args(&format!("{base} --zeta 0.2")));
+    let zeta: f64 = 0.2;
+    let e = (-2.0 * zeta * zeta.acos() / (1.0 - zeta * zeta).sqrt()).exp();
+    rel(
+        j["impulse_model"]["e"].as_f64().unwrap(),
+        e,
+        1e-14,
+        "the pairs' e",
+    );
 }
 
 /// The JSON names the law the run used, as `--law` spells it.
