@@ -681,7 +681,8 @@ fn library_setup(
 
 /// Work-precision's exact reference (one contact, in closed form): an undamped linear wall
 /// has e = 1, so a body moving towards it leaves with -v; one moving away never touches it
-/// and keeps v. On either wall (the guards on the direction, each way).
+/// and keeps v. On either wall (the guards on the direction, each way). A pair (masses 1 and 3,
+/// speeds 2 and 0, mu = 3/4) takes J = (1 + e) mu u = 2 x 3/4 x 2 = 3: -1 and 1.
 #[test]
 fn the_exact_reference_bounces_only_towards_a_wall() {
     use collide::contact::{LawKind, work};
@@ -696,6 +697,14 @@ fn the_exact_reference_bounces_only_towards_a_wall() {
         let exact = work::exact(&setup).unwrap().expect("one contact");
         assert_eq!(exact, vec![want], "walls {walls:?}, v = {v}");
     }
+    let bodies = library_setup(
+        &[(1.0, 0.0, 2.0, 1.0), (3.0, 2.0, 0.0, 1.0)],
+        LawKind::Linear,
+        1.0,
+    )
+    .bodies;
+    let setup = collide::contact::Setup::new(bodies, (None, None), linear_laws());
+    assert_eq!(work::exact(&setup).unwrap(), Some(vec![-1.0, 1.0]));
 }
 
 /// The speed scale is the largest relative speed at the start: between the bodies (two at 3
@@ -775,6 +784,25 @@ fn the_library_refuses_overlaps_and_contacts_start_when_the_gap_closes() {
     let apart = simulated(&[(1.0, 0.0, 1.0, 1.0), (1.0, 5.0, 0.0, 3.0)]).unwrap();
     let start = apart.contacts[0].start;
     assert!((start - 3.0).abs() <= 4.0 * f64::EPSILON * 3.0, "{start}");
+}
+
+/// The default step of a fixed-step method, from the contacts' durations pi / omega0: the
+/// pair (k = 1, mu = 1/2) lasts pi / sqrt 2 = 2.221 s, the wall (k = 16, m = 1) pi / 4 =
+/// 0.785 s. An explicit method takes 64 steps of the shortest (pi / 256: stability), an
+/// implicit one 1000 of the longest (pi / (1000 sqrt 2): accuracy on the slowest).
+#[test]
+fn fixed_steps_default_to_the_contacts_durations() {
+    let line = "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 5 --wall-stiffness 16 --method";
+    let pi = std::f64::consts::PI;
+    for (method, dt) in [
+        ("rk4", pi / 256.0),
+        ("verlet", pi / 256.0),
+        ("implicit-euler", pi / 2f64.sqrt() / 1000.0),
+        ("implicit-midpoint", pi / 2f64.sqrt() / 1000.0),
+    ] {
+        let j = run(&args(&format!("{line} {method}")));
+        rel(j["dt"].as_f64().unwrap(), dt, 4.0 * f64::EPSILON, method);
+    }
 }
 
 /// Work counters: a fixed-step method costs its stages per step (RK4 4, Verlet 2, symplectic
