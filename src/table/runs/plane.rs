@@ -168,11 +168,13 @@ fn cross_dot(a: [f64; 2], b: [f64; 2]) -> (f64, f64) {
 #[inline(always)]
 fn direction(a: [f64; 2]) -> [f64; 2] {
     let big = a[0].abs().max(a[1].abs());
-    // floor(log2 big): a normal number's exponent field; a subnormal's from log2.
+    // floor(log2 big): a normal number's exponent field; a subnormal's from its highest bit
+    // (its value is its bits times 2^-1074). Not `log2`, which the optimiser computes on every
+    // call, to select after (2% of a planar row's instructions).
     let k = if big >= f64::MIN_POSITIVE {
         exponent(big)
     } else {
-        big.log2().floor() as i32
+        63 - big.to_bits().leading_zeros() as i32 - 1074
     };
     // In two factors, each a normal power of two (k runs from -1074 to 1023).
     a.map(|x| x * pow2(-k / 2) * pow2(-k + k / 2))
@@ -470,6 +472,20 @@ impl Kind for PlaneSweep {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A vector's direction is it times a power of two, its largest component in [1, 2):
+    /// normal and subnormal components (2^-1074 is the smallest, 3 x 2^-1074 has its highest
+    /// bit at 2^-1073).
+    #[test]
+    fn directions_by_powers_of_two() {
+        let tiny = f64::from_bits(1);
+        assert_eq!(direction([tiny, 0.0]), [1.0, 0.0]);
+        assert_eq!(direction([3.0 * tiny, -tiny]), [1.5, -0.5]);
+        assert_eq!(direction([-6.0, 1.0]), [-1.5, 0.25]);
+        // 1e300 = 1.49 x 2^996.
+        let scale = 2f64.powi(-996);
+        assert_eq!(direction([1.0, 1e300]), [scale, 1e300 * scale]);
+    }
 
     #[test]
     fn equal_disks_head_on_and_at_the_edge() {
