@@ -151,15 +151,50 @@ fn write_cheap<K: Kind>(
             Some(Ok(r))
         };
         let place = |r: u64, point: &[(Knob, f64)]| format!("run {} ({})", r + 1, describe(point));
-        chunk(
-            kind, &mut point, next, place, cells, writer, skip_bad, &errors,
-        )
+        let table = Chunks::new(kind, cells, writer, skip_bad, &errors);
+        chunk(&table, &mut point, next, place)
     };
     let starts = (rows.start..rows.end).step_by(CHUNK_ROWS);
     let mut summary = write_chunks(starts, solve, sink, progress)?;
     summary.errors = errors.load(Ordering::Relaxed);
     Ok(summary)
 }
+
+/// What every chunk of a table of cheap runs shares: the kind, the columns and their writer,
+/// whether a failed run is skipped, and the count of failed runs written as rows.
+struct Chunks<'a, K: Kind> {
+    kind: &'a K,
+    cells: &'a [Cell<K::Col>],
+    writer: &'a RowWriter,
+    skip_bad: bool,
+    errors: &'a std::sync::atomic::AtomicU64,
+}
+
+impl<'a, K: Kind> Chunks<'a, K> {
+    fn new(
+        kind: &'a K,
+        cells: &'a [Cell<K::Col>],
+        writer: &'a RowWriter,
+        skip_bad: bool,
+        errors: &'a std::sync::atomic::AtomicU64,
+    ) -> Self {
+        Chunks {
+            kind,
+            cells,
+            writer,
+            skip_bad,
+            errors,
+        }
+    }
+}
+
+impl<K: Kind> Clone for Chunks<'_, K> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<K: Kind> Copy for Chunks<'_, K> {}
 
 /// `cheap_chunk` compiled for the processor: for x86-64-v3 (AVX2 and FMA: the double-double
 /// arithmetic's `mul_add` one instruction instead of a call, three-operand forms) where it has
@@ -168,64 +203,54 @@ fn write_cheap<K: Kind>(
 /// ask for, and `mul_add` is the correctly rounded fused product either way
 /// (`v3_writes_the_bytes_of_the_baseline` compares them). A planar row takes 19% fewer
 /// instructions and 5% less time (docs/benchmarks.md).
-#[allow(clippy::too_many_arguments)]
 fn chunk<K: Kind>(
-    kind: &K,
+    table: &Chunks<K>,
     point: &mut Vec<(Knob, f64)>,
     next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
     place: impl Fn(u64, &[(Knob, f64)]) -> String,
-    cells: &[Cell<K::Col>],
-    writer: &RowWriter,
-    skip_bad: bool,
-    errors: &std::sync::atomic::AtomicU64,
 ) -> super::engine::ChunkOut {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the processor has every feature `cheap_chunk_v3` is compiled for.
-        return unsafe {
-            cheap_chunk_v3(kind, point, next, place, cells, writer, skip_bad, errors)
-        };
+        return unsafe { cheap_chunk_v3(table, point, next, place) };
     }
-    cheap_chunk(kind, point, next, place, cells, writer, skip_bad, errors)
+    cheap_chunk(table, point, next, place)
 }
 
 /// `cheap_chunk` for x86-64-v3: what it inlines (the kind's run and columns, marked
 /// `#[inline(always)]` for this, the impact, the row's text) is compiled with these features.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-#[allow(clippy::too_many_arguments)]
 fn cheap_chunk_v3<K: Kind>(
-    kind: &K,
+    table: &Chunks<K>,
     point: &mut Vec<(Knob, f64)>,
     next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
     place: impl Fn(u64, &[(Knob, f64)]) -> String,
-    cells: &[Cell<K::Col>],
-    writer: &RowWriter,
-    skip_bad: bool,
-    errors: &std::sync::atomic::AtomicU64,
 ) -> super::engine::ChunkOut {
-    cheap_chunk(kind, point, next, place, cells, writer, skip_bad, errors)
+    cheap_chunk(table, point, next, place)
 }
 
 /// The rows of a chunk of cheap runs (`kind.cheap()`): `next` puts each point's parameters in
 /// `point` and gives its number (or an input row that could not be read, which stops the chunk
 /// or is skipped); `place` names a point in a message (only a failed one: formatting costs).
-#[allow(clippy::too_many_arguments)]
 // Always inlined: into `cheap_chunk_v3` too, which is what gives it the features.
 #[inline(always)]
 fn cheap_chunk<K: Kind>(
-    kind: &K,
+    table: &Chunks<K>,
     point: &mut Vec<(Knob, f64)>,
     mut next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
     place: impl Fn(u64, &[(Knob, f64)]) -> String,
-    cells: &[Cell<K::Col>],
-    writer: &RowWriter,
-    skip_bad: bool,
-    errors: &std::sync::atomic::AtomicU64,
 ) -> super::engine::ChunkOut {
     use super::engine::ChunkOut;
     use super::writer::Sealed;
     use std::sync::atomic::Ordering;
+    let Chunks {
+        kind,
+        cells,
+        writer,
+        skip_bad,
+        errors,
+    } = *table;
     let with_error = error_at(cells).is_some();
     let mut buf = writer.buffer(CHUNK_ROWS);
     let mut fields = FieldCache::new(cells.len());
@@ -311,16 +336,10 @@ pub fn write_points<K: Kind>(
                 line
             }))
         };
-        chunk(
-            kind,
-            &mut Vec::new(),
-            next,
-            |line, _| format!("line {line}"),
-            cells,
-            writer,
-            skip_bad,
-            &errors,
-        )
+        let table = Chunks::new(kind, cells, writer, skip_bad, &errors);
+        chunk(&table, &mut Vec::new(), next, |line, _| {
+            format!("line {line}")
+        })
     };
     let mut summary = write_chunks(chunks, solve, &mut sink, progress)?;
     summary.errors = errors.load(Ordering::Relaxed);

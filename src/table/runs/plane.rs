@@ -521,7 +521,7 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn v3_writes_the_bytes_of_the_baseline() {
-        use crate::table::runs::{cells, cheap_chunk, cheap_chunk_v3, error_at};
+        use crate::table::runs::{Chunks, cells, cheap_chunk, cheap_chunk_v3, error_at};
         use crate::table::writer::{RowFormat, RowWriter, Sealed};
         use std::sync::atomic::AtomicU64;
         if !(std::arch::is_x86_feature_detected!("avx2")
@@ -591,18 +591,13 @@ mod tests {
                 };
                 let place = |_: u64, _: &[(Knob, f64)]| String::new();
                 let errors = AtomicU64::new(0);
+                let table = Chunks::new(&kind, &cells, &writer, false, &errors);
                 let mut point = Vec::new();
                 let out = if v3 {
                     // SAFETY: the features were detected above.
-                    unsafe {
-                        cheap_chunk_v3(
-                            &kind, &mut point, next, place, &cells, &writer, false, &errors,
-                        )
-                    }
+                    unsafe { cheap_chunk_v3(&table, &mut point, next, place) }
                 } else {
-                    cheap_chunk(
-                        &kind, &mut point, next, place, &cells, &writer, false, &errors,
-                    )
+                    cheap_chunk(&table, &mut point, next, place)
                 };
                 assert_eq!(out.rows, points.len() as u64);
                 let Ok(Sealed::Bytes(bytes)) = out.body else {
