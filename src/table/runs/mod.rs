@@ -202,7 +202,7 @@ impl<K: Kind> Copy for Chunks<'_, K> {}
 /// operations round alike in both, the compiler fuses no `a * b + c` that the source does not
 /// ask for, and `mul_add` is the correctly rounded fused product either way
 /// (`v3_writes_the_bytes_of_the_baseline` compares them). A planar row takes 19% fewer
-/// instructions and 5% less time (docs/benchmarks.md).
+/// instructions and 5-19% less time (docs/benchmarks.md).
 fn chunk<K: Kind>(
     table: &Chunks<K>,
     point: &mut Vec<(Knob, f64)>,
