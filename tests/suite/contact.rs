@@ -498,7 +498,7 @@ fn work_precision_stops_a_ladder_once_it_is_accurate_enough() {
 /// least two iterations a step (the first corrects the predictor by about the step times a
 /// rate, far above rounding), and about two in all (it converges quadratically: on the linear
 /// law the first lands exactly, a linear system). So 2 to 3 Jacobians a step, on both laws
-/// and both implicit one-step methods.
+/// and both implicit one-step methods, and one evaluation more than Jacobians a solve.
 #[test]
 fn implicit_steps_iterate_newton_to_rounding() {
     for law in ["linear", "hertz"] {
@@ -510,6 +510,14 @@ fn implicit_steps_iterate_newton_to_rounding() {
             let steps = j["stats"]["steps"].as_f64().unwrap();
             let jacobians = j["stats"]["jacobians"].as_f64().unwrap();
             assert!(steps > 2000.0, "{law} {method}: {steps} steps");
+            // One evaluation for the predictor of each solve (a step, or a partial step of the
+            // event search: a few), then one a Newton iteration (each with its Jacobian).
+            let evals = j["stats"]["rhs_evals"].as_f64().unwrap();
+            let solves = evals - jacobians;
+            assert!(
+                solves >= steps && solves <= steps + 50.0,
+                "{law} {method}: {evals} evaluations, {jacobians} Jacobians, {steps} steps"
+            );
             assert!(
                 (2.0 * steps..=3.0 * steps).contains(&jacobians),
                 "{law} {method}: {jacobians} Jacobians for {steps} steps"
@@ -802,6 +810,27 @@ fn fixed_steps_default_to_the_contacts_durations() {
     ] {
         let j = run(&args(&format!("{line} {method}")));
         rel(j["dt"].as_f64().unwrap(), dt, 4.0 * f64::EPSILON, method);
+    }
+}
+
+/// A contact that begins at an approach below 1e-8 of the run's speed scale (its largest
+/// relative speed) counts as pressed, not as an impact, and has no restitution. Bodies 1 and 2
+/// touch and close at 1e-5 while body 3 leaves: at 1e4 (scale 1e4, threshold 1e-4: pressed)
+/// or at 1e-3 (threshold 1e-11: an impact, undamped, e = 1).
+#[test]
+fn a_contact_closing_far_slower_than_the_run_is_pressed() {
+    for (v3, impact) in [("1e4", false), ("1e-3", true)] {
+        let j = run(&args(&format!(
+            "-m 1,1,1 -x 0,1,10 -v 1e-5,0,{v3} --sizes 1,1,1 --stiffness 1"
+        )));
+        let c = &j["contacts"][0];
+        assert_eq!(c["between"], serde_json::json!([1, 2]), "{v3}");
+        rel(c["speed"].as_f64().unwrap(), 1e-5, 1e-7, "closing speed");
+        if impact {
+            rel(c["restitution"].as_f64().unwrap(), 1.0, 1e-8, "e");
+        } else {
+            assert!(c.get("restitution").is_none_or(|e| e.is_null()), "{c}");
+        }
     }
 }
 
