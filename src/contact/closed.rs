@@ -50,11 +50,15 @@ impl Linear {
             2.0 * zeta.acos() / ((1.0 - zeta) * (1.0 + zeta)).sqrt()
         } else if zeta == 1.0 {
             2.0
-        } else {
+        } else if zeta < 1e150 {
             // artanh(s / zeta) = ln(zeta + s), since (zeta - s)(zeta + s) = 1: no cancellation
             // in 1 - s/zeta when zeta is large.
             let s = ((zeta - 1.0) * (zeta + 1.0)).sqrt();
             2.0 * ((zeta - 1.0) + s).ln_1p() / s
+        } else {
+            // (zeta - 1)(zeta + 1) would overflow from 1.3e154 (and made this NaN): here s =
+            // zeta and zeta + s = 2 zeta, each to a relative 1/(2 zeta^2), far below an ulp.
+            2.0 * (std::f64::consts::LN_2 + zeta.ln()) / zeta
         }
     }
 
@@ -196,6 +200,30 @@ mod tests {
             assert!((t - 2.0).abs() < 1e-8, "zeta {z}: {t}");
         }
         assert!((Linear::restitution_of(1.0) - (-2.0f64).exp()).abs() < 1e-16);
+    }
+
+    /// Overdamped to the top of binary64: omega0 t_c = 2 ln(zeta + s) / s with s the square
+    /// root of zeta^2 less 1, which is 2 ln(2 zeta) / zeta once zeta^2 is beyond reach (from
+    /// 1.3e154 it overflowed, and t_c and e were NaN); the two forms meet at 1e150. So e =
+    /// exp(-2 ln(2 zeta)) = 1 / (4 zeta^2): 2.5e-321 (subnormal) at 1e160, 0 at 1e200 and at
+    /// the largest zeta.
+    #[test]
+    fn heavily_overdamped_contacts_stay_finite() {
+        let by_hand = |z: f64| 2.0 * (2.0 * z).ln() / z;
+        for z in [1e149, 1e151, 1e160, 1e200, 1e300] {
+            let t = Linear::scaled_contact_time(z);
+            assert!(
+                (t - by_hand(z)).abs() <= 4.0 * f64::EPSILON * t,
+                "zeta {z}: {t}"
+            );
+        }
+        let below = Linear::scaled_contact_time(1e150 * (1.0 - f64::EPSILON));
+        let above = Linear::scaled_contact_time(1e150);
+        assert!((below - above).abs() <= 4.0 * f64::EPSILON * above);
+        let e = Linear::restitution_of(1e160);
+        assert!((e - 2.5e-321).abs() <= 1e-323, "{e}");
+        assert_eq!(Linear::restitution_of(1e200), 0.0);
+        assert_eq!(Linear::restitution_of(f64::MAX), 0.0);
     }
 
     #[test]
