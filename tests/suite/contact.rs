@@ -980,6 +980,23 @@ fn the_impulse_model_needs_one_restitution_for_the_pairs() {
         1e-14,
         "the pairs' e",
     );
+    // "One" is to 1e-12 relative. Overdamped (c = 70.7, k = 100, zeta = c / (2 sqrt(k mu)) =
+    // 5.0): equal masses share e = exp(-2 zeta ln(zeta + s) / s), s = sqrt(zeta^2 - 1), =
+    // 0.0092872; a third mass of 1 + 2e-11 moves its pair's mu by 5e-12 and its e by 9.4e-12
+    // relative: two restitutions, no model.
+    let base = "-x 0,2,4 --sizes 1,1,1 -v 1,0,0 --stiffness 100 --damping 70.7";
+    let j = run(&args(&format!("-m 1,1,1 {base}")));
+    let zeta: f64 = 70.7 / (2.0 * 50f64.sqrt());
+    let s = ((zeta - 1.0) * (zeta + 1.0)).sqrt();
+    let e = (-2.0 * zeta * (zeta + s).ln() / s).exp();
+    rel(
+        j["impulse_model"]["e"].as_f64().unwrap(),
+        e,
+        1e-13,
+        "overdamped e",
+    );
+    let j = run(&args(&format!("-m 1,1,1.00000000002 {base}")));
+    assert!(j["impulse_model"].is_null(), "{}", j["impulse_model"]);
 }
 
 /// The JSON names the law the run used, as `--law` spells it.
