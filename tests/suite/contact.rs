@@ -342,6 +342,43 @@ fn explicit_steps_past_the_stability_limit_are_refused() {
     ]);
     let j = run(&args);
     rel(floats(&j["v"])[0], -1.0, 1e-6, "verlet below its limit");
+    // RK4's limit on the imaginary axis is omega h = 2 sqrt 2 = 2.828: refused at h = 2.9e-3,
+    // run at 2.7e-3.
+    for (dt, refused_here) in [("2.9e-3", true), ("2.7e-3", false)] {
+        let mut args = wall.to_vec();
+        args.extend(["--wall-stiffness", "1e6", "--method", "rk4", "--dt", dt]);
+        if refused_here {
+            refused(&args, "omega dt = 2.900 > 2.828");
+        } else {
+            assert_eq!(run(&args)["method"], "rk4");
+        }
+    }
+}
+
+/// Work counters of the adaptive methods: Tsitouras 5(4) has 7 stages, the first the last
+/// one of the step before (FSAL): 6 evaluations a step taken or rejected, and a few to
+/// start; BDF and SDIRK evaluate at least once a step.
+#[test]
+fn adaptive_methods_count_their_evaluations() {
+    for method in ["tsit45", "bdf", "sdirk"] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --method {method}"
+        )));
+        let n = |k: &str| j["stats"][k].as_u64().unwrap();
+        let (steps, evals) = (n("steps") + n("rejected"), n("rhs_evals"));
+        assert!(steps > 10, "{method}: {steps} steps");
+        if method == "tsit45" {
+            assert!(
+                (6 * steps..=6 * steps + 10).contains(&evals),
+                "{method}: {evals} evaluations for {steps} steps"
+            );
+        } else {
+            assert!(
+                evals >= steps,
+                "{method}: {evals} evaluations for {steps} steps"
+            );
+        }
+    }
 }
 
 #[test]
