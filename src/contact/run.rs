@@ -143,7 +143,7 @@ fn locate(
             } else if c <= a {
                 (a + reach * close).min(mid)
             } else {
-                // Not a number (both values infinite): halve the bracket.
+                // Not a number (0/0 or inf/inf): halve the bracket.
                 mid
             };
             reach *= 2.0;

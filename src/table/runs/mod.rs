@@ -188,14 +188,6 @@ impl<'a, K: Kind> Chunks<'a, K> {
     }
 }
 
-impl<K: Kind> Clone for Chunks<'_, K> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<K: Kind> Copy for Chunks<'_, K> {}
-
 /// `cheap_chunk` compiled for the processor: for x86-64-v3 (AVX2 and FMA: the double-double
 /// arithmetic's `mul_add` one instruction instead of a call, three-operand forms) where it has
 /// them, else for the x86-64 baseline the binary is built for. The same bytes either way: IEEE
@@ -244,13 +236,13 @@ fn cheap_chunk<K: Kind>(
     use super::engine::ChunkOut;
     use super::writer::Sealed;
     use std::sync::atomic::Ordering;
-    let Chunks {
-        kind,
-        cells,
-        writer,
-        skip_bad,
-        errors,
-    } = *table;
+    let (kind, cells, writer, skip_bad, errors) = (
+        table.kind,
+        table.cells,
+        table.writer,
+        table.skip_bad,
+        table.errors,
+    );
     let with_error = error_at(cells).is_some();
     let mut buf = writer.buffer(CHUNK_ROWS);
     let mut fields = FieldCache::new(cells.len());
