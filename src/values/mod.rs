@@ -11,4 +11,6 @@ pub mod output;
 pub mod quantity;
 pub mod rational;
 pub mod terminal;
+#[cfg(feature = "cli")]
+pub mod uncached;
 pub mod units;

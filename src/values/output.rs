@@ -21,6 +21,8 @@ use std::time::{Duration, Instant};
 
 use libc::c_char;
 
+use super::uncached::Uncached;
+
 /// Temporary files being written, as C strings the signal handler can pass to `unlink` (it may
 /// take no lock and allocate nothing). A string is never freed: a handler on another thread may
 /// be reading it while its slot is cleared (a few bytes per file, a few files per run).
@@ -158,7 +160,7 @@ pub enum Output {
         tmp: PathBuf,
         slot: usize,
         path: PathBuf,
-        file: BufWriter<Streamed>,
+        file: Disk,
         done: bool,
     },
     Direct(BufWriter<Streamed>),
@@ -261,6 +263,53 @@ impl Write for Streamed {
     }
 }
 
+/// A temporary file's writer: around the page cache where the file system allows (a table of
+/// gigabytes then costs the kernel no copy: see [`Uncached`]), else through it.
+pub enum Disk {
+    Uncached(Uncached),
+    Cached(BufWriter<Streamed>),
+}
+
+impl Disk {
+    fn create(path: &Path) -> io::Result<Disk> {
+        Ok(match Uncached::create(path)? {
+            Some(u) => Disk::Uncached(u),
+            None => Disk::Cached(BufWriter::with_capacity(
+                1 << 20,
+                Streamed::new(File::create(path)?),
+            )),
+        })
+    }
+
+    fn file(&self) -> &File {
+        match self {
+            Disk::Uncached(u) => u.file(),
+            Disk::Cached(b) => &b.get_ref().file,
+        }
+    }
+}
+
+impl Write for Disk {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        match self {
+            Disk::Uncached(u) => u.write(buf),
+            Disk::Cached(b) => b.write(buf),
+        }
+    }
+    fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
+        match self {
+            Disk::Uncached(u) => u.write_all(buf),
+            Disk::Cached(b) => b.write_all(buf),
+        }
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        match self {
+            Disk::Uncached(u) => u.flush(),
+            Disk::Cached(b) => b.flush(),
+        }
+    }
+}
+
 fn direct(file: File) -> Output {
     Output::Direct(BufWriter::with_capacity(1 << 20, Streamed::new(file)))
 }
@@ -309,7 +358,7 @@ impl Output {
         }
         let tmp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
         let slot = register(&tmp)?;
-        let created = match File::create(&tmp) {
+        let created = match Disk::create(&tmp) {
             Ok(f) => f,
             // A file we may write in a folder we may not: written in place, as `>` would.
             Err(e) if keep.is_some() && e.kind() == io::ErrorKind::PermissionDenied => {
@@ -331,17 +380,16 @@ impl Output {
                 return Err(e);
             }
         };
-        let file = BufWriter::with_capacity(1 << 20, Streamed::new(created));
         let out = Output::File {
             tmp,
             slot,
             path,
-            file,
+            file: created,
             done: false,
         };
         // Dropped on an error: the temporary file is removed.
         if let (Some(permissions), Output::File { file, .. }) = (keep, &out) {
-            file.get_ref().file.set_permissions(permissions)?;
+            file.file().set_permissions(permissions)?;
         }
         Ok(out)
     }
@@ -364,7 +412,7 @@ impl Output {
                 done,
             } => {
                 file.flush().map_err(explain)?;
-                file.get_ref().file.sync_all()?;
+                file.file().sync_all()?;
                 std::fs::rename(&*tmp, path)?;
                 unregister(*slot);
                 *done = true;
@@ -378,21 +426,24 @@ impl Write for Output {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
         match self {
             Output::Stdout(s) => s.write(buf),
-            Output::File { file, .. } | Output::Direct(file) => file.write(buf),
+            Output::File { file, .. } => file.write(buf),
+            Output::Direct(file) => file.write(buf),
         }
         .map_err(explain)
     }
     fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
         match self {
             Output::Stdout(s) => s.write_all(buf),
-            Output::File { file, .. } | Output::Direct(file) => file.write_all(buf),
+            Output::File { file, .. } => file.write_all(buf),
+            Output::Direct(file) => file.write_all(buf),
         }
         .map_err(explain)
     }
     fn flush(&mut self) -> io::Result<()> {
         match self {
             Output::Stdout(s) => s.flush(),
-            Output::File { file, .. } | Output::Direct(file) => file.flush(),
+            Output::File { file, .. } => file.flush(),
+            Output::Direct(file) => file.flush(),
         }
         .map_err(explain)
     }
