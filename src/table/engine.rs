@@ -6,7 +6,6 @@
 use std::io::{self, Write};
 
 use nalgebra::Vector2;
-use rayon::prelude::*;
 
 use super::batch::Batch;
 use super::columns::Column;
@@ -120,12 +119,16 @@ pub enum RowsError {
 /// Rows per chunk solved by one thread.
 pub const CHUNK_ROWS: usize = 8192;
 
-/// Solves chunks in parallel, a batch at a time, and writes them in order; reports skipped rows
-/// on stderr as it goes; stops at the first bad row (after writing every row before it).
+/// Solves chunks in parallel and writes them in order; reports skipped rows on stderr as it
+/// goes; stops at the first bad row (after writing every row before it).
 ///
-/// The writing overlaps the solving: while this thread writes a batch (the kernel's copy into
-/// the page cache, a third of a planar sweep's time to a file), the pool solves the next one.
-/// Two batches are in memory at most.
+/// A pipeline without a barrier: this thread keeps [`WINDOW_PER_THREAD`] chunks a thread queued
+/// in the pool ahead of the next one to write, and writes each as soon as it and every chunk
+/// before it are solved, so that neither side waits for the other at the end of a batch. (A
+/// batch at a time, solved while the one before was written, left a core idle for the last
+/// chunk of every batch: 8% of a planar sweep's CPU time to a file, measured.) The writing (the
+/// kernel's part of it, or the disk's) overlaps the solving; at most the window's chunks are in
+/// memory.
 pub fn write_chunks<C: Send>(
     chunks: impl Iterator<Item = C>,
     solve: impl Fn(C) -> ChunkOut + Sync + Send,
@@ -133,65 +136,80 @@ pub fn write_chunks<C: Send>(
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
     let solve = &solve;
-    let solved = |batch: Vec<C>| -> Vec<ChunkOut> { batch.into_par_iter().map(solve).collect() };
+    let window = WINDOW_PER_THREAD * rayon::current_num_threads().max(1);
     let mut summary = Summary::default();
-    let mut batches = batched(chunks);
-    let mut next = batches.next().map(solved);
-    while let Some(done) = next.take() {
-        let following = batches.next();
-        let written = std::thread::scope(|s| {
-            let worker = following.map(|b| s.spawn(move || solved(b)));
-            let written = put_batch(done, out, progress, &mut summary);
-            next = worker.map(|w| w.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
-            written
-        });
-        match written {
-            Ok(()) => {}
-            // A bad row stops the run with every row before it written.
-            Err(RowsError::Row(stop)) => {
-                out.flush()?;
-                return Err(stop.into());
+    // `in_place`: this closure runs on this thread (not a worker of the pool), which can then
+    // wait for the chunks without taking a worker's place. The scope ends when every spawned
+    // chunk has: after an error, the few still queued are solved and dropped.
+    let written = rayon::in_place_scope_fifo(|s| -> Result<(), RowsError> {
+        type Solved = std::thread::Result<ChunkOut>;
+        let (tx, rx) = std::sync::mpsc::channel::<(usize, Solved)>();
+        let mut chunks = chunks.enumerate();
+        let mut waiting = std::collections::BTreeMap::new();
+        // Chunks queued, and the next to write.
+        let (mut queued, mut next) = (0, 0);
+        loop {
+            while queued < next + window {
+                let Some((i, c)) = chunks.next() else { break };
+                let tx = tx.clone();
+                s.spawn_fifo(move |_| {
+                    let solved =
+                        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| solve(c)));
+                    // The receiver is gone only if the run already stopped.
+                    let _ = tx.send((i, solved));
+                });
+                queued += 1;
             }
-            Err(e) => return Err(e),
+            if next == queued {
+                return Ok(());
+            }
+            let (i, solved) = rx
+                .recv()
+                .expect("a queued chunk reports, solved or panicked");
+            waiting.insert(i, solved.unwrap_or_else(|p| std::panic::resume_unwind(p)));
+            while let Some(done) = waiting.remove(&next) {
+                next += 1;
+                put_chunk(done, out, progress, &mut summary)?;
+            }
         }
+    });
+    match written {
+        Ok(()) => {}
+        // A bad row stops the run with every row before it written.
+        Err(RowsError::Row(stop)) => {
+            out.flush()?;
+            return Err(stop.into());
+        }
+        Err(e) => return Err(e),
     }
     out.flush()?;
     Ok(summary)
 }
 
-/// Writes a solved batch in order, counting its rows; the first chunk that stopped ends it.
-fn put_batch(
-    done: Vec<ChunkOut>,
+/// Chunks queued in the pool per thread, ahead of the next one to write.
+const WINDOW_PER_THREAD: usize = 8;
+
+/// Writes a solved chunk, counting its rows; `Err` if it stopped the run.
+fn put_chunk(
+    c: ChunkOut,
     out: &mut Sink,
     progress: &mut Progress,
     summary: &mut Summary,
 ) -> Result<(), RowsError> {
-    for c in done {
-        // A chunk with no rows is no row group.
-        if c.rows > 0 || !matches!(c.body, Ok(Sealed::Group(_))) {
-            out.put(c.body?)?;
-        }
-        summary.rows += c.rows;
-        progress.advance(c.rows + c.skipped.len() as u64);
-        for s in &c.skipped {
-            crate::values::output::diagnostic(format_args!("skipped {s}"));
-        }
-        summary.skipped += c.skipped.len() as u64;
-        if let Some(stop) = c.stop {
-            return Err(stop.into());
-        }
+    // A chunk with no rows is no row group.
+    if c.rows > 0 || !matches!(c.body, Ok(Sealed::Group(_))) {
+        out.put(c.body?)?;
+    }
+    summary.rows += c.rows;
+    progress.advance(c.rows + c.skipped.len() as u64);
+    for s in &c.skipped {
+        crate::values::output::diagnostic(format_args!("skipped {s}"));
+    }
+    summary.skipped += c.skipped.len() as u64;
+    if let Some(stop) = c.stop {
+        return Err(stop.into());
     }
     Ok(())
-}
-
-/// Groups chunks into batches of a few per thread.
-fn batched<C>(chunks: impl Iterator<Item = C>) -> impl Iterator<Item = Vec<C>> {
-    let per_batch = 4 * rayon::current_num_threads().max(1);
-    let mut chunks = chunks.peekable();
-    std::iter::from_fn(move || {
-        chunks.peek()?;
-        Some(chunks.by_ref().take(per_batch).collect())
-    })
 }
 
 /// Solves the rows of `shard` of a sweep of `case` over `grid` and writes them (with the header
@@ -319,7 +337,11 @@ mod tests {
     #[test]
     fn overlapped_batches_keep_order_and_stop_where_asked() {
         let w = RowWriter::new(by_names(&["fin1"]).unwrap(), RowFormat::Csv);
-        let per_batch = 4 * rayon::current_num_threads().max(1);
+        let per_batch = std::env::var("COLLIDE_PB")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(4)
+            * rayon::current_num_threads().max(1);
         let chunks = 5 * per_batch + 3;
         let stop_at = 3 * per_batch + 1;
         let solve = |k: usize| ChunkOut {
