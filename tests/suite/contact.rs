@@ -1152,6 +1152,23 @@ fn bodies_that_pass_through_each_other_or_a_wall_are_refused_at_the_step_it_happ
     let j = run(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0"));
     let d = f(&j["contacts"][0]["max_overlap"]);
     rel(d, 0.5f64.sqrt(), 1e-9, "d_max = v / omega0");
+    // Unequal sizes, in either order (1 and 3: the centres meet at an overlap of 2, the sum of
+    // the half sizes; a mean taken of one size twice would put it at 1 or 3): an overlap of
+    // 3/2 (k = 2/9, mu = 1/2: d_max = sqrt(mu / k) = 3/2) runs; 5/2 (k = 2/25) is refused.
+    for sizes in ["1,3", "3,1"] {
+        let line = format!("-m 1,1 -x 0,3 --sizes {sizes} -v 1,0 --stiffness");
+        let j = run(&args(&format!("{line} {}", 2.0 / 9.0)));
+        let d = f(&j["contacts"][0]["max_overlap"]);
+        rel(
+            d,
+            1.5,
+            1e-9,
+            &format!("sizes {sizes}: d_max = sqrt(mu / k)"),
+        );
+        let (code, _, err) = outcome(&args(&format!("{line} 0.08")));
+        assert_eq!(code, 2, "sizes {sizes}: {err}");
+        assert!(err.contains("passed through each other"), "{err}");
+    }
 }
 
 #[test]
