@@ -27,8 +27,10 @@ use std::path::Path;
 /// size in use (a 512-byte device takes it too).
 pub const BLOCK: usize = 4096;
 
-/// Bytes sent to the disk a write at a time (and the buffer's size).
-const CAP: usize = 8 << 20;
+/// Bytes sent to the disk a write at a time (and the buffer's size): small enough to stay in a
+/// core's cache (2 MiB of L2 here) while the rows are copied in and the disk reads them out; 1
+/// MiB ran the 10 M-row planar sweep in 2.60-3.25 s, 8 MiB in 2.74-3.31 s (runs alternated).
+const CAP: usize = 1 << 20;
 
 /// A block's worth of bytes, aligned as direct I/O asks.
 #[repr(C, align(4096))]
@@ -37,8 +39,8 @@ struct Block([MaybeUninit<u8>; BLOCK]);
 /// A file being written, whole blocks around the page cache.
 pub struct Uncached {
     file: File,
-    /// The buffer: `CAP / BLOCK` blocks of capacity, never initialised as a whole (an 8 MiB
-    /// buffer costs only the pages written into).
+    /// The buffer: `CAP / BLOCK` blocks of capacity, never initialised as a whole (a small
+    /// output costs only the pages written into).
     blocks: Vec<Block>,
     /// Bytes in the buffer, all initialised (`blocks`' first `len` bytes).
     len: usize,
@@ -206,6 +208,7 @@ mod tests {
             CAP,
             CAP - BLOCK + 5,
             2 * CAP + 1,
+            5 * CAP + 3 * BLOCK,
             0,
             511,
             100_000,

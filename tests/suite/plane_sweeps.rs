@@ -520,3 +520,88 @@ fn a_batch_in_the_plane_refuses_what_it_cannot_read() {
         "{err}"
     );
 }
+
+/// A large planar sweep (250,000 rows: 31 chunks of the engine, more than the window it keeps
+/// queued ahead of the writer; 44 MB, so `-o` writes whole 1 MiB blocks around the page cache
+/// and a partial one through it): the file holds the bytes stdout gets, on one thread and two,
+/// as CSV and JSON Lines, and the rows follow the grid (b slow, e fast), none missing.
+#[test]
+fn a_large_sweep_to_a_file_is_stdout_in_grid_order() {
+    let dir = crate::common::scratch("large_planar_sweep");
+    for format in ["csv", "jsonl"] {
+        let args = [
+            "sweep",
+            "-m",
+            "1,1",
+            "-v",
+            "(1,0),0",
+            "--radii",
+            "1,1",
+            "--impact-parameter",
+            "0",
+            "--vary",
+            "b=0:1.99:250",
+            "--vary",
+            "e=0:1:1000",
+            "--columns",
+            "b,e,fin1x,fin2y",
+            "--format",
+            format,
+        ];
+        let text = stdout(&args);
+        let file = dir.join(format!("table.{format}"));
+        for threads in ["1", "2"] {
+            let _ = std::fs::remove_file(&file);
+            let out = collide()
+                .env("RAYON_NUM_THREADS", threads)
+                .args(args)
+                .arg("-o")
+                .arg(&file)
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let written = std::fs::read(&file).unwrap();
+            assert_eq!(
+                written.len(),
+                text.len(),
+                "{format}, {threads} threads: size"
+            );
+            assert!(
+                written == text.as_bytes(),
+                "{format}, {threads} threads: bytes"
+            );
+        }
+        // The grid's order: (b, e) strictly increasing, 250 x 1000 rows.
+        let points: Vec<(f64, f64)> = if format == "csv" {
+            text.lines()
+                .skip(1)
+                .map(|l| {
+                    let mut it = l.split(',').map(|x| x.parse::<f64>().unwrap());
+                    (it.next().unwrap(), it.next().unwrap())
+                })
+                .collect()
+        } else {
+            text.lines()
+                .map(|l| {
+                    let v: Value = serde_json::from_str(l).unwrap();
+                    (f(&v["b"]), f(&v["e"]))
+                })
+                .collect()
+        };
+        assert_eq!(points.len(), 250_000, "{format}");
+        assert_eq!(points[0], (0.0, 0.0));
+        assert_eq!(points[points.len() - 1], (1.99, 1.0));
+        for w in points.windows(2) {
+            assert!(
+                w[0].0 < w[1].0 || (w[0].0 == w[1].0 && w[0].1 < w[1].1),
+                "{format}: {:?} then {:?}",
+                w[0],
+                w[1]
+            );
+        }
+    }
+}
