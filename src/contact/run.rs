@@ -348,6 +348,45 @@ mod tests {
         }
     }
 
+    /// A step that gives a time or a state not finite stops the stretch with `NotFinite` at
+    /// that time, whichever of the two it is (either alone is enough), before any other check
+    /// reads the state; a finite step goes on.
+    #[test]
+    fn a_state_or_time_not_finite_stops_the_stretch() {
+        let sys = System {
+            m: vec![1.0, 2.0],
+            slots: Vec::new(),
+            active: Vec::new(),
+            d0: Vec::new(),
+        };
+        let y0 = [0.0, 5.0, 3.0, -1.0];
+        for (t, y, bad) in [
+            (0.5, [0.0, f64::NAN, 3.0, -1.0], true),
+            (0.5, [0.0, 5.0, f64::INFINITY, -1.0], true),
+            (f64::NAN, y0, true),
+            (f64::INFINITY, y0, true),
+            (0.5, y0, false),
+        ] {
+            let mut ledger = Ledger {
+                steps_left: 10,
+                energy_cap: f64::INFINITY,
+                ..Ledger::default()
+            };
+            let mut drive = |_: Ask| -> Result<(f64, Vec<f64>), Failure> { Ok((t, y.to_vec())) };
+            let end = segment(&mut drive, &sys, (0.0, &y0), 1.0, &mut ledger);
+            match end {
+                Err(Failure::NotFinite { t: at }) => {
+                    assert!(bad, "{t} {y:?} stopped");
+                    assert!(at.to_bits() == t.to_bits(), "at {at}, not {t}");
+                }
+                // The finite step repeats (the stub never reaches t = 1): the step budget.
+                Err(Failure::Steps(0)) => assert!(!bad, "{t} {y:?} went on"),
+                Err(other) => panic!("{t} {y:?}: {other}"),
+                Ok(_) => panic!("{t} {y:?}: ended"),
+            }
+        }
+    }
+
     /// The search's points, to 4 ulps: regula falsi's on `t^2 - 2` from [1, 2], with Illinois's
     /// halving of the end kept twice. In exact rationals (`f` at each point in brackets):
     /// 4/3 [-2/9] and 7/5 [-1/25] keep b twice, so b's value 2 is halved to 1 for the third,
@@ -372,6 +411,30 @@ mod tests {
             assert!(
                 (got - want).abs() <= 4.0 * f64::EPSILON * want,
                 "point {}: {got}, not {want}",
+                k + 1
+            );
+        }
+        // Mirrored (t -> 3 - t: `(3 - t)^2 - 2` from 2 on the old side at 1 to -1 on the new
+        // side at 2), the first two points fall on the new side, so it is a's value that is
+        // halved: the points are 3 less the ones above, 5/3, 8/5, 41/26, 582/367,
+        // 42932/27073. (Above, a's end is never kept twice.)
+        points.clear();
+        let mut g = |t: f64| -> Result<f64, Failure> {
+            points.push(t);
+            Ok((3.0 - t) * (3.0 - t) - 2.0)
+        };
+        locate(&mut g, (1.0, 2.0), (2.0, -1.0), &|v| v <= 0.0).unwrap();
+        let exact = [
+            5.0 / 3.0,
+            1.6,
+            41.0 / 26.0,
+            582.0 / 367.0,
+            42932.0 / 27073.0,
+        ];
+        for (k, (got, want)) in points.iter().zip(exact).enumerate() {
+            assert!(
+                (got - want).abs() <= 4.0 * f64::EPSILON * want,
+                "mirrored point {}: {got}, not {want}",
                 k + 1
             );
         }

@@ -727,7 +727,8 @@ fn library_setup(
 /// Work-precision's exact reference (one contact, in closed form): an undamped linear wall
 /// has e = 1, so a body moving towards it leaves with -v; one moving away never touches it
 /// and keeps v. On either wall (the guards on the direction, each way). A pair (masses 1 and 3,
-/// speeds 2 and 0, mu = 3/4) takes J = (1 + e) mu u = 2 x 3/4 x 2 = 3: -1 and 1.
+/// speeds 3 and 1, mu = 3/4) closes at u = 2 (a sum of the speeds would be 4) and takes J = (1
+/// + e) mu u = 2 x 3/4 x 2 = 3: 0 and 2.
 #[test]
 fn the_exact_reference_bounces_only_towards_a_wall() {
     use collide::contact::{LawKind, work};
@@ -743,13 +744,39 @@ fn the_exact_reference_bounces_only_towards_a_wall() {
         assert_eq!(exact, vec![want], "walls {walls:?}, v = {v}");
     }
     let bodies = library_setup(
-        &[(1.0, 0.0, 2.0, 1.0), (3.0, 2.0, 0.0, 1.0)],
+        &[(1.0, 0.0, 3.0, 1.0), (3.0, 2.0, 1.0, 1.0)],
         LawKind::Linear,
         1.0,
     )
     .bodies;
     let setup = collide::contact::Setup::new(bodies, (None, None), linear_laws());
-    assert_eq!(work::exact(&setup).unwrap(), Some(vec![-1.0, 1.0]));
+    assert_eq!(work::exact(&setup).unwrap(), Some(vec![0.0, 2.0]));
+}
+
+/// Work-precision's errors are relative to the speed scale: a linear contact at twice the
+/// speed is the same motion scaled by 2 (its frequencies do not depend on speed), so every
+/// rung's error is the same number at -v 1,0 and -v 2,0 (to the rounding of the event
+/// search), and its steps the same. (Every other ladder tested closes at 1, where dividing by
+/// the speed or not agree.)
+#[test]
+fn work_precision_errors_are_relative_to_the_speed() {
+    let ladder = |v: &str| {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v {v} --stiffness 4 --zeta 0.2 --work-precision --methods rk4"
+        )));
+        j["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| (f(&r["error"]), f(&r["steps"])))
+            .collect::<Vec<_>>()
+    };
+    let (one, two) = (ladder("1,0"), ladder("2,0"));
+    assert!(one.len() >= 4, "{one:?}");
+    for ((e1, s1), (e2, s2)) in one.iter().zip(&two) {
+        assert_eq!(s1, s2, "steps");
+        rel(*e2, *e1, 1e-6, &format!("error at {s1} steps"));
+    }
 }
 
 /// The speed scale is the largest relative speed at the start: between the bodies (two at 3
@@ -1152,6 +1179,21 @@ fn bodies_that_pass_through_each_other_or_a_wall_are_refused_at_the_step_it_happ
     let j = run(&args("-m 1,1 -x 0,1 --sizes 1,1 -v 1,0"));
     let d = f(&j["contacts"][0]["max_overlap"]);
     rel(d, 0.5f64.sqrt(), 1e-9, "d_max = v / omega0");
+    // Either wall meets the centre at half the body's size (0.5 for size 1, not the size): k =
+    // 1.5625 against m = 1 at 1 m/s needs d_max = v sqrt(m / k) = 0.8 (refused where the
+    // overlap passes 0.5); k = 6.25 needs 0.4 (runs, that deep).
+    for (side, v) in [("left", -1.0), ("right", 1.0)] {
+        let line = format!("-m 1 -x 0 --sizes 1 -v {v} --{side}-wall {}", v / 2.0);
+        let (code, _, err) = outcome(&args(&format!("{line} --wall-stiffness 1.5625")));
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(&format!("body 1 passed through the {side} wall"))
+                && err.contains("where 0.5 means the centres met"),
+            "{err}"
+        );
+        let j = run(&args(&format!("{line} --wall-stiffness 6.25")));
+        rel(f(&j["contacts"][0]["max_overlap"]), 0.4, 1e-9, side);
+    }
     // Unequal sizes, in either order (1 and 3: the centres meet at an overlap of 2, the sum of
     // the half sizes; a mean taken of one size twice would put it at 1 or 3): an overlap of
     // 3/2 (k = 2/9, mu = 1/2: d_max = sqrt(mu / k) = 3/2) runs; 5/2 (k = 2/25) is refused.
