@@ -387,6 +387,19 @@ mod tests {
         }
     }
 
+    /// A bracket narrower than the smallest normal number (where a relative tolerance of the
+    /// ends is zero) is closed as it is: no evaluation, its new end returned.
+    #[test]
+    fn a_bracket_below_the_smallest_normal_is_already_closed() {
+        let mut calls = 0;
+        let mut f = |t: f64| -> Result<f64, Failure> {
+            calls += 1;
+            Ok(t - 1e-310)
+        };
+        let t = locate(&mut f, (0.0, -1e-310), (2e-310, 1e-310), &|v| v >= 0.0).unwrap();
+        assert_eq!((t, calls), (2e-310, 0));
+    }
+
     /// The search's points, to 4 ulps: regula falsi's on `t^2 - 2` from [1, 2], with Illinois's
     /// halving of the end kept twice. In exact rationals (`f` at each point in brackets):
     /// 4/3 [-2/9] and 7/5 [-1/25] keep b twice, so b's value 2 is halved to 1 for the third,
