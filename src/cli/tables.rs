@@ -59,8 +59,9 @@ pub struct SweepArgs {
     pub vary: Vec<String>,
 
     /// Only the K-th of N contiguous slices of the rows (K from 1); on stdout the shards
-    /// concatenated in order are the whole table, and each shard file written with -o carries
-    /// the header (see --header)
+    /// concatenated in order are the whole table (CSV and JSON Lines; a text table aligns each
+    /// shard's pages on their own), and each shard file written with -o carries the header
+    /// (see --header)
     #[arg(long, value_name = "K/N", default_value = "1/1")]
     pub shard: Shard,
 

@@ -239,6 +239,34 @@ fn format_of(table: &TableArgs, out: &Output) -> Result<RowFormat> {
             "parquet" | "pq" => Some(RowFormat::Parquet),
             _ => None,
         });
+    // Names of formats collide does not write: CSV in them would pass for what they name.
+    let extension = table
+        .output
+        .as_deref()
+        .and_then(|p| p.extension())
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if table.format.is_none()
+        && let Some(e) = extension.as_deref()
+        && let Some(instead) = match e {
+            "json" => Some(
+                "a table is JSON Lines, one object a line, not one JSON document: name \
+                 it .jsonl",
+            ),
+            "tsv" | "tab" => Some("collide writes comma-separated tables: name it .csv"),
+            "xlsx" | "xls" | "ods" => Some(
+                "collide writes no spreadsheets: name it .csv, which \
+                 they open",
+            ),
+            _ => None,
+        }
+    {
+        anyhow::bail!(
+            "-o {} names a .{e} file, which collide does not write: {instead}, or give --format \
+             csv|jsonl|text|parquet",
+            target(table)
+        );
+    }
     let format = match (table.format, named) {
         (Some(f), Some(n)) if f != n => anyhow::bail!(
             "-o {} names a {} file, but --format is {}: name the file for its format, or leave \
@@ -248,6 +276,8 @@ fn format_of(table: &TableArgs, out: &Output) -> Result<RowFormat> {
             f.name()
         ),
         (Some(f), _) | (None, Some(f)) => f,
+        // A `.txt` file is for people (text), unless --format says otherwise.
+        (None, None) if extension.as_deref() == Some("txt") => RowFormat::Text,
         (None, None) => RowFormat::Csv,
     };
     if format == RowFormat::Parquet {

@@ -138,12 +138,19 @@ fn unregister(slot: usize) {
     PARTIALS[slot].store(std::ptr::null_mut(), Ordering::SeqCst);
 }
 
-/// A write error, with what to do about a full file-size limit.
-fn explain(e: io::Error) -> io::Error {
+/// A write error, with what to do about a full file-size limit: true of a file replaced as a
+/// whole (`whole`: its temporary file is removed, nothing is written), and of one written in
+/// place or stdout (what was written so far stays, incomplete).
+fn explain(e: io::Error, whole: bool) -> io::Error {
     if e.raw_os_error() == Some(libc::EFBIG) {
+        let left = if whole {
+            "nothing was written"
+        } else {
+            "the output written so far is incomplete"
+        };
         return io::Error::new(
             e.kind(),
-            format!("{e}: the file-size limit (ulimit -f) was reached; nothing was written"),
+            format!("{e}: the file-size limit (ulimit -f) was reached; {left}"),
         );
     }
     e
@@ -271,13 +278,15 @@ pub enum Disk {
 }
 
 impl Disk {
+    /// Creates `path`, which must not exist (a link there is refused too).
     fn create(path: &Path) -> io::Result<Disk> {
-        Ok(match Uncached::create(path)? {
-            Some(u) => Disk::Uncached(u),
-            None => Disk::Cached(BufWriter::with_capacity(
-                1 << 20,
-                Streamed::new(File::create(path)?),
-            )),
+        let file = std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(path)?;
+        Ok(match Uncached::new(file) {
+            Ok(u) => Disk::Uncached(u),
+            Err(file) => Disk::Cached(BufWriter::with_capacity(1 << 20, Streamed::new(file))),
         })
     }
 
@@ -341,13 +350,21 @@ impl Output {
         let path = match std::fs::metadata(&path) {
             Ok(m) => {
                 // Refuse where the shell's `>` would (a file we may not write), and give the
-                // new file the old one's permission bits.
+                // new file the old one's permission bits (and owner, where allowed).
                 std::fs::OpenOptions::new().write(true).open(&path)?;
-                keep = Some(m.permissions());
+                keep = Some(m);
                 std::fs::canonicalize(&path)?
             }
             Err(_) => path,
         };
+        // A file we may write that no renamed file could replace: in a folder we may not
+        // write, or someone else's in a sticky folder (`/tmp`: only the file's or the folder's
+        // owner may replace it). Written in place, as `>` would.
+        if let Some(m) = &keep
+            && held_by_sticky_folder(&path, m)
+        {
+            return in_place(&path, "it is another user's file in a sticky folder");
+        }
         // `.NAME.PID.partial`, with NAME cut so that a legal 255-byte name still has room.
         let mut name = path
             .file_name()
@@ -356,28 +373,31 @@ impl Output {
         while name.len() > 200 {
             name.pop();
         }
-        let tmp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
-        let slot = register(&tmp)?;
-        let created = match Disk::create(&tmp) {
-            Ok(f) => f,
-            // A file we may write in a folder we may not: written in place, as `>` would.
-            Err(e) if keep.is_some() && e.kind() == io::ErrorKind::PermissionDenied => {
-                unregister(slot);
-                let file = std::fs::OpenOptions::new()
-                    .write(true)
-                    .truncate(true)
-                    .open(&path)?;
-                diagnostic(format_args!(
-                    "note: {} is written in place, as the shell's > would (its folder is not \
-                     writable, so no temporary file can be renamed into place): an interrupted \
-                     run leaves it incomplete",
-                    path.display()
-                ));
-                return Ok(direct(file));
-            }
-            Err(e) => {
-                unregister(slot);
-                return Err(e);
+        // Created new (never through a link or over a file someone planted under the name),
+        // with a count added to the name if it is taken.
+        let pid = std::process::id();
+        let mut attempt = 0u32;
+        let (tmp, slot, created) = loop {
+            let tmp = path.with_file_name(match attempt {
+                0 => format!(".{name}.{pid}.partial"),
+                k => format!(".{name}.{pid}.{k}.partial"),
+            });
+            let slot = register(&tmp)?;
+            match Disk::create(&tmp) {
+                Ok(f) => break (tmp, slot, f),
+                Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 100 => {
+                    unregister(slot);
+                    attempt += 1;
+                }
+                // A file we may write in a folder we may not: written in place, as `>` would.
+                Err(e) if keep.is_some() && e.kind() == io::ErrorKind::PermissionDenied => {
+                    unregister(slot);
+                    return in_place(&path, "its folder is not writable");
+                }
+                Err(e) => {
+                    unregister(slot);
+                    return Err(e);
+                }
             }
         };
         let out = Output::File {
@@ -388,8 +408,12 @@ impl Output {
             done: false,
         };
         // Dropped on an error: the temporary file is removed.
-        if let (Some(permissions), Output::File { file, .. }) = (keep, &out) {
-            file.file().set_permissions(permissions)?;
+        if let (Some(m), Output::File { file, .. }) = (keep, &out) {
+            file.file().set_permissions(m.permissions())?;
+            // The old file's owner and group, as `>` keeps them: allowed to root (and a group
+            // to a member); otherwise the new file is the writer's, as it was.
+            use std::os::unix::fs::MetadataExt;
+            let _ = std::os::unix::fs::fchown(file.file(), Some(m.uid()), Some(m.gid()));
         }
         Ok(out)
     }
@@ -402,8 +426,8 @@ impl Output {
     /// Flushes, and renames a file into place.
     pub fn commit(mut self) -> io::Result<()> {
         match &mut self {
-            Output::Stdout(s) => s.flush().map_err(explain),
-            Output::Direct(f) => f.flush().map_err(explain),
+            Output::Stdout(s) => s.flush().map_err(|e| explain(e, false)),
+            Output::Direct(f) => f.flush().map_err(|e| explain(e, false)),
             Output::File {
                 tmp,
                 slot,
@@ -411,7 +435,7 @@ impl Output {
                 file,
                 done,
             } => {
-                file.flush().map_err(explain)?;
+                file.flush().map_err(|e| explain(e, true))?;
                 file.file().sync_all()?;
                 std::fs::rename(&*tmp, path)?;
                 unregister(*slot);
@@ -429,7 +453,7 @@ impl Write for Output {
             Output::File { file, .. } => file.write(buf),
             Output::Direct(file) => file.write(buf),
         }
-        .map_err(explain)
+        .map_err(|e| explain(e, self.is_file()))
     }
     fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
         match self {
@@ -437,7 +461,7 @@ impl Write for Output {
             Output::File { file, .. } => file.write_all(buf),
             Output::Direct(file) => file.write_all(buf),
         }
-        .map_err(explain)
+        .map_err(|e| explain(e, self.is_file()))
     }
     fn flush(&mut self) -> io::Result<()> {
         match self {
@@ -445,7 +469,7 @@ impl Write for Output {
             Output::File { file, .. } => file.flush(),
             Output::Direct(file) => file.flush(),
         }
-        .map_err(explain)
+        .map_err(|e| explain(e, self.is_file()))
     }
 }
 
@@ -462,6 +486,33 @@ impl Drop for Output {
             unregister(*slot);
         }
     }
+}
+
+/// Opens `path` (which exists and is writable) to be written in place, truncated, with a note
+/// saying why it is not replaced whole (`why`) and what that costs.
+fn in_place(path: &Path, why: &str) -> io::Result<Output> {
+    let file = std::fs::OpenOptions::new()
+        .write(true)
+        .truncate(true)
+        .open(path)?;
+    diagnostic(format_args!(
+        "note: {} is written in place, as the shell's > would ({why}, so no temporary file can \
+         be renamed into place): an interrupted run leaves it incomplete",
+        path.display()
+    ));
+    Ok(direct(file))
+}
+
+/// Whether `path` (metadata `m`) is another user's file in a sticky folder that is not ours
+/// either, which a rename could not replace (EPERM) unless we are root.
+fn held_by_sticky_folder(path: &Path, m: &std::fs::Metadata) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    let Some(folder) = path.parent().and_then(|p| std::fs::metadata(p).ok()) else {
+        return false;
+    };
+    // SAFETY: geteuid takes nothing and cannot fail.
+    let me = unsafe { libc::geteuid() };
+    folder.mode() & libc::S_ISVTX != 0 && me != 0 && m.uid() != me && folder.uid() != me
 }
 
 /// `path`, or the file its chain of symlinks names (relative links read from their folder),

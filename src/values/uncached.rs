@@ -13,15 +13,14 @@
 //! the device's logical block (512 or 4096 bytes): whole blocks of [`BLOCK`] bytes go directly,
 //! and the last partial block goes through the page cache (`O_DIRECT` cleared for that write;
 //! the block stays in the buffer and is written again, whole, if more bytes follow). A file
-//! system that refuses `O_DIRECT` (tmpfs, some FUSE and network file systems: `EINVAL` at the
-//! open or at a write) gets the same bytes through the page cache.
+//! system that refuses `O_DIRECT` (tmpfs on older kernels, some FUSE and network file systems:
+//! `EINVAL` when the flag is set, or at a write) gets the same bytes through the page cache.
 
 use std::fs::File;
 use std::io::{self, Write};
 use std::mem::MaybeUninit;
 use std::os::fd::AsRawFd;
-use std::os::unix::fs::{FileExt, OpenOptionsExt};
-use std::path::Path;
+use std::os::unix::fs::FileExt;
 
 /// The alignment of a direct write's buffer, offset and length: 4096 covers every logical block
 /// size in use (a 512-byte device takes it too).
@@ -48,32 +47,31 @@ pub struct Uncached {
     at: u64,
     /// Whether `O_DIRECT` is on (off after a write the file system refused).
     direct: bool,
+    /// Whether the buffer's bytes (a partial block) are in the file already (flushed, nothing
+    /// written since).
+    tail: bool,
 }
 
 impl Uncached {
-    /// Creates (or truncates) `path` for writing around the page cache, as `File::create`
-    /// would otherwise; `Ok(None)` where the file system refuses `O_DIRECT`.
-    pub fn create(path: &Path) -> io::Result<Option<Uncached>> {
-        match std::fs::OpenOptions::new()
-            .write(true)
-            .create(true)
-            .truncate(true)
-            .custom_flags(libc::O_DIRECT)
-            .open(path)
-        {
-            Ok(file) => Ok(Some(Uncached::new(file))),
-            Err(e) if e.raw_os_error() == Some(libc::EINVAL) => Ok(None),
-            Err(e) => Err(e),
+    /// Writes `file` around the page cache from now on; the file back where its file system
+    /// refuses `O_DIRECT` (tmpfs on older kernels, some FUSE and network file systems).
+    pub fn new(file: File) -> Result<Uncached, File> {
+        let out = Uncached::buffered(file, true);
+        match out.set_direct(true) {
+            Ok(()) => Ok(out),
+            Err(_) => Err(out.file),
         }
     }
 
-    fn new(file: File) -> Uncached {
+    /// The buffer over `file`, `direct` or not (the flag is not changed here).
+    fn buffered(file: File, direct: bool) -> Uncached {
         Uncached {
             file,
             blocks: Vec::with_capacity(CAP / BLOCK),
             len: 0,
             at: 0,
-            direct: true,
+            direct,
+            tail: false,
         }
     }
 
@@ -153,6 +151,7 @@ impl Write for Uncached {
             );
         }
         self.len += n;
+        self.tail &= n == 0;
         Ok(n)
     }
 
@@ -163,7 +162,7 @@ impl Write for Uncached {
         if whole > 0 {
             self.put(whole)?;
         }
-        if self.len > 0 {
+        if self.len > 0 && !self.tail {
             if self.direct {
                 self.set_direct(false)?;
             }
@@ -171,6 +170,7 @@ impl Write for Uncached {
             if self.direct {
                 self.set_direct(true)?;
             }
+            self.tail = true;
         }
         Ok(())
     }
@@ -217,9 +217,9 @@ mod tests {
         let direct;
         {
             // Where the file system refuses O_DIRECT, the same buffering over a plain file.
-            let mut out = match Uncached::create(&path).unwrap() {
-                Some(out) => out,
-                None => Uncached::new(File::create(&path).unwrap()),
+            let mut out = match Uncached::new(File::create(&path).unwrap()) {
+                Ok(out) => out,
+                Err(file) => Uncached::buffered(file, false),
             };
             for (i, &n) in sizes.iter().enumerate() {
                 let bytes = pattern(n, i as u64);

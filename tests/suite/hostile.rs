@@ -803,6 +803,118 @@ fn a_file_size_limit_is_an_error_and_leaves_nothing() {
 }
 
 #[test]
+fn a_file_size_limit_on_stdout_says_the_output_is_incomplete() {
+    // Through the shell's `> out.csv` (a file collide does not replace) the bytes before the
+    // limit stay: the message said "nothing was written" over the rows left in the file.
+    let dir = folder("fsize-stdout");
+    let out = dir.join("out.csv");
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    let result = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -f 100; exec '{}' sweep -m 4,1 -v 60,10 --vary v1=-100:100:300 \
+             --vary e=0:1:100 > '{}'",
+            bin.display(),
+            out.display()
+        ))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("ulimit -f") && err.contains("the output written so far is incomplete"),
+        "{err}"
+    );
+    assert!(!err.contains("nothing was written"), "{err}");
+    // What stays is the table's start, up to the limit (51,200 bytes: dash counts 512-byte
+    // blocks).
+    let kept = std::fs::read(&out).unwrap();
+    let whole = common::stdout(&[
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "v1=-100:100:300",
+        "--vary",
+        "e=0:1:100",
+    ]);
+    assert!(
+        !kept.is_empty() && kept.len() < whole.len(),
+        "{}",
+        kept.len()
+    );
+    assert!(whole.as_bytes().starts_with(&kept));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_link_planted_at_the_temporary_name_is_never_followed() {
+    // `.out.csv.PID.partial` is a predictable name: a link planted there (by another user, in
+    // a shared folder) was opened with O_TRUNC and followed, so the table overwrote the file
+    // it named. Now the temporary file is created new: the run takes another name, the
+    // victim is untouched, and out.csv is a file of its own with the table.
+    let dir = folder("planted");
+    let victim = dir.join("victim.txt");
+    std::fs::write(&victim, "victim\n").unwrap();
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    let args = "sweep -m 4,1 -v 60,10 --vary v1=1:2:3";
+    let result = std::process::Command::new("sh")
+        .current_dir(&dir)
+        .arg("-c")
+        .arg(format!(
+            "ln -s victim.txt .out.csv.$$.partial && exec '{}' {args} -o out.csv",
+            bin.display()
+        ))
+        .output()
+        .unwrap();
+    assert!(result.status.success(), "{result:?}");
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "victim\n");
+    let out = dir.join("out.csv");
+    assert!(std::fs::symlink_metadata(&out).unwrap().is_file());
+    let whole = common::stdout(&args.split(' ').collect::<Vec<_>>());
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), whole);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_file_replaced_keeps_its_owner_where_the_writer_may_give_it() {
+    // `>` keeps a file's owner; a file renamed into place is its writer's. Root (who may give
+    // a file away) now gives the new file the old one's owner and group; anyone else writes
+    // a file of their own, as before (nobody else's file can be renamed away by them unless
+    // the folder is theirs).
+    use std::os::unix::fs::MetadataExt;
+    let dir = folder("owner");
+    let out = dir.join("owned.csv");
+    std::fs::write(&out, "old\n").unwrap();
+    // SAFETY: geteuid takes nothing and cannot fail.
+    let root = unsafe { libc::geteuid() } == 0;
+    let (uid, gid) = if root {
+        std::os::unix::fs::chown(&out, Some(65534), Some(65534)).unwrap();
+        (65534, 65534)
+    } else {
+        let m = std::fs::metadata(&out).unwrap();
+        (m.uid(), m.gid())
+    };
+    let (code, _, err) = run(&[
+        "sweep",
+        "-m",
+        "4,1",
+        "-v",
+        "60,10",
+        "--vary",
+        "e=0:1:3",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let m = std::fs::metadata(&out).unwrap();
+    assert_eq!((m.uid(), m.gid()), (uid, gid), "root: {root}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn standard_streams_are_written_directly_when_they_are_pipes() {
     // `-o /dev/stdout` followed /proc/self/fd/1 to "pipe:[N]" and failed with "No such file or
     // directory". Here stdout and stderr are pipes.

@@ -571,6 +571,8 @@ fn the_output_name_gives_the_format_or_refuses_a_contradiction() {
         ("x.ndjson", "{\"e\":0.0}\n{\"e\":1.0}\n"),
         ("x.csv", "e\n0.0\n1.0\n"),
         ("x.dat", "e\n0.0\n1.0\n"),
+        // A .txt file is for people: the text table (right-aligned under the name).
+        ("x.txt", "  e\n0.0\n1.0\n"),
     ] {
         let p = temp(name);
         let mut args = sweep.to_vec();
@@ -587,6 +589,33 @@ fn the_output_name_gives_the_format_or_refuses_a_contradiction() {
         assert!(out.is_empty() && err.contains("--format is"), "{err}");
         assert!(!p.exists());
     }
+    // Names of formats collide does not write (CSV in an .json, .tsv or .xlsx file passed for
+    // what it is not, with exit 0) are refused, saying what to name it; --format overrides.
+    for (name, hint) in [
+        ("z.json", "name it .jsonl"),
+        ("z.JSON", "name it .jsonl"),
+        ("z.tsv", "name it .csv"),
+        ("z.xlsx", "name it .csv"),
+    ] {
+        let p = temp(name);
+        let mut args = sweep.to_vec();
+        args.extend(["-o", p.to_str().unwrap()]);
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{name}");
+        assert!(
+            out.is_empty() && err.contains("which collide does not write") && err.contains(hint),
+            "{name}: {err}"
+        );
+        assert!(!p.exists());
+    }
+    let p = temp("w.json");
+    let mut args = sweep.to_vec();
+    args.extend(["-o", p.to_str().unwrap(), "--format", "jsonl"]);
+    ok(&args);
+    assert_eq!(
+        std::fs::read_to_string(&p).unwrap(),
+        "{\"e\":0.0}\n{\"e\":1.0}\n"
+    );
 }
 
 #[test]
