@@ -779,6 +779,27 @@ fn work_precision_errors_are_relative_to_the_speed() {
     }
 }
 
+/// With no relative speed at all (two bodies moving together, no wall: a speed scale of 0)
+/// nothing touches, so every rung is exact: errors of 0, and a run reference's uncertainty 0
+/// (not 0 / 0: errors are relative to the speed scale, or to 1 m/s where it is 0).
+#[test]
+fn work_precision_with_no_relative_speed_is_exact() {
+    for until in ["", " --until 1"] {
+        let j = run(&args(&format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,1 --work-precision --methods rk4,bdf{until}"
+        )));
+        assert_eq!(floats(&j["reference"]["v"]), [1.0, 1.0], "{until}");
+        if !until.is_empty() {
+            assert_eq!(f(&j["reference"]["uncertainty"]), 0.0);
+        }
+        let rows = j["rows"].as_array().unwrap();
+        assert!(rows.len() >= 2, "{j}");
+        for r in rows {
+            assert_eq!(f(&r["error"]), 0.0, "{until}: {r}");
+        }
+    }
+}
+
 /// The speed scale is the largest relative speed at the start: between the bodies (two at 3
 /// and 3: none), and against a wall when there is one, either one (a body's own speed: 3).
 #[test]
