@@ -136,7 +136,8 @@ pub fn write_chunks<C: Send>(
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
     let solve = &solve;
-    let window = WINDOW_PER_THREAD * rayon::current_num_threads().max(1);
+    let threads = rayon::current_num_threads().max(1);
+    let window = (WINDOW_PER_THREAD * threads).min(threads + WINDOW_SLACK);
     let mut summary = Summary::default();
     // `in_place`: this closure runs on this thread (not a worker of the pool), which can then
     // wait for the chunks without taking a worker's place. The scope ends when every spawned
@@ -186,8 +187,11 @@ pub fn write_chunks<C: Send>(
     Ok(summary)
 }
 
-/// Chunks queued in the pool per thread, ahead of the next one to write.
+/// Chunks queued in the pool per thread, ahead of the next one to write (16 on 2 cores) ...
 const WINDOW_PER_THREAD: usize = 8;
+/// ... but no more than this beyond one a thread: the window's chunks are in memory (a planar
+/// chunk is 1.4 MB of CSV), so 64 threads writing to a slow reader hold 128, not 512.
+const WINDOW_SLACK: usize = 64;
 
 /// Writes a solved chunk, counting its rows; `Err` if it stopped the run.
 fn put_chunk(
