@@ -124,8 +124,8 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
     if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
         anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
     }
-    let mut out = open(table)?;
-    let writer = writer(columns(&table.columns, general)?, table, &out)?;
+    let writer = RowWriter::new(columns(&table.columns, general)?, format_of(table)?);
+    let (mut out, writer) = open(table, writer)?;
     let rows = shard.rows(grid.total);
     let mut progress = Progress::new(Some(rows.end - rows.start));
     let result = write_sweep(
@@ -149,12 +149,11 @@ pub fn batch(args: BatchArgs) -> Result<Outcome> {
     if let Some((kind, params)) = input.plane.take() {
         return plane_batch(input, &kind, &params, &args.table);
     }
-    let mut out = open(&args.table)?;
-    let writer = writer(
+    let writer = RowWriter::new(
         columns(&args.table.columns, input.general)?,
-        &args.table,
-        &out,
-    )?;
+        format_of(&args.table)?,
+    );
+    let (mut out, writer) = open(&args.table, writer)?;
     let mut progress = Progress::new(None);
     let result = write_batch(input, &writer, args.table.skip_bad, &mut out, &mut progress);
     finish(result, out, &progress, &args.table)
@@ -171,10 +170,8 @@ fn plane_batch(
 ) -> Result<Outcome> {
     let (cells, names) =
         runs::cells(kind, params, &table.columns).map_err(|e| anyhow::anyhow!("--columns: {e}"))?;
-    let mut out = open(table)?;
-    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(table, &out)?)
-        .with_header(header(table, &out));
-    writer.check().map_err(anyhow::Error::msg)?;
+    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(table)?);
+    let (mut out, writer) = open(table, writer)?;
     let mut progress = Progress::new(None);
     let result = runs::write_points(
         kind,
@@ -203,18 +200,16 @@ fn columns(chosen: &[String], general: bool) -> Result<Vec<&'static Column>> {
     }
 }
 
-/// How the rows are written: `--format`, else the format `-o`'s extension names (`.csv`,
-/// `.jsonl`, `.ndjson`, `.parquet`), else CSV; a format the name contradicts is refused (`-o
-/// x.jsonl` wrote CSV). The header goes in every shard written to a file (each reads on its
-/// own), only in the first on stdout or a device (the shards concatenated are the whole table),
-/// unless `--header` says otherwise. Parquet is written to a file only (`-o`), and always has
-/// its schema.
-fn writer(columns: Vec<&'static Column>, table: &TableArgs, out: &Output) -> Result<RowWriter> {
-    let format = format_of(table, out)?;
-    let header = header(table, out);
-    let w = RowWriter::new(columns, format).with_header(header);
-    w.check().map_err(anyhow::Error::msg)?;
-    Ok(w)
+/// Opens where the rows go, once `writer` (its format from [`format_of`]) is known to be
+/// writable: nothing is opened, so no file is truncated in place, for a run that is refused.
+/// The header goes in every shard written to a file (each reads on its own), only in the first
+/// on stdout or a device (the shards concatenated are the whole table), unless `--header` says
+/// otherwise.
+fn open(table: &TableArgs, writer: RowWriter) -> Result<(Output, RowWriter)> {
+    writer.check().map_err(anyhow::Error::msg)?;
+    let out = Output::open(table.output.as_deref()).map_err(|e| output_error(table, e))?;
+    let header = header(table, &out);
+    Ok((out, writer.with_header(header)))
 }
 
 /// The header's pieces: `--header`, else every shard of a file, the first on stdout.
@@ -226,8 +221,11 @@ fn header(table: &TableArgs, out: &Output) -> Header {
     })
 }
 
-/// The format of a table (see [`writer`]).
-fn format_of(table: &TableArgs, out: &Output) -> Result<RowFormat> {
+/// How the rows are written: `--format`, else the format `-o`'s extension names (`.csv`,
+/// `.jsonl`, `.ndjson`, `.parquet`; `.txt`: text), else CSV; a format the name contradicts is
+/// refused (`-o x.jsonl` wrote CSV), and so is a name of a format collide does not write.
+/// Parquet is written to a file only (`-o`), and always has its schema.
+fn format_of(table: &TableArgs) -> Result<RowFormat> {
     let named = table
         .output
         .as_deref()
@@ -281,7 +279,12 @@ fn format_of(table: &TableArgs, out: &Output) -> Result<RowFormat> {
         (None, None) => RowFormat::Csv,
     };
     if format == RowFormat::Parquet {
-        if matches!(out, Output::Stdout(_)) {
+        // Stdout, as `Output::open` takes it.
+        if table
+            .output
+            .as_deref()
+            .is_none_or(|p| p == std::path::Path::new("-"))
+        {
             anyhow::bail!(
                 "--format parquet writes a file: give -o FILE.parquet (a Parquet file ends with \
                  its footer, so it is not streamed to stdout)"
@@ -296,11 +299,6 @@ fn format_of(table: &TableArgs, out: &Output) -> Result<RowFormat> {
         }
     }
     Ok(format)
-}
-
-/// Where the table goes (`-o FILE`, atomically, or stdout).
-fn open(table: &TableArgs) -> Result<Output> {
-    Output::open(table.output.as_deref()).map_err(|e| output_error(table, e))
 }
 
 fn output_error(table: &TableArgs, e: std::io::Error) -> anyhow::Error {
@@ -406,10 +404,8 @@ pub fn run_table<K: Kind>(
         skip_bad: args.skip_bad,
         header: args.header,
     };
-    let mut out = open(&table)?;
-    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(&table, &out)?)
-        .with_header(header(&table, &out));
-    writer.check().map_err(anyhow::Error::msg)?;
+    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(&table)?);
+    let (mut out, writer) = open(&table, writer)?;
     let shard = args.shard.unwrap_or(Shard::WHOLE);
     let rows = shard.rows(grid.total);
     let mut progress = Progress::new(Some(rows.end - rows.start));

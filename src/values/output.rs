@@ -385,9 +385,19 @@ impl Output {
             let slot = register(&tmp)?;
             match Disk::create(&tmp) {
                 Ok(f) => break (tmp, slot, f),
-                Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 100 => {
+                Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
                     unregister(slot);
                     attempt += 1;
+                    if attempt > 100 {
+                        return Err(io::Error::new(
+                            e.kind(),
+                            format!(
+                                "the names of its temporary file (.{name}.{pid}.partial, then \
+                                 .{name}.{pid}.1.partial to .100.partial, beside it) are all \
+                                 taken; remove those files"
+                            ),
+                        ));
+                    }
                 }
                 // A file we may write in a folder we may not: written in place, as `>` would.
                 Err(e) if keep.is_some() && e.kind() == io::ErrorKind::PermissionDenied => {
@@ -409,11 +419,12 @@ impl Output {
         };
         // Dropped on an error: the temporary file is removed.
         if let (Some(m), Output::File { file, .. }) = (keep, &out) {
-            file.file().set_permissions(m.permissions())?;
             // The old file's owner and group, as `>` keeps them: allowed to root (and a group
-            // to a member); otherwise the new file is the writer's, as it was.
+            // to a member); otherwise the new file is the writer's, as it was. Before the
+            // permission bits, which a change of owner would strip of setuid and setgid.
             use std::os::unix::fs::MetadataExt;
             let _ = std::os::unix::fs::fchown(file.file(), Some(m.uid()), Some(m.gid()));
+            file.file().set_permissions(m.permissions())?;
         }
         Ok(out)
     }

@@ -850,6 +850,55 @@ fn a_file_size_limit_on_stdout_says_the_output_is_incomplete() {
 }
 
 #[test]
+fn a_refused_table_opens_nothing() {
+    // The name's and format's checks ran after the output was opened: a file written in place
+    // (another user's in a sticky folder, or in a folder we may not write) was truncated to 0
+    // bytes by a run then refused, and `-o x.json` on a FIFO with no reader hung in `open`.
+    // Here the FIFO: refused at once, exit 2, whatever the reader does.
+    let dir = folder("refused-fifo");
+    for name in ["t.json", "t.parquet"] {
+        let fifo = dir.join(name);
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let mut args = vec!["sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0:1:3"];
+        if name.ends_with("parquet") {
+            args.extend(["--header", "always"]);
+        }
+        let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"))
+            .args(&args)
+            .arg("-o")
+            .arg(&fifo)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        let status = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                break status;
+            }
+            if start.elapsed() > std::time::Duration::from_secs(30) {
+                child.kill().unwrap();
+                panic!("-o {name} (a FIFO nobody reads): still opening after 30 s");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        };
+        let mut err = String::new();
+        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+        let err = err.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert_eq!(status.code(), Some(2), "{name}: {err}");
+        assert!(
+            err.contains("which collide does not write") || err.contains("--header always is for"),
+            "{name}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn a_link_planted_at_the_temporary_name_is_never_followed() {
     // `.out.csv.PID.partial` is a predictable name: a link planted there (by another user, in
     // a shared folder) was opened with O_TRUNC and followed, so the table overwrote the file
