@@ -87,8 +87,8 @@ pub enum ContactError {
     )]
     WrongStep(&'static str),
     #[error(
-        "{method} with --dt {} is unstable on the stiffest contact ({who}: omega dt = {} > \
-         {limit:.3}); use --dt below {safe:.3e} or an implicit method (implicit-euler, \
+        "{method} with --dt {} is unstable on the stiffest contact ({who}: omega dt = {}, not \
+         below {limit:.3}); use --dt below {safe:.3e} or an implicit method (implicit-euler, \
          implicit-midpoint, bdf, sdirk)",
         num(*.dt),
         three(*.wh)

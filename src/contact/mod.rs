@@ -450,7 +450,9 @@ pub fn simulate(setup: &Setup, settings: &Settings) -> Result<ContactRun, Contac
     if let (Method::Fixed(f), Some(dt)) = (method, dt)
         && let Some(limit) = f.stability_limit()
         && let Some((who, w)) = scales.fastest(setup)
-        && w * dt > limit
+        // At the limit itself the method is not stable either (symplectic Euler and Verlet
+        // at omega h = 2: a double eigenvalue -1, so the error grows linearly).
+        && w * dt >= limit
     {
         return Err(ContactError::Unstable {
             method: method.name(),
