@@ -867,29 +867,18 @@ fn a_refused_table_opens_nothing() {
         if name.ends_with("parquet") {
             args.extend(["--header", "always"]);
         }
-        let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("collide"))
-            .args(&args)
-            .arg("-o")
-            .arg(&fifo)
-            .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::piped())
-            .spawn()
-            .unwrap();
-        let start = std::time::Instant::now();
-        let status = loop {
-            if let Some(status) = child.try_wait().unwrap() {
-                break status;
-            }
-            if start.elapsed() > std::time::Duration::from_secs(30) {
-                child.kill().unwrap();
-                panic!("-o {name} (a FIFO nobody reads): still opening after 30 s");
-            }
-            std::thread::sleep(std::time::Duration::from_millis(20));
-        };
-        let mut err = String::new();
-        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
-        let err = err.split_whitespace().collect::<Vec<_>>().join(" ");
-        assert_eq!(status.code(), Some(2), "{name}: {err}");
+        args.extend(["-o", fifo.to_str().unwrap()]);
+        let f = crate::resources::watched(
+            &args,
+            std::process::Stdio::null(),
+            std::time::Duration::from_secs(30),
+        );
+        assert!(
+            !f.timed_out,
+            "-o {name} (a FIFO nobody reads): still opening after 30 s"
+        );
+        let err = f.stderr.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert_eq!(f.code, Some(2), "{name}: {err}");
         assert!(
             err.contains("which collide does not write") || err.contains("--header always is for"),
             "{name}: {err}"
