@@ -226,24 +226,19 @@ fn header(table: &TableArgs, out: &Output) -> Header {
 /// refused (`-o x.jsonl` wrote CSV), and so is a name of a format collide does not write.
 /// Parquet is written to a file only (`-o`), and always has its schema.
 fn format_of(table: &TableArgs) -> Result<RowFormat> {
-    let named = table
-        .output
-        .as_deref()
-        .and_then(|p| p.extension())
-        .and_then(|e| e.to_str())
-        .and_then(|e| match e.to_ascii_lowercase().as_str() {
-            "csv" => Some(RowFormat::Csv),
-            "jsonl" | "ndjson" => Some(RowFormat::Jsonl),
-            "parquet" | "pq" => Some(RowFormat::Parquet),
-            _ => None,
-        });
-    // Names of formats collide does not write: CSV in them would pass for what they name.
     let extension = table
         .output
         .as_deref()
         .and_then(|p| p.extension())
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
+    let named = match extension.as_deref() {
+        Some("csv") => Some(RowFormat::Csv),
+        Some("jsonl" | "ndjson") => Some(RowFormat::Jsonl),
+        Some("parquet" | "pq") => Some(RowFormat::Parquet),
+        _ => None,
+    };
+    // Names of formats collide does not write: CSV in them would pass for what they name.
     if table.format.is_none()
         && let Some(e) = extension.as_deref()
         && let Some(instead) = match e {

@@ -126,7 +126,7 @@ pub const CHUNK_ROWS: usize = 8192;
 /// in the pool ahead of the next one to write, and writes each as soon as it and every chunk
 /// before it are solved, so that neither side waits for the other at the end of a batch. (A
 /// batch at a time, solved while the one before was written, left a core idle for the last
-/// chunk of every batch: 8% of a planar sweep's CPU time to a file, measured.) The writing (the
+/// chunk of every batch: 6-8% of a planar sweep's CPU time to a file, measured.) The writing (the
 /// kernel's part of it, or the disk's) overlaps the solving; at most the window's chunks are in
 /// memory.
 pub fn write_chunks<C: Send>(
@@ -136,8 +136,7 @@ pub fn write_chunks<C: Send>(
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
     let solve = &solve;
-    let threads = rayon::current_num_threads().max(1);
-    let window = (WINDOW_PER_THREAD * threads).min(threads + WINDOW_SLACK);
+    let window = window();
     let mut summary = Summary::default();
     // `in_place`: this closure runs on this thread (not a worker of the pool), which can then
     // wait for the chunks without taking a worker's place. The scope ends when every spawned
@@ -192,6 +191,12 @@ const WINDOW_PER_THREAD: usize = 8;
 /// ... but no more than this beyond one a thread: the window's chunks are in memory (a planar
 /// chunk is 1.4 MB of CSV), so 64 threads writing to a slow reader hold 128, not 512.
 const WINDOW_SLACK: usize = 64;
+
+/// Chunks queued ahead of the writer on this pool.
+fn window() -> usize {
+    let threads = rayon::current_num_threads().max(1);
+    (WINDOW_PER_THREAD * threads).min(threads + WINDOW_SLACK)
+}
 
 /// Writes a solved chunk, counting its rows; `Err` if it stopped the run.
 fn put_chunk(
@@ -335,27 +340,27 @@ mod tests {
         );
     }
 
-    /// The writer overlaps the solving of the next batch: over many batches the chunks still
-    /// come out in order, whole, and a stop in a late batch ends the output after the chunk
-    /// before it (the batch solved beside it is dropped).
+    /// Chunks solved in parallel, finishing out of order (each sleeps a time that does not
+    /// grow with its place), over many windows of the pipeline: they come out in order, whole,
+    /// and a stop in a late window ends the output after the chunk before it (the chunks queued
+    /// beside it are dropped). A chunk that panics panics the writer.
     #[test]
-    fn overlapped_batches_keep_order_and_stop_where_asked() {
+    fn chunks_come_out_in_order_and_stop_where_asked() {
         let w = RowWriter::new(by_names(&["fin1"]).unwrap(), RowFormat::Csv);
-        let per_batch = std::env::var("COLLIDE_PB")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(4)
-            * rayon::current_num_threads().max(1);
-        let chunks = 5 * per_batch + 3;
-        let stop_at = 3 * per_batch + 1;
-        let solve = |k: usize| ChunkOut {
-            body: Ok(Sealed::Bytes(format!("{k}\n").into_bytes())),
-            rows: 1,
-            skipped: Vec::new(),
-            stop: (k == stop_at).then(|| RowError {
-                place: format!("chunk {k}"),
-                problem: RowProblem::NotCsv("stop".into()),
-            }),
+        let window = window();
+        let chunks = 5 * window + 3;
+        let stop_at = 3 * window + 1;
+        let solve = |k: usize| {
+            std::thread::sleep(std::time::Duration::from_micros((7 - k as u64 % 7) * 300));
+            ChunkOut {
+                body: Ok(Sealed::Bytes(format!("{k}\n").into_bytes())),
+                rows: 1,
+                skipped: Vec::new(),
+                stop: (k == stop_at).then(|| RowError {
+                    place: format!("chunk {k}"),
+                    problem: RowProblem::NotCsv("stop".into()),
+                }),
+            }
         };
         let run = |n: usize| {
             let mut bytes = Vec::new();
@@ -376,6 +381,17 @@ mod tests {
         // The stopping chunk's own rows (before its bad row) are written, nothing after.
         let want: String = (0..=stop_at).map(|k| format!("{k}\n")).collect();
         assert_eq!(text, format!("fin1\n{want}"));
+        let panicked = std::panic::catch_unwind(|| {
+            let mut bytes = Vec::new();
+            let mut sink = Sink::open(&w, 1, &mut bytes).unwrap();
+            let _ = write_chunks(
+                0..chunks,
+                |k: usize| if k == 5 { panic!("chunk 5") } else { solve(k) },
+                &mut sink,
+                &mut Progress::new(None),
+            );
+        });
+        assert!(panicked.is_err(), "a chunk's panic was lost");
     }
 
     #[test]
