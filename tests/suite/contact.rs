@@ -1736,3 +1736,52 @@ fn every_runtime_failure_that_input_can_cause_is_refused() {
         "rk4 failed: more than 10 steps",
     );
 }
+
+#[test]
+fn the_energy_gate_is_relative_to_the_start() {
+    // The Verlet run above, with the mass and the wall's stiffness both scaled by s: omega and
+    // every step are the same, each energy is s times as large, and so the relative gain is
+    // the same 3.4e-6 (above the 1e-6 allowed) at s = 1e-6, where the gain itself is only
+    // 1.7e-12 J, as at s = 1e6. The printed gain is checked against the printed energies.
+    let mut ratios = Vec::new();
+    for (m, k) in [("1e-6", "1"), ("1", "1e6"), ("1e6", "1e12")] {
+        let line = format!(
+            "-m {m} -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness {k} --method verlet \
+             --dt 1e-4"
+        );
+        let out = collide().arg("contact").args(args(&line)).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).replace("\n  ", " ");
+        assert_eq!(out.status.code(), Some(2), "{line}: {err}");
+        assert!(out.stdout.is_empty(), "{line} wrote to stdout");
+        let words: Vec<&str> = err.split_whitespace().collect();
+        let after = |w: &str| -> f64 {
+            let i = words
+                .iter()
+                .position(|x| *x == w)
+                .unwrap_or_else(|| panic!("{err}"));
+            words[i + 1].trim_start_matches('(').parse().unwrap()
+        };
+        let (end, start) = (after("energy:"), after("against"));
+        let i = words.iter().position(|x| *x == "relative)").unwrap();
+        let printed: f64 = words[i - 1].trim_start_matches('(').parse().unwrap();
+        let s: f64 = m.parse().unwrap();
+        rel(start, 0.5 * s, 1e-15, "start energy");
+        rel(
+            printed,
+            (end - start) / start,
+            1e-3,
+            "printed relative gain",
+        );
+        ratios.push(end / start);
+    }
+    // Above the gate, and the same at every scale but for the rounding of the energies.
+    assert!(ratios[1] - 1.0 > 1e-6, "{ratios:?}");
+    for r in &ratios {
+        rel(
+            *r - 1.0,
+            ratios[1] - 1.0,
+            1e-6,
+            "relative gain at each scale",
+        );
+    }
+}
