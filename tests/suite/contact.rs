@@ -1785,3 +1785,56 @@ fn the_energy_gate_is_relative_to_the_start() {
         );
     }
 }
+
+/// Bodies that touch but move apart never begin a contact: a pair touching (centres 1 apart,
+/// sizes 1) with body 2 leaving at 1, and a body touching the right wall while leaving it. An
+/// undamped law's gate (its force, k d + c d') is exactly 0 there; the contact would begin only
+/// on approach. Every method, both laws: no contact, and the bodies carried on exactly.
+#[test]
+fn touching_bodies_that_move_apart_never_begin_a_contact() {
+    for law in ["linear", "hertz"] {
+        for method in ["tsit45", "verlet", "implicit-euler"] {
+            for (line, x, v) in [
+                (
+                    "-m 1,1 -x 0,1 --sizes 1,1 -v 0,1 --until 2",
+                    [0.0, 3.0],
+                    [0.0, 1.0],
+                ),
+                (
+                    "-m 1,1 -x 0,2 --sizes 1,1 -v -1,-1 --right-wall 2.5 --until 2",
+                    [-2.0, 0.0],
+                    [-1.0, -1.0],
+                ),
+            ] {
+                let mut a = args(line);
+                a.extend(["--law", law, "--method", method]);
+                let out = run(&a);
+                assert_eq!(out["contacts"].as_array().unwrap().len(), 0, "{a:?}: {out}");
+                assert_eq!(floats(&out["x"]), x, "{a:?}");
+                assert_eq!(floats(&out["v"]), v, "{a:?}");
+            }
+        }
+    }
+}
+
+/// With no relative speed (both bodies at 1) a Hertz contact's time scale, which depends on
+/// the speed, is taken at unit speed: d_max = (5 mu / (4 k))^(2/5) with mu = 1/2 and k = 1,
+/// omega = sqrt(3/2 k d_max^(1/2) / mu), and Verlet's default step is (pi / omega) / 64. (At
+/// speed 0 itself the scale would be infinite and no step could be chosen.)
+#[test]
+fn with_no_relative_speed_the_default_step_is_taken_at_unit_speed() {
+    let (k, mu) = (1.0f64, 0.5f64);
+    let d = (5.0 * mu / (4.0 * k)).powf(0.4);
+    let omega = (1.5 * k * d.sqrt() / mu).sqrt();
+    let out = run(&args(
+        "-m 1,1 -x 0,2 --sizes 1,1 -v 1,1 --law hertz --method verlet",
+    ));
+    rel(
+        f(&out["dt"]),
+        std::f64::consts::PI / omega / 64.0,
+        1e-14,
+        "dt",
+    );
+    assert_eq!(out["contacts"].as_array().unwrap().len(), 0);
+    assert_eq!(floats(&out["v"]), [1.0, 1.0]);
+}
