@@ -65,14 +65,6 @@ impl Law {
         }
     }
 
-    /// Whether the law dissipates energy.
-    pub fn damped(&self) -> bool {
-        match *self {
-            Law::Linear { c, .. } => c > 0.0,
-            Law::Hertz { chi, .. } => chi > 0.0,
-        }
-    }
-
     /// The stiffness `k`.
     pub fn k(&self) -> f64 {
         match *self {
@@ -136,8 +128,6 @@ mod tests {
         assert!((hertz.potential(4.0) - 25.6).abs() <= 25.6 * f64::EPSILON);
         assert_eq!(linear.potential(-1.0), 0.0);
         assert_eq!((linear.k(), hertz.k()), (4.0, 2.0));
-        assert!(linear.damped() && hertz.damped());
-        assert!(!Law::Linear { k: 4.0, c: 0.0 }.damped());
     }
 
     /// Frequencies: linear sqrt(k/mu) = 2 (k = 4, mu = 1), or c/mu = 10 when damping is faster.

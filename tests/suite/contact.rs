@@ -1838,3 +1838,50 @@ fn with_no_relative_speed_the_default_step_is_taken_at_unit_speed() {
     assert_eq!(out["contacts"].as_array().unwrap().len(), 0);
     assert_eq!(floats(&out["v"]), [1.0, 1.0]);
 }
+
+/// A fixed-step run stopped by `--until` inside a contact cuts its last step to land on it:
+/// two touching bodies (k = 1, mu = 1/2, omega = sqrt 2, v = 1) have overlap d = sin(phase) /
+/// omega and closing speed cos(phase). At --until 1.0001 with steps of 0.003 (not a multiple:
+/// 333 steps and one of 0.0011), the end time is 1.0001 exactly. rk4 follows the exact phase
+/// omega t to about (omega h)^4 / 120 per radian (1e-11); implicit midpoint, on a linear
+/// oscillator, turns the state by exactly 2 atan(omega h / 2) a step with no change of amplitude
+/// (its Cayley transform), so its phase is 333 such turns and one of the cut step.
+#[test]
+fn a_fixed_step_run_stops_on_until_inside_a_contact() {
+    let (w, t) = (2f64.sqrt(), 1.0001);
+    let turn = |h: f64| 2.0 * (w * h / 2.0).atan();
+    for (method, phase, tol) in [
+        ("rk4", w * t, 1e-9),
+        (
+            "implicit-midpoint",
+            333.0 * turn(0.003) + turn(0.0011),
+            1e-12,
+        ),
+    ] {
+        let out = run(&[
+            "-m",
+            "1,1",
+            "-x",
+            "0,1",
+            "--sizes",
+            "1,1",
+            "-v",
+            "1,0",
+            "--stiffness",
+            "1",
+            "--method",
+            method,
+            "--dt",
+            "0.003",
+            "--until",
+            "1.0001",
+        ]);
+        assert_eq!(f(&out["time"]), t, "{method}");
+        assert_eq!(out["stop"], "until", "{method}");
+        let (x, v) = (floats(&out["x"]), floats(&out["v"]));
+        rel(1.0 - (x[1] - x[0]), phase.sin() / w, tol, method);
+        rel(v[0] - v[1], phase.cos(), tol, method);
+        // The centre of mass moves on at 1/2.
+        rel(x[0] + x[1], 1.0 + t, 1e-15, method);
+    }
+}
