@@ -1858,24 +1858,11 @@ fn a_fixed_step_run_stops_on_until_inside_a_contact() {
             1e-12,
         ),
     ] {
-        let out = run(&[
-            "-m",
-            "1,1",
-            "-x",
-            "0,1",
-            "--sizes",
-            "1,1",
-            "-v",
-            "1,0",
-            "--stiffness",
-            "1",
-            "--method",
-            method,
-            "--dt",
-            "0.003",
-            "--until",
-            "1.0001",
-        ]);
+        let line = format!(
+            "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --stiffness 1 --method {method} --dt 0.003 \
+             --until 1.0001"
+        );
+        let out = run(&args(&line));
         assert_eq!(f(&out["time"]), t, "{method}");
         assert_eq!(out["stop"], "until", "{method}");
         let (x, v) = (floats(&out["x"]), floats(&out["v"]));
