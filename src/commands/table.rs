@@ -274,12 +274,7 @@ fn format_of(table: &TableArgs) -> Result<RowFormat> {
         (None, None) => RowFormat::Csv,
     };
     if format == RowFormat::Parquet {
-        // Stdout, as `Output::open` takes it.
-        if table
-            .output
-            .as_deref()
-            .is_none_or(|p| p == std::path::Path::new("-"))
-        {
+        if Output::is_stdout(table.output.as_deref()) {
             anyhow::bail!(
                 "--format parquet writes a file: give -o FILE.parquet (a Parquet file ends with \
                  its footer, so it is not streamed to stdout)"

@@ -324,9 +324,13 @@ fn direct(file: File) -> Output {
 }
 
 impl Output {
+    /// Whether `-o` (`path`) names stdout: no `-o`, or `-o -`, as for most tools.
+    pub fn is_stdout(path: Option<&Path>) -> bool {
+        path.is_none_or(|p| p == Path::new("-"))
+    }
+
     pub fn open(path: Option<&Path>) -> io::Result<Output> {
-        // `-o -` is stdout, as for most tools.
-        let Some(path) = path.filter(|p| *p != Path::new("-")) else {
+        let Some(path) = path.filter(|&p| !Output::is_stdout(Some(p))) else {
             return Ok(Output::Stdout(io::stdout().lock()));
         };
         guard_signals();

@@ -621,6 +621,18 @@ fn folder(name: &str) -> std::path::PathBuf {
     dir
 }
 
+/// Runs `script` with `sh -c` in `dir`, `exec collide ARGS` at its end (so that what the script
+/// sets up, a limit or a file, is collide's), and returns what it wrote.
+fn shell_then_collide(dir: &std::path::Path, script: &str, args: &str) -> std::process::Output {
+    let bin = assert_cmd::cargo::cargo_bin("collide");
+    std::process::Command::new("sh")
+        .current_dir(dir)
+        .arg("-c")
+        .arg(format!("{script}; exec '{}' {args}", bin.display()))
+        .output()
+        .unwrap()
+}
+
 #[test]
 fn a_scene_picture_cannot_leave_the_scene_folder() {
     let dir = folder("plot-escape");
@@ -807,18 +819,8 @@ fn a_file_size_limit_on_stdout_says_the_output_is_incomplete() {
     // Through the shell's `> out.csv` (a file collide does not replace) the bytes before the
     // limit stay: the message said "nothing was written" over the rows left in the file.
     let dir = folder("fsize-stdout");
-    let out = dir.join("out.csv");
-    let bin = assert_cmd::cargo::cargo_bin("collide");
-    let result = std::process::Command::new("sh")
-        .arg("-c")
-        .arg(format!(
-            "ulimit -f 100; exec '{}' sweep -m 4,1 -v 60,10 --vary v1=-100:100:300 \
-             --vary e=0:1:100 > '{}'",
-            bin.display(),
-            out.display()
-        ))
-        .output()
-        .unwrap();
+    let args = "sweep -m 4,1 -v 60,10 --vary v1=-100:100:300 --vary e=0:1:100";
+    let result = shell_then_collide(&dir, "ulimit -f 100", &format!("{args} > out.csv"));
     let err = String::from_utf8_lossy(&result.stderr);
     assert_eq!(result.status.code(), Some(2), "{err}");
     assert!(
@@ -828,18 +830,8 @@ fn a_file_size_limit_on_stdout_says_the_output_is_incomplete() {
     assert!(!err.contains("nothing was written"), "{err}");
     // What stays is the table's start, up to the limit (51,200 bytes: dash counts 512-byte
     // blocks).
-    let kept = std::fs::read(&out).unwrap();
-    let whole = common::stdout(&[
-        "sweep",
-        "-m",
-        "4,1",
-        "-v",
-        "60,10",
-        "--vary",
-        "v1=-100:100:300",
-        "--vary",
-        "e=0:1:100",
-    ]);
+    let kept = std::fs::read(dir.join("out.csv")).unwrap();
+    let whole = common::stdout(&args.split(' ').collect::<Vec<_>>());
     assert!(
         !kept.is_empty() && kept.len() < whole.len(),
         "{}",
@@ -896,17 +888,12 @@ fn a_link_planted_at_the_temporary_name_is_never_followed() {
     let dir = folder("planted");
     let victim = dir.join("victim.txt");
     std::fs::write(&victim, "victim\n").unwrap();
-    let bin = assert_cmd::cargo::cargo_bin("collide");
     let args = "sweep -m 4,1 -v 60,10 --vary v1=1:2:3";
-    let result = std::process::Command::new("sh")
-        .current_dir(&dir)
-        .arg("-c")
-        .arg(format!(
-            "ln -s victim.txt .out.csv.$$.partial && exec '{}' {args} -o out.csv",
-            bin.display()
-        ))
-        .output()
-        .unwrap();
+    let result = shell_then_collide(
+        &dir,
+        "ln -s victim.txt .out.csv.$$.partial",
+        &format!("{args} -o out.csv"),
+    );
     assert!(result.status.success(), "{result:?}");
     assert_eq!(std::fs::read_to_string(&victim).unwrap(), "victim\n");
     let out = dir.join("out.csv");
@@ -935,17 +922,8 @@ fn a_file_replaced_keeps_its_owner_where_the_writer_may_give_it() {
         let m = std::fs::metadata(&out).unwrap();
         (m.uid(), m.gid())
     };
-    let (code, _, err) = run(&[
-        "sweep",
-        "-m",
-        "4,1",
-        "-v",
-        "60,10",
-        "--vary",
-        "e=0:1:3",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let line = format!("sweep -m 4,1 -v 60,10 --vary e=0:1:3 -o {}", out.display());
+    let (code, _, err) = run(&line.split(' ').collect::<Vec<_>>());
     assert_eq!(code, 0, "{err}");
     let m = std::fs::metadata(&out).unwrap();
     assert_eq!((m.uid(), m.gid()), (uid, gid), "root: {root}");
