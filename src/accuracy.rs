@@ -205,10 +205,19 @@ pub fn ulps(approx: f64, exact: &Q, scale: f64) -> f64 {
     if scale == 0.0 {
         return f64::INFINITY;
     }
-    let ulp = from_f64(crate::values::compensated::pow2(
-        exponent(scale).max(-1022 + 52) - 52,
-    ));
-    to_f64(&(err / ulp)).unwrap_or(f64::INFINITY)
+    to_f64(&(err / from_f64(ulp(scale)))).unwrap_or(f64::INFINITY)
+}
+
+/// The unit in the last place of a finite `x`: `2^max(e - 52, -1074)` with `2^e <= |x| <
+/// 2^(e+1)` (IEEE 754's spacing of binary64 at `x`; `2^-1074` for subnormals and 0, the
+/// smallest spacing there is). Below `2^-970` it is a subnormal, not `2^-1022`.
+pub fn ulp(x: f64) -> f64 {
+    let k = (exponent(x) - 52).max(-1074);
+    if k >= -1022 {
+        crate::values::compensated::pow2(k)
+    } else {
+        f64::from_bits(1u64 << (k + 1074))
+    }
 }
 
 /// Errors of one outcome, in ulps of each quantity's natural scale (velocities: `velocity_scale`;
@@ -601,6 +610,40 @@ mod tests {
             ulps(2f64.powi(52) + 1.0, &from_f64(2f64.powi(52)), 2f64.powi(52)),
             1.0
         );
+    }
+
+    #[test]
+    fn an_ulp_is_the_spacing_of_binary64_down_to_the_subnormals() {
+        // A tie: 1 + 2^-53 lies halfway between 1 and next_up(1), half an ulp from each.
+        let tie = from_f64(1.0) + from_f64(2f64.powi(-53));
+        assert_eq!(ulps(1.0, &tie, 1.0), 0.5);
+        assert_eq!(ulps(1.0f64.next_up(), &tie, 1.0), 0.5);
+        // next_up is one ulp away at every exponent, including 1e-300 (below 2^-970, where a
+        // clamp at 2^-1022 measured 7.45e-9 ulps) and the subnormals.
+        for x in [
+            1.0,
+            3.0,
+            1e300,
+            1e-300,
+            2f64.powi(-1000),
+            2f64.powi(-1022),
+            1e-310,
+            5e-324,
+        ] {
+            assert_eq!(ulps(x.next_up(), &from_f64(x), x), 1.0, "{x:e}");
+            assert_eq!(ulp(x), x.next_up() - x, "{x:e}");
+            assert_eq!(ulp(-x), ulp(x), "{x:e}");
+        }
+        // 2^-1074 is the ulp of every subnormal and of 2^-1022; 2^-1023 - 2^-1074 is an
+        // exact subnormal.
+        assert_eq!(ulp(1e-310), f64::from_bits(1));
+        assert_eq!(ulp(f64::MIN_POSITIVE), f64::from_bits(1));
+        assert_eq!(ulp(2f64.powi(-1021)), f64::from_bits(2));
+        assert_eq!(ulp(1e-300), 2f64.powi(-997 - 52));
+        // A relative error of 1e-8 at 1e-300 is about 4.5e7 ulps, not a fraction of one.
+        let x = 1e-300;
+        let err = ulps(x * (1.0 + 1e-8), &from_f64(x), x);
+        assert!((4.0e7..5.0e7).contains(&err), "{err}");
     }
 
     #[test]

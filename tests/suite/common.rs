@@ -33,13 +33,12 @@ pub fn assert_pair(actual: [f64; 2], expected: [f64; 2], what: &str) {
     assert_exact(actual[1], expected[1], &format!("{what}[1]"));
 }
 
-/// `|actual - expected| <= n` ulps of `expected`, an ulp being `2^(floor(log2 |expected|) - 52)`
-/// as in the README's accuracy table.
+/// `|actual - expected| <= n` ulps of `expected`, an ulp being
+/// `2^max(floor(log2 |expected|) - 52, -1074)` as in the README's accuracy table
+/// ([`collide::accuracy::ulp`]: the spacing of binary64, subnormal below `2^-970`).
 #[track_caller]
 pub fn assert_ulps(actual: f64, expected: f64, n: f64, what: &str) {
-    let ulp = collide::values::compensated::pow2(
-        collide::values::compensated::exponent(expected).max(-1022 + 52) - 52,
-    );
+    let ulp = collide::accuracy::ulp(expected);
     assert!(
         (actual - expected).abs() <= n * ulp,
         "{what}: expected {expected:e} to {n} ulps, got {actual:e} ({:.2} ulps)",
@@ -170,4 +169,23 @@ pub fn solve_refused(args: &[&str], needles: &[&str]) {
 /// A JSON number (a test failure when it is not one).
 pub fn number(v: &serde_json::Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::assert_ulps;
+
+    #[test]
+    fn assert_ulps_measures_tiny_values_in_their_own_ulps() {
+        // 1 ulp at 1e-300 is 2^-1049; next_up is one of them, a half-ulp tolerance refuses it.
+        let x = 1e-300f64;
+        assert_ulps(x.next_up(), x, 1.0, "next_up");
+        assert!(std::panic::catch_unwind(|| assert_ulps(x.next_up(), x, 0.5, "half")).is_err());
+        // A relative error of 1e-8 is some 4.5e7 ulps, never within half of one.
+        let far = x * (1.0 + 1e-8);
+        assert!(std::panic::catch_unwind(|| assert_ulps(far, x, 0.5, "1e-8")).is_err());
+        // Subnormals: the spacing is 2^-1074.
+        assert_ulps(5e-324, 1e-323, 1.0, "subnormal");
+        assert!(std::panic::catch_unwind(|| assert_ulps(5e-324, 1.5e-323, 1.0, "2 ulps")).is_err());
+    }
 }
