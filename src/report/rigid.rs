@@ -361,7 +361,7 @@ fn impulse_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
         }
     }
     if let Some(note) = &o.impact.note {
-        b.row("note", note.clone(), "");
+        b.row("note", "", note.clone());
     }
     b
 }

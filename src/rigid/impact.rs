@@ -10,7 +10,8 @@
 //!   (`K n` along `n`) takes the smooth impulse, exactly.
 //! - Garwin's rough contact (`tangential_restitution` beta): the contact velocity after is
 //!   `w' = -e w_n n - beta w_t`, so `P = K^-1 (w - w')`; with a friction limit `mu` that this
-//!   impulse would exceed, Coulomb friction instead (Walton's rule).
+//!   impulse would exceed, the tangential impulse `mu P_n` along the same direction and
+//!   `v_n' = -e v_n` (Walton's rule).
 
 use num_traits::Signed;
 
@@ -202,7 +203,8 @@ impl Problem {
         }
     }
 
-    /// Garwin's rough contact: `w' = -beta w + (beta - e) (n.w) n / n.n`, `P = K^-1 (w - w')`.
+    /// Garwin's rough contact: `w' = -beta w + (beta - e) (n.w) n / n.n`, `P = K^-1 (w - w')`;
+    /// beyond the friction limit, Walton's rule ([`Problem::walton`]).
     fn rough(
         &self,
         k: &Mat,
@@ -220,21 +222,22 @@ impl Problem {
             .map(|(wi, ni)| -(beta * wi) + (beta - &self.e) * &wn * ni)
             .collect();
         let kinv = algebra::inverse(k).ok_or(ImpactError::RoughSingular)?;
-        let impulse = apply(&kinv, &sub(w, &after));
+        let mut impulse = apply(&kinv, &sub(w, &after));
+        let (mut approx, mut note) = (self.approx, None);
         if let Some(mu) = mu {
             // |P_t|^2 <= mu^2 P_n^2, with P_n = P.n/|n|: P.P - (P.n)^2/n.n <= mu^2 (P.n)^2/n.n.
             let pn = dot(&impulse, n);
             let pt2 = dot(&impulse, &impulse) - &pn * &pn / &nn;
             if pt2 > mu * mu * &pn * &pn / &nn {
-                let mut i = self.coulomb(k, w, mu, lc)?;
-                i.note = Some(
-                    "the rough contact would need more than mu times the normal impulse: it \
-                     slides with Coulomb friction instead"
-                        .into(),
-                );
-                return Ok(i);
+                let q = sub(&impulse, &scale(n, &(pn / &nn)));
+                match self.walton(k, w, mu, &q, &mut approx) {
+                    Some(p) => impulse = p,
+                    None => return self.coulomb(k, w, mu, lc),
+                }
+                note = Some("beyond the limit, Walton's rule: |P_t| = mu P_n".into());
             }
         }
+        let after = sub(w, &apply(k, &impulse));
         let slip = sub(w, &scale(n, &wn));
         let slip_after = sub(&after, &scale(n, &(dot(n, &after) / &nn)));
         let mode = if algebra::is_zero(&slip_after) {
@@ -250,9 +253,26 @@ impl Problem {
             path: None,
             compression: lc,
             ode: None,
-            approx: self.approx,
-            note: None,
+            approx,
+            note,
         })
+    }
+
+    /// Walton's rule (O. R. Walton, in *Particulate Two-Phase Flow*, 1993): a rough contact
+    /// whose impulse would exceed the friction limit keeps `v_n' = -e v_n` and takes the
+    /// tangential impulse `mu P_n` along the one it would have taken, `q` (across `n`):
+    /// `P = a (n + rho q)` with `rho = mu sqrt(n.n / q.q)`, and `n.(w - K P) = -e n.w` gives
+    /// `a = (1 + e) n.w / (n.K n + rho n.K q)`. `None` when that denominator is not positive
+    /// (the normal impulse could not push the bodies apart).
+    fn walton(&self, k: &Mat, w: &[Q], mu: &Q, q: &[Q], approx: &mut bool) -> Option<Vec<Q>> {
+        let n = &self.pair.contact.normal;
+        let rho = mu * routh::root(&(dot(n, n) / dot(q, q)), approx);
+        let d = dot(n, &apply(k, n)) + &rho * dot(n, &apply(k, q));
+        if !d.is_positive() {
+            return None;
+        }
+        let a = (Q::ONE + &self.e) * dot(n, w) / d;
+        Some(scale(&algebra::add(n, &scale(q, &rho)), &a))
     }
 }
 

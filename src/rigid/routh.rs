@@ -77,7 +77,7 @@ fn sign(q: &Q) -> Q {
 }
 
 /// `sqrt(q)` exactly, or to 40 digits and marked.
-fn root(q: &Q, approx: &mut bool) -> Q {
+pub(crate) fn root(q: &Q, approx: &mut bool) -> Q {
     sqrt_exact(q).unwrap_or_else(|| {
         *approx = true;
         crate::values::quantity::sqrt(q, DIGITS)

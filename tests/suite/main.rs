@@ -26,6 +26,7 @@ mod properties;
 mod readme;
 mod resources;
 mod rigid;
+mod rigid_friction;
 mod rigid_symmetry;
 mod shell;
 mod stages;
