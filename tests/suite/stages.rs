@@ -243,14 +243,18 @@ fn exact_and_binary64_agree_and_each_carries_what_it_printed() {
     }
 }
 
-/// A random chain as the A-level problems have it: A (`ma`) at `u` hits B (`mb`) at rest with
-/// `e`; B rebounds from a wall with `e_wall`; if A then catches B, they collide again with `e`.
+/// A random chain as the A-level problems have it, with both bodies moving: A (`ma`, on the
+/// left) at `ua` meets B (`mb`) at `ub < ua` with `e`; the body beside a wall (A beside one on
+/// the left, B beside one on the right) rebounds from it with `e_wall`; if A then catches B,
+/// they collide again with `e`.
 struct Chain {
     ma: i64,
     mb: i64,
-    u: i64,
+    ua: i64,
+    ub: i64,
     e: Q,
     e_wall: Q,
+    left: bool,
 }
 
 /// FIN of two bodies by the textbook formula (momentum and Newton's law of restitution, solved
@@ -263,28 +267,75 @@ fn textbook(m1: &Q, m2: &Q, v1: &Q, v2: &Q, e: &Q) -> (Q, Q) {
 }
 
 impl Chain {
-    fn scene(&self) -> (String, bool) {
-        let (ma, mb, u) = (int(self.ma), int(self.mb), int(self.u));
-        let (fa, fb) = textbook(&ma, &mb, &u, &Q::ZERO, &self.e);
-        let back = -(&self.e_wall * &fb);
-        let again = fa > back;
+    fn masses(&self) -> (Q, Q) {
+        (int(self.ma), int(self.mb))
+    }
+
+    /// Stage 1's FIN.
+    fn first(&self) -> (Q, Q) {
+        let (ma, mb) = self.masses();
+        textbook(&ma, &mb, &int(self.ua), &int(self.ub), &self.e)
+    }
+
+    /// The wall's side, `true` for the left: the side drawn when the body beside it moves toward
+    /// it after stage 1, else the other; `None` when neither does (both at rest).
+    fn wall_left(&self) -> Option<bool> {
+        let (fa, fb) = self.first();
+        match (self.left, fa < Q::ZERO, fb > Q::ZERO) {
+            (true, true, _) | (false, true, false) => Some(true),
+            (_, _, true) => Some(false),
+            _ => None,
+        }
+    }
+
+    /// A's and B's velocities after the wall stage, and whether A then catches B.
+    fn after_wall(&self, left: bool) -> (Q, Q, bool) {
+        let (fa, fb) = self.first();
+        let (a, b) = if left {
+            (-(&self.e_wall * &fa), fb)
+        } else {
+            (fa, -(&self.e_wall * &fb))
+        };
+        let again = a > b;
+        (a, b, again)
+    }
+
+    fn scene(&self, left: bool) -> (String, bool) {
+        let (_, _, again) = self.after_wall(left);
+        let (wall, fins) = if left {
+            (
+                format!(
+                    "masses = [\"wall\", {}]\nvelocities = [0, \"stage1.fin1\"]\n",
+                    self.ma
+                ),
+                ["stage2.fin2", "stage1.fin2"],
+            )
+        } else {
+            (
+                format!(
+                    "masses = [{}, \"wall\"]\nvelocities = [\"stage1.fin2\", 0]\n",
+                    self.mb
+                ),
+                ["stage1.fin1", "stage2.fin1"],
+            )
+        };
         let mut text = format!(
-            "[[stage]]\nmasses = [{}, {}]\nvelocities = [{}, 0]\nrestitution = \"{}\"\n\
-             [[stage]]\nmasses = [{}, \"wall\"]\nvelocities = [\"stage1.fin2\", 0]\n\
-             restitution = \"{}\"\n",
+            "[[stage]]\nmasses = [{}, {}]\nvelocities = [{}, {}]\nrestitution = \"{}\"\n\
+             [[stage]]\n{wall}restitution = \"{}\"\n",
             self.ma,
             self.mb,
-            self.u,
+            self.ua,
+            self.ub,
             fraction(&self.e),
-            self.mb,
             fraction(&self.e_wall)
         );
         if again {
             text += &format!(
-                "[[stage]]\nmasses = [{}, {}]\nvelocities = [\"stage1.fin1\", \"stage2.fin1\"]\n\
-                 restitution = \"{}\"\n",
+                "[[stage]]\nmasses = [{}, {}]\nvelocities = [\"{}\", \"{}\"]\nrestitution = \"{}\"\n",
                 self.ma,
                 self.mb,
+                fins[0],
+                fins[1],
                 fraction(&self.e)
             );
         }
@@ -292,14 +343,13 @@ impl Chain {
     }
 
     /// A's and B's velocities after the chain.
-    fn after(&self) -> (Q, Q) {
-        let (ma, mb, u) = (int(self.ma), int(self.mb), int(self.u));
-        let (fa, fb) = textbook(&ma, &mb, &u, &Q::ZERO, &self.e);
-        let back = -(&self.e_wall * &fb);
-        if fa > back {
-            textbook(&ma, &mb, &fa, &back, &self.e)
+    fn after(&self, left: bool) -> (Q, Q) {
+        let (a, b, again) = self.after_wall(left);
+        if again {
+            let (ma, mb) = self.masses();
+            textbook(&ma, &mb, &a, &b, &self.e)
         } else {
-            (fa, back)
+            (a, b)
         }
     }
 }
@@ -311,27 +361,39 @@ fn ratio() -> impl Strategy<Value = Q> {
 }
 
 proptest! {
-    #![proptest_config(proptest_config(24))]
+    #![proptest_config(proptest_config(32))]
 
     #[test]
     fn random_chains_match_the_textbook_in_exact_rationals(
-        ma in 1i64..=9, mb in 1i64..=9, u in 1i64..=9, e in ratio(), e_wall in ratio(),
+        ma in 1i64..=9, mb in 1i64..=9, ua in -9i64..=9, closing in 1i64..=9, e in ratio(),
+        e_wall in ratio(), left in any::<bool>(),
     ) {
-        let chain = Chain { ma, mb, u, e, e_wall };
-        let (text, again) = chain.scene();
-        let (b, x) = both(&format!("random-{ma}-{mb}-{u}"), &text);
+        let chain = Chain { ma, mb, ua, ub: ua - closing, e, e_wall, left };
+        let Some(left) = chain.wall_left() else {
+            // Both at rest after stage 1 (e = 0 and no momentum): no wall is met.
+            prop_assert!(chain.e.is_zero());
+            return Ok(());
+        };
+        let (text, again) = chain.scene(left);
+        let (b, x) = both(&format!("random-{ma}-{mb}-{ua}-{closing}"), &text);
         prop_assert_eq!(x["stages"].as_array().unwrap().len(), if again { 3 } else { 2 });
+        let wall = if left { "left wall" } else { "right wall" };
+        prop_assert_eq!(&x["stages"][1]["bodies"], &if left { json!([wall, "A"]) } else { json!(["B", wall]) });
         // After: the textbook's values, exactly.
-        let (va, vb) = chain.after();
+        let (va, vb) = chain.after(left);
         prop_assert_eq!(q(x["after"]["A"].as_str().unwrap()), va.clone());
         prop_assert_eq!(q(x["after"]["B"].as_str().unwrap()), vb.clone());
-        // Next: A catches B when faster; B reaches the wall again when it moves toward it.
+        // Next: A reaches a wall on its left when it moves left, A catches B when faster, B
+        // reaches a wall on its right when it moves right.
         let mut next = Vec::new();
+        if left && va < Q::ZERO {
+            next.push(json!({"bodies": [wall, "A"], "closing_speed": fraction(&-va.clone())}));
+        }
         if va > vb {
             next.push(json!({"bodies": ["A", "B"], "closing_speed": fraction(&(&va - &vb))}));
         }
-        if vb > Q::ZERO {
-            next.push(json!({"bodies": ["B", "right wall"], "closing_speed": fraction(&vb)}));
+        if !left && vb > Q::ZERO {
+            next.push(json!({"bodies": ["B", wall], "closing_speed": fraction(&vb)}));
         }
         prop_assert_eq!(&x["next"], &json!(next));
         prop_assert_eq!(&x["collide_again"], &json!(!next.is_empty()));
@@ -341,6 +403,32 @@ proptest! {
         invariants(&b);
         invariants(&x);
     }
+}
+
+#[test]
+fn a_left_wall_chain_by_value() {
+    // A (1) at rest on the left, hit by B (2) at -3, e = 1/2: momentum -6, V_COM = -2,
+    // FIN = (3/2)(-2, -2) - (1/2)(0, -3) = (-3, -3/2). Then A meets a wall on its left, e = 1/2:
+    // A' = -(1/2)(-3) = 3/2. A (3/2) and B (-3/2) close at 3: they collide again.
+    let r = report_of(
+        "left-wall.toml",
+        "exact = true\n[[stage]]\nbodies = [\"A\", \"B\"]\nmasses = [1, 2]\nvelocities = [0, -3]\n\
+         restitution = \"1/2\"\n[[stage]]\nname = \"wall\"\nmasses = [\"wall\", 1]\n\
+         velocities = [0, \"stage1.fin1\"]\nrestitution = \"1/2\"\n",
+    );
+    let stage = |i: usize| &r["stages"][i]["report"];
+    assert_eq!(stage(0)["fin"], json!(["-3", "-3/2"]));
+    assert_eq!(r["stages"][1]["bodies"], json!(["left wall", "A"]));
+    assert_eq!(r["stages"][1]["takes"], json!({"v2": "stage1.fin1"}));
+    assert_eq!(stage(1)["in"], json!(["0", "-3"]));
+    assert_eq!(stage(1)["fin"], json!(["0", "3/2"]));
+    assert_eq!(r["after"], json!({"A": "3/2", "B": "-3/2"}));
+    assert_eq!(
+        r["next"],
+        json!([{"bodies": ["A", "B"], "closing_speed": "3"}])
+    );
+    assert_eq!(r["collide_again"], true);
+    invariants(&r);
 }
 
 /// Every stage's invariants: a collision keeps momentum and never creates energy (`e <= 1`),
