@@ -294,11 +294,13 @@ pub struct NormalParts {
 
 /// `|v|` and the angle from +x in degrees (counterclockwise, in (-180, 180]), in binary64:
 /// `hypot` of the rounded components, `atan2` in degrees of the direction (scaled by a power of
-/// two, so that no size of vector loses it); `None` for the zero vector's angle.
+/// two, so that no size of vector loses it); `None` for the angle of a vector that prints as
+/// zero: the zero vector, or one whose components all round to 0 (1e-333 beside 1e35 elsewhere
+/// in the report), which has no direction to print beside its speed of 0.
 pub fn polar(v: &[Q]) -> (f64, Option<f64>) {
     let f: Vec<f64> = v.iter().map(|x| to_f64(x).unwrap_or(f64::NAN)).collect();
     let speed = f.iter().fold(0.0f64, |s, x| libm::hypot(s, *x));
-    let angle = (v.len() == 2 && !(v[0].is_zero() && v[1].is_zero())).then(|| {
+    let angle = (v.len() == 2 && speed != 0.0).then(|| {
         let d = direction(v);
         libm::atan2(d[1], d[0]).to_degrees()
     });
@@ -394,5 +396,10 @@ mod tests {
         assert!((a.unwrap() - 53.13010235415598).abs() < 1e-12);
         assert_eq!(polar(&v(&[0, 0])).1, None);
         assert_eq!(polar(&v(&[-1, 0])).1, Some(180.0));
+        // Not zero, but below binary64's smallest subnormal: it prints (0, 0), with no angle.
+        let tiny = [Q::ZERO, -(Q::ONE / crate::values::rational::pow2(1110))];
+        assert_eq!(polar(&tiny), (0.0, None));
+        let small = [Q::ZERO, -(Q::ONE / crate::values::rational::pow2(1070))];
+        assert_eq!(polar(&small).1, Some(-90.0));
     }
 }

@@ -536,3 +536,50 @@ fn a_finally_at_rest_frame_without_a_collision_is_initially_at_rest() {
         assert!(text.contains("no collision: FIN = IN"), "{text}");
     }
 }
+
+#[test]
+fn a_vector_that_prints_as_zero_has_no_angle() {
+    // docs/plane.md: a component below binary64's smallest subnormal prints as 0. Equal masses,
+    // elastic, body 2 at rest, n = (1e300, 1e-68): body 1 keeps its tangential part,
+    // v1' = v1 - (v1.n) n / n.n = 1e35 (r^2, -r) / (1 + r^2) with r = 1e-368: about
+    // (1e-701, -1e-333), both below 4.9e-324. It prints (0, 0) and its speed 0, with no angle
+    // (it was `0 @ -90°`), and JSON gives it a zero vector's angle, 0.
+    let args = [
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(1e35,0),(0,0)",
+        "--normal",
+        "(1e300,1e-68)",
+    ];
+    let out = stdout(&args);
+    let line = out
+        .lines()
+        .find(|l| l.trim_start().starts_with("v1'"))
+        .unwrap();
+    assert_eq!(
+        line.split_whitespace().collect::<Vec<_>>(),
+        ["v1'", "(0,", "0)", "0"],
+        "{out}"
+    );
+    let j = json(&args[1..]);
+    assert_eq!(j["fin"][0], serde_json::json!([0.0, 0.0]));
+    assert_eq!(f(&j["fin_angle_deg"][0]), 0.0);
+    assert_eq!(f(&j["fin_angle_deg"][1]), 0.0);
+    // A vector that prints as non-zero keeps its direction: 1e-300 is within binary64.
+    let out = stdout(&[
+        "solve",
+        "-m",
+        "1,1",
+        "-v",
+        "(1e35,0),(0,0)",
+        "--normal",
+        "(1e300,1e-35)",
+    ]);
+    let line = out
+        .lines()
+        .find(|l| l.trim_start().starts_with("v1'"))
+        .unwrap();
+    assert!(line.ends_with("@ -90°"), "{line}");
+}
