@@ -16,7 +16,7 @@ use num_traits::{Signed, Zero};
 
 use crate::values::number::Given;
 use crate::values::quantity::Exact;
-use crate::values::rational::{Q, from_f64, to_f64};
+use crate::values::rational::{Q, from_f64};
 
 use super::algebra::{self, Poly, Root, TooNonlinear};
 
@@ -401,8 +401,7 @@ pub fn solve(given: &Statement) -> Result<Solved, SolveError> {
                     // Compared exactly: terms beyond binary64's range (a momentum of 1e383)
                     // are no reason to fail.
                     let ok = r.is_zero()
-                        || ((given.inexact || approx)
-                            && r.abs() <= crate::values::rational::from_f64(INEXACT_TOL) * &scale);
+                        || ((given.inexact || approx) && r.abs() <= from_f64(INEXACT_TOL) * &scale);
                     Check {
                         law: *law,
                         residual: r,
@@ -542,10 +541,11 @@ fn solve_system(
                     .into_iter()
                     .map(|(t, exact)| (t.to_vec(), exact))
                     .collect(),
-                None => two_parameters(&in_t[0].1, &in_t[1].1)?
-                    .into_iter()
-                    .map(|t| (t, false))
-                    .collect(),
+                None => {
+                    return Err(SolveError::Unsupported(
+                        "two free parameters whose equations are not a unit direction and a conic",
+                    ));
+                }
             };
             Ok(roots
                 .into_iter()
@@ -600,136 +600,10 @@ fn on_unit_circle(q: &Poly) -> Vec<([Q; 2], bool)> {
     points
 }
 
-/// The common real points of two conics `p(t0, t1) = 0 = q(t0, t1)`, one of them an ellipse (a
-/// unit direction is one): the ellipse walked around by its angle, sign changes of the other
-/// located by bisection (binary64; the roots are irrational in general).
-fn two_parameters(p: &Poly, q: &Poly) -> Result<Vec<Vec<Q>>, SolveError> {
-    let (ellipse, other) = if let Some(e) = Ellipse::of(p) {
-        (e, q)
-    } else if let Some(e) = Ellipse::of(q) {
-        (e, p)
-    } else {
-        return Err(SolveError::Unsupported(
-            "two free parameters whose equations are not an ellipse and a conic",
-        ));
-    };
-    let f = |s: f64| {
-        let t = ellipse.at(s);
-        eval_f64(other, &t)
-    };
-    const SAMPLES: usize = 4096;
-    let tau = std::f64::consts::TAU;
-    let mut roots: Vec<f64> = Vec::new();
-    let mut prev = f(0.0);
-    for i in 1..=SAMPLES {
-        let s1 = tau * i as f64 / SAMPLES as f64;
-        let s0 = tau * (i - 1) as f64 / SAMPLES as f64;
-        let cur = f(s1);
-        if prev == 0.0 {
-            roots.push(s0);
-        } else if prev.signum() != cur.signum() && cur != 0.0 {
-            let (mut lo, mut hi, mut flo) = (s0, s1, prev);
-            for _ in 0..200 {
-                let mid = 0.5 * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break;
-                }
-                let fm = f(mid);
-                if fm == 0.0 {
-                    lo = mid;
-                    hi = mid;
-                    break;
-                }
-                if fm.signum() == flo.signum() {
-                    lo = mid;
-                    flo = fm;
-                } else {
-                    hi = mid;
-                }
-            }
-            roots.push(0.5 * (lo + hi));
-        }
-        prev = cur;
-    }
-    Ok(roots
-        .into_iter()
-        .map(|s| ellipse.at(s).into_iter().map(from_f64).collect())
-        .collect())
-}
-
-fn eval_f64(p: &Poly, t: &[f64]) -> f64 {
-    let f = |q: &Q| to_f64(q).unwrap_or(0.0);
-    let mut s = f(&p.c);
-    for (i, a) in &p.lin {
-        s += f(a) * t[*i];
-    }
-    for ((i, j), b) in &p.quad {
-        s += f(b) * t[*i] * t[*j];
-    }
-    s
-}
-
-/// A real ellipse `p(t0, t1) = 0`, walked by an angle: centre, and the map from the unit
-/// circle (from the Cholesky factor of the quadratic part).
-struct Ellipse {
-    centre: [f64; 2],
-    /// `t = centre + L^-T (r cos s, r sin s)`.
-    map: [[f64; 2]; 2],
-}
-
-impl Ellipse {
-    fn of(p: &Poly) -> Option<Ellipse> {
-        let f = |q: Option<&Q>| q.and_then(to_f64).unwrap_or(0.0);
-        let (a, b, c) = (
-            f(p.quad.get(&(0, 0))),
-            f(p.quad.get(&(0, 1))) / 2.0,
-            f(p.quad.get(&(1, 1))),
-        );
-        let (d, e, g) = (f(p.lin.get(&0)), f(p.lin.get(&1)), f(Some(&p.c)));
-        // Positive (or negative) definite quadratic part.
-        let (a, b, c, d, e, g) = if a < 0.0 {
-            (-a, -b, -c, -d, -e, -g)
-        } else {
-            (a, b, c, d, e, g)
-        };
-        let det = a * c - b * b;
-        if !(a > 0.0 && det > 0.0) {
-            return None;
-        }
-        // Centre: [[a, b], [b, c]] x = -(d, e)/2.
-        let cx = (-d / 2.0 * c + e / 2.0 * b) / det;
-        let cy = (-e / 2.0 * a + d / 2.0 * b) / det;
-        // Value at the centre: p(c) = g + (d cx + e cy)/2; the ellipse is x^T A x = -p(c).
-        let k = -(g + (d * cx + e * cy) / 2.0);
-        if k <= 0.0 {
-            return None;
-        }
-        // A = L L^T, L = [[l11, 0], [l21, l22]]; x = L^-T (sqrt(k) (cos, sin)).
-        let l11 = a.sqrt();
-        let l21 = b / l11;
-        let l22 = (c - l21 * l21).sqrt();
-        let r = k.sqrt();
-        // L^-T = [[1/l11, -l21/(l11 l22)], [0, 1/l22]].
-        let map = [[r / l11, -r * l21 / (l11 * l22)], [0.0, r / l22]];
-        Some(Ellipse {
-            centre: [cx, cy],
-            map,
-        })
-    }
-
-    fn at(&self, s: f64) -> Vec<f64> {
-        let (c, sn) = (libm::cos(s), libm::sin(s));
-        vec![
-            self.centre[0] + self.map[0][0] * c + self.map[0][1] * sn,
-            self.centre[1] + self.map[1][0] * c + self.map[1][1] * sn,
-        ]
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::values::rational::{int, ratio};
+    use crate::values::rational::{int, ratio, to_f64};
 
     fn k(n: i64) -> Given<Q> {
         Given::Known(int(n))
