@@ -377,3 +377,49 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_solved_problem_prints_the_typed_and_the_solved_values_in_every_section() {
+    // v1 unknown, FIN typed: momentum gives v1 = (m1 f1 + m2 f2 - m2 v2) / m1 and e follows;
+    // FIN was computed again in binary64 from the rounded v1 and e: (-1.224, 0.0069999999999999)
+    // where 0.007 was typed. FIN is the typed values, in text and JSON.
+    let case = [
+        "-m",
+        "12.901,5.878",
+        "-v",
+        "?,-3.912",
+        "--fin",
+        "-1.224,0.007",
+    ];
+    let mut a = case.to_vec();
+    a.extend(["--show", "vectors"]);
+    let text = text_of("solve", &a);
+    assert!(text.contains("FIN  V_FIN    (-1.224, 0.007)"), "{text}");
+    let j = json_of("solve", &a);
+    assert_eq!(j["fin"], serde_json::json!([-1.224, 0.007]), "{j}");
+
+    // An impulse of 20.8267 N s on body 2: f1 = v1 - J/m1 = (7.723 * 2.722 - 20.8267) / 2.722
+    // = 0.195306 / 2.722 = 97653/1361000 exactly, whose nearest binary64 is
+    // 0.07175091844232183 (Python's Fraction). "Solved: f1" and FIN's v1' printed two values
+    // (...218 and ...214); both are now the exact one rounded once.
+    let case = [
+        "-m",
+        "2.722 kg,17.157 kg",
+        "-v",
+        "7.723 m/s,2.909 m/s",
+        "--impulse",
+        "20.8267 N s",
+        "--show",
+        "vectors",
+    ];
+    let want = collide::values::rational::to_f64(&collide::values::rational::ratio(97653, 1361000))
+        .unwrap();
+    assert_eq!(want, 0.07175091844232183);
+    let j = json_of("solve", &case);
+    assert_eq!(j["solved"]["f1"].as_f64(), Some(want), "{j}");
+    assert_eq!(j["fin"][0].as_f64(), Some(want), "{j}");
+    assert_eq!(j["fin"][1], j["solved"]["f2"], "{j}");
+    let text = text_of("solve", &case);
+    assert!(text.contains("v1' = 0.0717509184423218 m/s"), "{text}");
+    assert!(!text.contains("0.0717509184423214"), "{text}");
+}

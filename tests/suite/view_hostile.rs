@@ -396,7 +396,8 @@ fn browser_an_input_during_a_frame_shift_is_what_the_page_shows() {
 fn browser_a_refused_stack_greys_the_last_run_and_stops_play() {
     let Some(b) = browser() else { return };
     // Masses "1,-1": the tower, the world lines and the numbers are the last valid run's, so
-    // each is greyed and labelled, and Play is disabled; a valid input takes it all back.
+    // each is greyed and labelled, and Play is disabled; a valid input (the two-ball preset)
+    // takes it all back.
     let bad = read(b, "s_bad");
     assert_eq!(bad["stale"], serde_json::json!([true, true, true]), "{bad}");
     assert_eq!(bad["play"], true, "{bad}");
