@@ -4,10 +4,9 @@
 use anyhow::Result;
 use collide::line::frame::Frame;
 use collide::report::json;
-use collide::report::space::solved::{Options, render};
+use collide::report::space::solved::{Judged, Options, Verdict, judge, receding, render};
 use collide::report::space::{self as report, Style};
 use collide::space::outcome::Outcome as Event;
-use collide::space::pose::outcomes;
 use collide::space::solve;
 
 use super::Outcome;
@@ -56,10 +55,38 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
     let input = args.case.space_input(None, args.exact)?;
     let posed = input.pose()?;
     let solved = solve::solve(&posed.statement)?;
-    let all = outcomes(&posed, &solved);
-    let [(lab, _)] = all.as_slice() else {
-        anyhow::bail!("frames needs one collision; this case has {}", all.len());
+    let mut units = posed.units.clone();
+    if let Some(u) = args.case.energy_unit {
+        units = units.with_energy_unit(u)?;
+    }
+    let style = Style::new(args.exact, units.energy_scale()).with_bearings(posed.bearings);
+    // The outcome `solve` takes (judged once): bodies that do not approach do not collide.
+    let lab = match judge(&posed, &solved, false, args.exact)? {
+        Judged::Receding { o, along } => {
+            let note = receding(&o, &along, &style, &units, &Frame::Lab, &[])?;
+            return Ok(Outcome::print(match args.format {
+                Format::Text => note.text,
+                Format::Json => json::render(&note.json),
+            }));
+        }
+        Judged::Solutions { kept, inconsistent } => match kept.as_slice() {
+            [(o, _, v)] if !inconsistent && matches!(v, Verdict::Physical | Verdict::NoImpulse) => {
+                o.clone()
+            }
+            [(_, _, v)] if !inconsistent => {
+                anyhow::bail!(
+                    "frames needs a collision; this case has none ({})",
+                    v.describe()
+                )
+            }
+            [_] => anyhow::bail!(
+                "the given values contradict each other (see `collide solve`), so there is no \
+                 collision to show in frames"
+            ),
+            all => anyhow::bail!("frames needs one collision; this case has {}", all.len()),
+        },
     };
+    let lab = &lab;
     let stuck = lab.e.as_ref().is_some_and(|e| e.is_zero());
     let n = lab.bodies();
     let mut list: Vec<Frame> = vec![Frame::Lab];
@@ -85,11 +112,6 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
             );
         }
     }
-    let mut units = posed.units.clone();
-    if let Some(u) = args.case.energy_unit {
-        units = units.with_energy_unit(u)?;
-    }
-    let style = Style::new(args.exact, units.energy_scale()).with_bearings(posed.bearings);
     let views: Vec<report::frames::FrameView> = seen
         .iter()
         .map(|(name, w, o)| report::frames::FrameView {
@@ -121,15 +143,32 @@ pub fn plane_svg(case: &crate::cli::CaseArgs) -> Result<String> {
         );
     }
     let solved = solve::solve(&posed.statement)?;
-    let all = outcomes(&posed, &solved);
-    let [(o, _)] = all.as_slice() else {
-        anyhow::bail!(
-            "the picture needs one solution; this case has {}",
-            all.len()
-        );
+    // The outcome `solve` takes (judged once): bodies that do not approach pass unchanged.
+    let (o, note) = match judge(&posed, &solved, false, false)? {
+        Judged::Receding { o, .. } => (
+            o.as_happens(),
+            "   no collision: they do not approach along n",
+        ),
+        Judged::Solutions { kept, inconsistent } => match kept.as_slice() {
+            [(o, _, v)] if !inconsistent && matches!(v, Verdict::Physical | Verdict::NoImpulse) => {
+                (o.clone(), "")
+            }
+            [(_, _, v)] if !inconsistent => {
+                anyhow::bail!("no collision to draw: {}", v.describe())
+            }
+            [_] => anyhow::bail!(
+                "the given values contradict each other (see `collide solve`): no collision \
+                 to draw"
+            ),
+            all => anyhow::bail!(
+                "the picture needs one solution; this case has {}",
+                all.len()
+            ),
+        },
     };
+    let o = &o;
     let title = format!(
-        "masses {}",
+        "masses {}{note}",
         o.masses
             .iter()
             .map(|m| collide::values::number::num(

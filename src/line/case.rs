@@ -35,6 +35,17 @@ impl Case {
         &self.collision.restitution
     }
 
+    /// Whether a value of the case was solved rather than typed (a homework problem's).
+    pub fn solved(&self) -> bool {
+        self.inertia()
+            .entries()
+            .iter()
+            .flatten()
+            .chain(&self.velocities)
+            .chain([self.restitution().number()])
+            .any(|n| n.is_derived())
+    }
+
     /// Refuses typed numbers too long for exact arithmetic (`--exact`).
     pub fn check_exact(&self) -> Result<(), crate::values::number::ExactTooLong> {
         let m = self.inertia().entries();

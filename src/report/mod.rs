@@ -657,6 +657,11 @@ impl AnyReport {
             case.check_exact()?;
             let lab = ExactCollision::from_case(case);
             AnyReport::Exact(Box::new(Report::of(&lab, frame, sections, reverse)?))
+        } else if case.solved() && case.check_exact().is_ok() {
+            // A solved problem: the exact solution rounded once, so FIN is the typed or the
+            // solved value and nothing is computed again from a rounded one.
+            let lab = crate::solver::rounded::Rounded::new(ExactCollision::from_case(case));
+            AnyReport::Binary64(Box::new(Report::of(&lab, frame, sections, reverse)?))
         } else {
             let mut r = Report::of(&case.collision, frame, sections, reverse)?;
             // Whether the bodies approach, and which is behind, from the values as typed (or

@@ -5,6 +5,7 @@
 
 pub mod binary64;
 pub mod exact;
+pub mod rounded;
 
 use crate::line::ellipse::Ellipse;
 use crate::line::frame::Frame;

@@ -98,6 +98,28 @@ pub fn bounded<const D: usize>(
     n: [f64; D],
     e: f64,
 ) -> Option<[[f64; D]; 2]> {
+    let (j1, j2) = coefficients(m, v, n, e)?;
+    let mut out = [[0.0; D]; 2];
+    for c in 0..D {
+        let nk = Bounded::exact(Dd::new(n[c]));
+        out[0][c] = Bounded::exact(Dd::new(v[0][c]))
+            .add(j1.mul(nk).neg())
+            .round()?;
+        out[1][c] = Bounded::exact(Dd::new(v[1][c])).add(j2.mul(nk)).round()?;
+    }
+    Some(out)
+}
+
+/// The impulse form's two coefficients, `v1' = v1 - j1 n` and `v2' = v2 + j2 n` with
+/// `j1 = (1 + e) s m2 / M`, `j2 = (1 + e) s m1 / M`, `s = n.(v1 - v2) / n.n`, in double-double
+/// with their error bounds; `None` outside the range where double-double is exact.
+#[inline(always)]
+fn coefficients<const D: usize>(
+    m: [f64; 2],
+    v: [[f64; D]; 2],
+    n: [f64; D],
+    e: f64,
+) -> Option<(Bounded, Bounded)> {
     let within = |xs: &[f64]| xs.iter().all(|x| in_range(*x));
     if !(within(&m) && v.iter().all(|w| within(w)) && within(&n) && in_range(e)) {
         return None;
@@ -116,17 +138,242 @@ pub fn bounded<const D: usize>(
     let total = Bounded::exact(Dd::sum(m[0], m[1]));
     let k = Bounded::exact(Dd::sum(1.0, e));
     let q = k.mul(s_num).div(nn.mul(total));
-    let j1 = q.mul(Bounded::exact(Dd::new(m[1])));
-    let j2 = q.mul(Bounded::exact(Dd::new(m[0])));
-    let mut out = [[0.0; D]; 2];
-    for c in 0..D {
-        let nk = Bounded::exact(Dd::new(n[c]));
-        out[0][c] = Bounded::exact(Dd::new(v[0][c]))
-            .add(j1.mul(nk).neg())
-            .round()?;
-        out[1][c] = Bounded::exact(Dd::new(v[1][c])).add(j2.mul(nk)).round()?;
+    Some((
+        q.mul(Bounded::exact(Dd::new(m[1]))),
+        q.mul(Bounded::exact(Dd::new(m[0]))),
+    ))
+}
+
+/// How far each body turned (from `v_i` to `v_i'`, 0 for a body at rest before or after) and
+/// the angle between `v1'` and `v2'` (`None` if either is zero), in degrees, in the plane: the
+/// angles `collide solve` prints ([`crate::space::outcome::angle_between`]), bit for bit,
+/// from the same inputs. That function takes `atan2(|a x b|, a.b)` of the exact products,
+/// each rounded once (of the vectors scaled by powers of two, which changes neither the
+/// rounding nor `atan2` while the values are normal). Here the products come from the impulse
+/// form itself, never from the rounded final velocities (whose rounding would leave almost
+/// nothing of a turn by 1e-13 rad):
+/// `v_i x v_i' = -+ j_i (v_i x n)`, `v_i.v_i' = v_i.v_i -+ j_i (v_i.n)`,
+/// `v1' x v2' = v1 x v2 + j2 (v1 x n) + j1 (v2 x n)`,
+/// `v1'.v2' = v1.v2 + j2 (v1.n) - j1 (v2.n) - j1 j2 (n.n)`,
+/// in double-double with an error bound; where the bound cannot decide a rounding, or a
+/// value comes near binary64's range, the exact rationals decide through that same function.
+pub fn angles(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> ([f64; 2], Option<f64>) {
+    fast_angles(m, v, n, e).unwrap_or_else(|| exact_angles(m, v, n, e))
+}
+
+/// `angles` in double-double alone: `None` where it cannot decide a rounding.
+#[inline(always)]
+fn fast_angles(
+    m: [f64; 2],
+    v: [[f64; 2]; 2],
+    n: [f64; 2],
+    e: f64,
+) -> Option<([f64; 2], Option<f64>)> {
+    // Moderate sizes only: every product below stays far inside binary64 (and so do the
+    // vectors as `angle_between` scales them), so no rounding meets a subnormal.
+    let moderate = |x: f64| x == 0.0 || (x.abs() > 1e-60 && x.abs() < 1e60);
+    if !(m
+        .iter()
+        .chain(v.iter().flatten())
+        .chain(&n)
+        .all(|x| moderate(*x))
+        && moderate(e))
+    {
+        return None;
     }
-    Some(out)
+    let (j1, j2) = coefficients(m, v, n, e)?;
+    let cross = |a: [f64; 2], c: [f64; 2]| {
+        Bounded::exact(Dd::prod(a[0], c[1])).add(Bounded::exact(Dd::prod(a[1], c[0])).neg())
+    };
+    let dot = |a: [f64; 2], c: [f64; 2]| {
+        Bounded::exact(Dd::prod(a[0], c[0])).add(Bounded::exact(Dd::prod(a[1], c[1])))
+    };
+    // The angle of a (cross, dot) pair, when both round for certain and are not both zero
+    // (a zero vector: the exact form says which), and neither is so small that it or its
+    // scaled form is subnormal (`big`: a bound on the product of the two vectors' sizes).
+    let angle = |c: Bounded, d: Bounded, big: f64| -> Option<f64> {
+        let (c, d) = (c.round()?, d.round()?);
+        let tiny = |x: f64| x != 0.0 && (x.abs() < 1e-200 * big || x.abs() < 1e-290);
+        if (c == 0.0 && d == 0.0) || tiny(c) || tiny(d) {
+            return None;
+        }
+        Some(libm::atan2(c.abs(), d).to_degrees())
+    };
+    let size = |a: [f64; 2]| a[0].abs().max(a[1].abs());
+    let (n_x, n_n) = (cross(v[0], n), dot(v[0], n));
+    let (m_x, m_n) = (cross(v[1], n), dot(v[1], n));
+    // Body 1: |v1 x v1'| = |j1 (v1 x n)|, v1.v1' = v1.v1 - j1 (v1.n); body 2 with + j2.
+    let mut turned = [0.0; 2];
+    for (i, (j, vx, vn)) in [(j1.neg(), n_x, n_n), (j2, m_x, m_n)]
+        .into_iter()
+        .enumerate()
+    {
+        if v[i] == [0.0, 0.0] {
+            continue;
+        }
+        let big = size(v[i]) * (size(v[i]) + j.v.hi.abs() * size(n));
+        turned[i] = angle(j.mul(vx), dot(v[i], v[i]).add(j.mul(vn)), big)?;
+    }
+    let c = cross(v[0], v[1]).add(j2.mul(n_x)).add(j1.mul(m_x));
+    let d = dot(v[0], v[1])
+        .add(j2.mul(n_n))
+        .add(j1.mul(m_n).neg())
+        .add(j1.mul(j2).mul(dot(n, n)).neg());
+    let w = [
+        size(v[0]) + j1.v.hi.abs() * size(n),
+        size(v[1]) + j2.v.hi.abs() * size(n),
+    ];
+    let between = angle(c, d, w[0] * w[1])?;
+    Some((turned, Some(between)))
+}
+
+/// The energies of an impact and the impulse on body 2, each the exact value rounded once:
+/// what `collide solve` prints for the same inputs (`Outcome`'s `ke_in`, `ke_fin`, `ke_com`,
+/// `crunch`, `lost` and `impulse(1)`), bit for bit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Energies {
+    pub ke_in: f64,
+    pub ke_fin: f64,
+    pub ke_com: f64,
+    pub crunch: f64,
+    pub lost: f64,
+    pub impulse: [f64; 2],
+}
+
+/// [`Energies`] of the impact: `KE_IN = 1/2 sum m_i (v_i.v_i)`, the crunch `1/2 mu (n.d)^2 /
+/// n.n` (`mu = m1 m2 / M`, physics.md section 7), `lost = (1 - e)(1 + e) crunch`,
+/// `KE_FIN = KE_IN - lost`, `KE_COM = 1/2 |P|^2 / M`, the impulse `j2 m2 n` (`j2` of
+/// [`coefficients`]), in double-double with an error bound; where the bound cannot decide a
+/// rounding (`KE_FIN` after a loss of nearly everything), or a value is outside moderate
+/// sizes, the exact rationals decide through `Outcome` itself.
+pub fn energies(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> Energies {
+    fast_energies(m, v, n, e).unwrap_or_else(|| exact_energies(m, v, n, e))
+}
+
+/// `energies` in double-double alone: `None` where it cannot decide a rounding.
+#[inline(always)]
+fn fast_energies(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> Option<Energies> {
+    let moderate = |x: f64| x == 0.0 || (x.abs() > 1e-60 && x.abs() < 1e60);
+    if !(m
+        .iter()
+        .chain(v.iter().flatten())
+        .chain(&n)
+        .all(|x| moderate(*x))
+        && moderate(e))
+    {
+        return None;
+    }
+    let (_, j2) = coefficients(m, v, n, e)?;
+    let b = |x: Dd| Bounded::exact(x);
+    let half = b(Dd::new(0.5));
+    let total = b(Dd::sum(m[0], m[1]));
+    let mut nd = b(Dd::default());
+    let mut nn = b(Dd::default());
+    let mut p2 = b(Dd::default());
+    let mut ke = b(Dd::default());
+    for k in 0..2 {
+        nd = nd.add(b(Dd::new(n[k])).mul(b(Dd::sum(v[0][k], -v[1][k]))));
+        nn = nn.add(b(Dd::prod(n[k], n[k])));
+        let p = b(Dd::prod(m[0], v[0][k])).add(b(Dd::prod(m[1], v[1][k])));
+        p2 = p2.add(p.mul(p));
+    }
+    for i in 0..2 {
+        let vv = b(Dd::prod(v[i][0], v[i][0])).add(b(Dd::prod(v[i][1], v[i][1])));
+        ke = ke.add(b(Dd::new(m[i])).mul(vv));
+    }
+    let ke_in = half.mul(ke);
+    let mu = b(Dd::prod(m[0], m[1])).div(total);
+    let crunch = half.mul(mu).mul(nd).mul(nd).div(nn);
+    let lost = b(Dd::sum(1.0, -e)).mul(b(Dd::sum(1.0, e))).mul(crunch);
+    let ke_fin = ke_in.add(lost.neg());
+    let ke_com = half.mul(p2).div(total);
+    let impulse = j2.mul(b(Dd::new(m[1])));
+    Some(Energies {
+        ke_in: ke_in.round()?,
+        ke_fin: ke_fin.round()?,
+        ke_com: ke_com.round()?,
+        crunch: crunch.round()?,
+        lost: lost.round()?,
+        impulse: [
+            impulse.mul(b(Dd::new(n[0]))).round()?,
+            impulse.mul(b(Dd::new(n[1]))).round()?,
+        ],
+    })
+}
+
+/// The exact impact of the binary64 inputs as `collide solve` holds it: `None` for `n = 0`.
+pub fn exact_outcome(
+    m: [f64; 2],
+    v: [[f64; 2]; 2],
+    n: [f64; 2],
+    e: f64,
+) -> Option<crate::space::outcome::Outcome> {
+    let q = |x: f64| from_f64(x);
+    let (m1, m2) = (q(m[0]), q(m[1]));
+    let nq: Vec<Q> = n.iter().map(|x| q(*x)).collect();
+    let vq: Vec<Vec<Q>> = v
+        .iter()
+        .map(|w| w.iter().map(|x| q(*x)).collect())
+        .collect();
+    let mut s_num = Q::ZERO;
+    let mut nn = Q::ZERO;
+    for k in 0..2 {
+        s_num += &nq[k] * (&vq[0][k] - &vq[1][k]);
+        nn += &nq[k] * &nq[k];
+    }
+    if nn == Q::ZERO {
+        return None;
+    }
+    let j = (Q::ONE + q(e)) * s_num / nn / (&m1 + &m2);
+    let fin: Vec<Vec<Q>> = vec![
+        (0..2).map(|k| &vq[0][k] - &j * &m2 * &nq[k]).collect(),
+        (0..2).map(|k| &vq[1][k] + &j * &m1 * &nq[k]).collect(),
+    ];
+    Some(crate::space::outcome::Outcome {
+        dim: 2,
+        masses: vec![m1, m2],
+        v_in: vq,
+        fin,
+        normal: Some(nq),
+        e: Some(q(e)),
+        approx: false,
+    })
+}
+
+/// `energies` from the exact impact through `Outcome`'s own methods (the fallback, and the
+/// tests' reference).
+pub fn exact_energies(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> Energies {
+    let f = |x: &Q| to_f64(x).unwrap_or(f64::NAN);
+    let Some(o) = exact_outcome(m, v, n, e) else {
+        return Energies {
+            ke_in: f64::NAN,
+            ke_fin: f64::NAN,
+            ke_com: f64::NAN,
+            crunch: f64::NAN,
+            lost: f64::NAN,
+            impulse: [f64::NAN; 2],
+        };
+    };
+    let j = o.impulse(1);
+    Energies {
+        ke_in: f(&o.ke_in()),
+        ke_fin: f(&o.ke_fin()),
+        ke_com: f(&o.ke_com()),
+        crunch: f(&o.crunch()),
+        lost: f(&o.lost()),
+        impulse: [f(&j[0]), f(&j[1])],
+    }
+}
+
+/// `angles` from the exact impulse form of the binary64 inputs, through
+/// [`crate::space::outcome::angle_between`] itself (the fallback, and the tests' reference).
+pub fn exact_angles(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> ([f64; 2], Option<f64>) {
+    use crate::space::outcome::angle_between;
+    let Some(o) = exact_outcome(m, v, n, e) else {
+        return ([f64::NAN; 2], None);
+    };
+    let turned = [0, 1].map(|i| angle_between(&o.v_in[i], &o.fin[i]).unwrap_or(0.0));
+    (turned, angle_between(&o.fin[0], &o.fin[1]))
 }
 
 impl Bounded {

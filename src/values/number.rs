@@ -277,6 +277,11 @@ impl Number {
         }
     }
 
+    /// Whether this value was solved rather than typed (`Number::solved`).
+    pub fn is_derived(&self) -> bool {
+        self.derived
+    }
+
     /// The same binary64 value without its typed text (so a clone allocates nothing).
     pub fn untyped(&self) -> Number {
         Number {

@@ -15,9 +15,9 @@ use crate::line::inertia::{InertiaTensor, Mass};
 use crate::line::restitution::Restitution;
 use crate::report::json;
 use crate::report::space::Show;
-use crate::report::space::solved::{Options, RenderError, Verdict, render};
+use crate::report::space::solved::{Judged, Options, RenderError, Verdict, judge, render};
 use crate::space::outcome::{Outcome, angle_between, dot, polar};
-use crate::space::pose::{Input, NormalGiven, Posed, outcomes};
+use crate::space::pose::{Input, NormalGiven, Posed};
 use crate::space::solve;
 use crate::space::typed::{Typed, parse_masses, split_bodies};
 use crate::values::number::{Given, Number};
@@ -377,15 +377,20 @@ impl PlaneInput {
         solved: &solve::Solved,
         frame: &Frame,
     ) -> Result<PlanePicture, InputError> {
-        let all = outcomes(posed, solved);
-        let lab = all
-            .iter()
-            .map(|(o, _)| o)
-            .find(|o| Verdict::of(o, &posed.statement) == Verdict::Physical)
-            .or_else(|| all.first().map(|(o, _)| o))
-            .ok_or_else(|| InputError::new("m1", RenderError::NoSolution))?;
-        // Pucks that do not approach do not collide: FIN = IN for a "finally at rest" frame.
-        let seen = if Verdict::of(lab, &posed.statement) == Verdict::Physical {
+        // The outcome `solve` prints (judged once): pucks that do not approach do not collide,
+        // FIN = IN for a "finally at rest" frame.
+        let judged = judge(posed, solved, false, false).map_err(|e| InputError::new("m1", e))?;
+        let (lab, collides) = match judged {
+            Judged::Receding { o, .. } => (o, false),
+            Judged::Solutions { kept, .. } => {
+                let (o, _, v) = kept
+                    .into_iter()
+                    .next()
+                    .ok_or_else(|| InputError::new("m1", RenderError::NoSolution))?;
+                (o, v == Verdict::Physical)
+            }
+        };
+        let seen = if collides {
             lab.clone()
         } else {
             lab.as_happens()
@@ -398,7 +403,7 @@ impl PlaneInput {
             Some(n) => dot(n, &crate::space::outcome::sub(&o.v_in[0], &o.v_in[1])) > Q::ZERO,
             None => true,
         };
-        let collides = approaching && Verdict::of(lab, &posed.statement) == Verdict::Physical;
+        let collides = approaching && collides;
         let f = |q: &Q| to_f64(q).unwrap_or(f64::NAN);
         let pair = |v: &[Q]| [f(&v[0]), f(&v[1])];
         let both = |vs: &[Vec<Q>]| [pair(&vs[0]), pair(&vs[1])];

@@ -16,6 +16,7 @@ mod invariants;
 mod knowns;
 mod lecture;
 mod metamorphic;
+mod one_answer;
 mod order;
 mod plane;
 mod plane_edges;

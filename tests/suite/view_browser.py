@@ -150,7 +150,7 @@ def drive_plane(page, plan):
 def run_steps(page, steps, errors):
     """Scripted checks in one page session: each step one action (`fill`, `select`, `check`,
     `uncheck`, `press` [selector, key, times], `drag_tip` {body, by (picture units), steps},
-    `hover` selector) and optionally `read` [name, JS function]: what the function returns, with
+    `hover` selector, `wait` milliseconds) and optionally `read` [name, JS function]: what the function returns, with
     the page errors seen so far, under `name` in the result."""
     out = {}
     for step in steps:
@@ -189,6 +189,8 @@ def run_steps(page, steps, errors):
             page.mouse.up()
         if "hover" in step:
             page.hover(step["hover"])
+        if "wait" in step:
+            page.wait_for_timeout(step["wait"])
         if "read" in step:
             name, js = step["read"]
             out[name] = {"value": page.evaluate(js), "errors": list(errors)}

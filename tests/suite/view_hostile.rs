@@ -370,3 +370,42 @@ fn browser_the_pucks_title_keeps_the_mass_unit_and_edits_leave_the_preset() {
     // e typed: no longer the preset; the menu says "(as given or typed)".
     assert_eq!(read(b, "p17_preset"), "");
 }
+
+#[test]
+fn browser_an_input_during_a_frame_shift_is_what_the_page_shows() {
+    let Some(b) = browser() else { return };
+    // Case A (M = diag(4, 1), V_IN = (60, 10)): "COM" is clicked, and e = 0.5 typed while the
+    // 0.7 s shift runs. In the COM frame (w = V_COM = 50) IN is (10, -40) and FIN = -e IN =
+    // (-5, 20); the shift used to end on the case it began with (e = 1: FIN (-10, 40)).
+    let r = read(b, "c_frame_then_e");
+    assert_eq!(r["e"], "0.5", "{r}");
+    assert_eq!(r["state"]["restitution"], 0.5, "{r}");
+    assert_eq!(r["state"]["frame"]["name"], "com", "{r}");
+    assert_eq!(pair(&r["state"]["in"]), [10.0, -40.0], "{r}");
+    assert_eq!(pair(&r["state"]["fin"]), [-5.0, 20.0], "{r}");
+    // lost = (1 - e^2) crunch = 3/4 (1/2 (4/5) 50^2) = 750.
+    assert_eq!(r["state"]["energy"]["lost"], 750.0, "{r}");
+    assert_eq!(r["stale"], 0, "{r}");
+    // Back in the lab with e = 1: elastic FIN (40, 90), Fig. 1.3.
+    let r = read(b, "c_frame_back");
+    assert_eq!(pair(&r["state"]["fin"]), [40.0, 90.0], "{r}");
+    assert!(r["state"]["frame"].is_null(), "{r}");
+}
+
+#[test]
+fn browser_a_refused_stack_greys_the_last_run_and_stops_play() {
+    let Some(b) = browser() else { return };
+    // Masses "1,-1": the tower, the world lines and the numbers are the last valid run's, so
+    // each is greyed and labelled, and Play is disabled; a valid input (the two-ball preset)
+    // takes it all back.
+    let bad = read(b, "s_bad");
+    assert_eq!(bad["stale"], serde_json::json!([true, true, true]), "{bad}");
+    assert_eq!(bad["play"], true, "{bad}");
+    let good = read(b, "s_good");
+    assert_eq!(
+        good["stale"],
+        serde_json::json!([false, false, false]),
+        "{good}"
+    );
+    assert_eq!(good["play"], false, "{good}");
+}

@@ -122,6 +122,12 @@ pub enum RenderError {
          final velocities given approach, or stay, where a collision separates them); check them"
     )]
     NegativeRestitution(String),
+    #[error(
+        "{0}: its speed along the direction given for it comes out negative (the body would \
+         leave the opposite way), so no collision has these directions; check them (or give \
+         the direction as '?')"
+    )]
+    NegativeSpeed(String),
 }
 
 /// Why a solution is left out when another one is physical.
@@ -180,65 +186,147 @@ impl Verdict {
     }
 }
 
-/// The solutions of a posed problem, judged in the lab and printed as `opts.frame` sees them:
-/// the physical ones (or all, when none is), what was solved, the checks; a collision asked
-/// outright whose bodies do not approach along the line of impact gets the note alone.
-pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered, RenderError> {
-    // The final velocities are unknowns of the laws, but only what the problem marked '?' (or
-    // gave as final velocities) is "solved" for the reader.
-    let asked: Vec<Unknown> = solved
+/// A problem's solutions judged in the lab: the one answer `solve`, `frames` and `plot` all take.
+pub enum Judged {
+    /// A collision asked outright whose bodies do not approach along the line of impact: they do
+    /// not collide (no FIN). `along` is `n.(v1 - v2) <= 0`.
+    Receding { o: Outcome, along: Q },
+    /// The solutions kept (the physical ones, or all, when none is), with their checks and
+    /// verdicts; `inconsistent` when given values contradict a law checked (exit 1).
+    Solutions {
+        kept: Vec<(Outcome, Vec<Check>, Verdict)>,
+        inconsistent: bool,
+    },
+}
+
+/// The unknowns the reader asked for: the final velocities are unknowns of the laws, but only
+/// what the problem marked '?' (or gave as final velocities) is "solved" for the reader.
+pub fn asked(solved: &Solved, fin_given: bool) -> Vec<Unknown> {
+    solved
         .unknowns
         .iter()
-        .filter(|u| opts.fin_given || !matches!(u, Unknown::Component(_, true, _)))
+        .filter(|u| fin_given || !matches!(u, Unknown::Component(_, true, _)))
         .copied()
+        .collect()
+}
+
+/// The solutions of a posed problem judged in the lab, once, for every output: the physical
+/// ones (or all, when none is); a collision asked outright whose bodies do not approach is
+/// [`Judged::Receding`]; a restitution solved below zero, or a speed solved negative along the
+/// direction the problem gave it, is no collision and an error (the rail refuses the same way).
+pub fn judge(
+    posed: &Posed,
+    solved: &Solved,
+    fin_given: bool,
+    exact: bool,
+) -> Result<Judged, RenderError> {
+    let style = Style::new(exact, None).with_bearings(posed.bearings);
+    let asked = asked(solved, fin_given);
+    let all = outcomes(posed, solved);
+    if all.is_empty() {
+        return Err(RenderError::NoSolution);
+    }
+    let judged: Vec<(Outcome, Vec<Check>, Verdict)> = all
+        .into_iter()
+        .map(|(o, c)| {
+            let v = Verdict::of(&o, &posed.statement);
+            (o, c, v)
+        })
         .collect();
+    let inconsistent_all = judged.iter().all(|(_, c, _)| c.iter().any(|c| !c.ok));
+    // A speed solved negative along a given direction contradicts the data as typed: the body
+    // leaves the other way. Such a solution is never printed as a collision.
+    let (negative, rest): (Vec<_>, Vec<_>) = judged
+        .into_iter()
+        .partition(|(_, _, v)| *v == Verdict::NegativeSpeed);
+    if rest.is_empty()
+        && !inconsistent_all
+        && let Some((o, _, _)) = negative.first()
+    {
+        return Err(RenderError::NegativeSpeed(negative_speed(
+            o,
+            &posed.statement,
+            &style,
+        )));
+    }
+    let judged = if rest.is_empty() { negative } else { rest };
+    let kept: Vec<(Outcome, Vec<Check>, Verdict)> =
+        if judged.iter().any(|(_, _, v)| *v == Verdict::Physical) {
+            judged
+                .into_iter()
+                .filter(|(_, _, v)| *v == Verdict::Physical)
+                .collect()
+        } else {
+            judged
+        };
+    let inconsistent = kept.iter().all(|(_, c, _)| c.iter().any(|c| !c.ok));
+    // A restitution solved below zero is no collision (the rail refuses it the same way): the
+    // bodies would pass through each other.
+    if !inconsistent
+        && let [(o, _, Verdict::Unphysical)] = kept.as_slice()
+        && let Some(e) = o.e.as_ref().filter(|e| e.is_negative())
+    {
+        return Err(RenderError::NegativeRestitution(style.show(e, o.approx)));
+    }
+    if let [(o, _, Verdict::Unphysical)] = kept.as_slice()
+        && asked.is_empty()
+        && let Some(n) = &o.normal
+    {
+        let along = dot(n, &sub(&o.v_in[0], &o.v_in[1]));
+        return Ok(Judged::Receding {
+            o: o.clone(),
+            along,
+        });
+    }
+    Ok(Judged::Solutions { kept, inconsistent })
+}
+
+/// Which final or initial velocity came out against the direction it was given in, as the
+/// error says it: `v1' = ... @ 102.098°, against its given direction`.
+fn negative_speed(o: &Outcome, st: &Statement, style: &Style) -> String {
+    for (i, v) in st.fin.iter().chain(&st.v_in).enumerate() {
+        if let Velocity::Speed { unit } = v {
+            let body = i % o.bodies();
+            let fin = i < o.bodies();
+            let vel = if fin { &o.fin[body] } else { &o.v_in[body] };
+            if dot(vel, unit) < Q::ZERO {
+                let polar = speed_angle(style, vel);
+                let at = if polar.is_empty() {
+                    vector(style, vel, o.approx)
+                } else {
+                    polar
+                };
+                return format!("{} solves to {at}", name(body, fin));
+            }
+        }
+    }
+    String::new()
+}
+
+/// The solutions of a posed problem, judged in the lab ([`judge`]) and printed as `opts.frame`
+/// sees them: the physical ones (or all, when none is), what was solved, the checks; a
+/// collision asked outright whose bodies do not approach along the line of impact gets the
+/// note alone.
+pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered, RenderError> {
+    let asked = asked(solved, opts.fin_given);
     let mut units = posed.units.clone();
     if let Some(u) = opts.energy_unit {
         units = units.with_energy_unit(u)?;
     }
     let style = Style::new(opts.exact, units.energy_scale()).with_bearings(posed.bearings);
-    let all = outcomes(posed, solved);
-    if all.is_empty() {
-        return Err(RenderError::NoSolution);
-    }
+    let (kept, inconsistent) = match judge(posed, solved, opts.fin_given, opts.exact)? {
+        Judged::Receding { o, along } => {
+            // No collision: the observer of a "finally at rest" frame moves with FIN = IN.
+            let w = o.as_happens().observer(opts.frame, posed.typed_values)?;
+            return receding(&o.boost(&w), &along, &style, &units, opts.frame, &w);
+        }
+        Judged::Solutions { kept, inconsistent } => (kept, inconsistent),
+    };
     // Each solution as the observer sees it, with the observer's velocity.
-    let mut judged: Vec<(Outcome, Vec<Check>, Verdict, Vec<Q>)> = Vec::new();
-    for (o, c) in all {
-        let v = Verdict::of(&o, &posed.statement);
-        // Bodies that do not approach along the line of impact (a collision asked outright) do
-        // not collide: the observer of a "finally at rest" frame moves with FIN = IN.
-        let seen = if asked.is_empty() && v == Verdict::Unphysical {
-            o.as_happens()
-        } else {
-            o.clone()
-        };
-        let w = seen.observer(opts.frame, posed.typed_values)?;
-        judged.push((o.boost(&w), c, v, w));
-    }
-    let keep: Vec<&(Outcome, Vec<Check>, Verdict, Vec<Q>)> =
-        if judged.iter().any(|(_, _, v, _)| *v == Verdict::Physical) {
-            judged
-                .iter()
-                .filter(|(_, _, v, _)| *v == Verdict::Physical)
-                .collect()
-        } else {
-            judged.iter().collect()
-        };
-    let inconsistent = keep.iter().all(|(_, c, _, _)| c.iter().any(|c| !c.ok));
-    // A restitution solved below zero is no collision (the rail refuses it the same way): the
-    // bodies would pass through each other.
-    if !inconsistent
-        && let [(o, _, Verdict::Unphysical, _)] = keep.as_slice()
-        && let Some(e) = o.e.as_ref().filter(|e| e.is_negative())
-    {
-        return Err(RenderError::NegativeRestitution(style.show(e, o.approx)));
-    }
-    if let [(o, _, Verdict::Unphysical, w)] = keep.as_slice()
-        && asked.is_empty()
-        && let Some(n) = &o.normal
-    {
-        let along = dot(n, &sub(&o.v_in[0], &o.v_in[1]));
-        return receding(o, &along, &style, &units, opts.frame, w);
+    let mut keep: Vec<(Outcome, Vec<Check>, Verdict, Vec<Q>)> = Vec::new();
+    for (o, c, v) in kept {
+        let w = o.observer(opts.frame, posed.typed_values)?;
+        keep.push((o.boost(&w), c, v, w));
     }
     let frame_line = (*opts.frame != Frame::Lab).then(|| {
         format!(
@@ -354,8 +442,9 @@ fn annotate_units(json: &mut Value, units: &Units) {
     m.insert("units".into(), u.into());
 }
 
-/// Bodies that do not approach along the line of impact: the note alone.
-fn receding(
+/// Bodies that do not approach along the line of impact: the note alone (seen from `frame`,
+/// whose observer moves at `w`).
+pub fn receding(
     o: &Outcome,
     along: &Q,
     style: &Style,

@@ -12,10 +12,11 @@
 //!
 //! Columns: the final velocities, speeds and directions, how far each body turned, the angle
 //! between the final velocities, the energies (`KE = 1/2 (m v).v`, the crunch from the reduced
-//! mass, `1/2 mu (n.d)^2 / n.n`, `lost = (1 - e)(1 + e) crunch`, `KE_FIN = KE_COM + 1/2 mu ((d x
-//! n)^2 + e^2 (d.n)^2) / n.n`: no difference of large energies), the impulse on body 2 and the line of impact `n` used
-//! (as computed, not normalised: `collide solve --normal '(nx,ny)'` gives the same FIN bit for
-//! bit).
+//! mass, `1/2 mu (n.d)^2 / n.n`, `lost = (1 - e)(1 + e) crunch`), the impulse on body 2 and the
+//! line of impact `n` used (as computed, not normalised). Every column `collide solve` also
+//! prints is the exact value rounded once, as it prints it, bit for bit
+//! ([`impact::general`], [`impact::angles`], [`impact::energies`]): `collide solve --normal
+//! '(nx,ny)'` with the row's values gives the same numbers.
 
 use super::{Kind, Knob};
 use crate::line::inertia::Mass;
@@ -180,16 +181,6 @@ fn direction(a: [f64; 2]) -> [f64; 2] {
     a.map(|x| x * pow2(-k / 2) * pow2(-k + k / 2))
 }
 
-/// The angle from `a` to `b` in degrees, in [0, 180]; `None` if either is zero.
-#[inline(always)]
-fn between(a: [f64; 2], b: [f64; 2]) -> Option<f64> {
-    if a == [0.0, 0.0] || b == [0.0, 0.0] {
-        return None;
-    }
-    let (c, d) = cross_dot(direction(a), direction(b));
-    Some(libm::atan2(c.abs(), d).to_degrees())
-}
-
 /// The line of impact at `deg` degrees from `+x`, as `collide solve --normal DEGdeg` takes it:
 /// a rational direction at multiples of 45 degrees, else the binary64 cosine and sine.
 pub fn normal_at(deg: f64) -> [f64; 2] {
@@ -242,61 +233,6 @@ impl PlaneSweep {
 
 impl Impact {
     #[inline(always)]
-    fn mv(&self, i: usize) -> [f64; 2] {
-        [self.m[i] * self.v[i][0], self.m[i] * self.v[i][1]]
-    }
-
-    /// The reduced mass `m1 m2 / (m1 + m2) = small / (1 + small / large)`: no product or sum of
-    /// the masses, so neither a ratio of 1e400 (`m2 / (m1 + m2)` underflows) nor masses near
-    /// the top of binary64 (their sum overflows) lose it. Within 2 ulps.
-    #[inline(always)]
-    fn mu(&self) -> f64 {
-        let (large, small) = (self.m[0].max(self.m[1]), self.m[0].min(self.m[1]));
-        small / (1.0 + small / large)
-    }
-
-    /// `n.(v1 - v2)` and `n.n`, each rounded once (double-double sums of exact products).
-    #[inline(always)]
-    fn closing(&self) -> (f64, f64) {
-        let n = self.n;
-        let v = self.v;
-        let nd = Dd::prod(n[0], v[0][0]) + Dd::prod(n[1], v[0][1])
-            - Dd::prod(n[0], v[1][0])
-            - Dd::prod(n[1], v[1][1]);
-        let (_, nn) = cross_dot(n, n);
-        (nd.value(), nn)
-    }
-
-    /// `1/2 mu (n.d)^2 / n.n`.
-    #[inline(always)]
-    fn crunch(&self) -> f64 {
-        let (nd, nn) = self.closing();
-        // (n.d)^2 / n.n from the rounded dot products, no square root: a few ulps.
-        0.5 * self.mu() * (nd * (nd / nn))
-    }
-
-    /// The energy of the relative motion after: the tangential part passes, the normal part
-    /// keeps `e^2` of its share, `1/2 mu ((d x n)^2 + e^2 (d.n)^2) / n.n` (non-negative terms).
-    #[inline(always)]
-    fn ke_relative_fin(&self) -> f64 {
-        let d = [self.v[0][0] - self.v[1][0], self.v[0][1] - self.v[1][1]];
-        let (dn_cross, dn) = cross_dot(d, self.n);
-        let (_, nn) = cross_dot(self.n, self.n);
-        let e2 = self.e * self.e;
-        let q = (Dd::prod(dn_cross, dn_cross) + Dd::new(e2) * Dd::prod(dn, dn)) / Dd::new(nn);
-        0.5 * self.mu() * q.value()
-    }
-
-    /// `KE_COM = 1/2 |P|^2 / M`.
-    #[inline(always)]
-    fn ke_com(&self) -> f64 {
-        let (p1, p2) = (self.mv(0), self.mv(1));
-        let p = [p1[0] + p2[0], p1[1] + p2[1]];
-        let total = self.m[0] + self.m[1];
-        0.5 * (p[0] / total * p[0] + p[1] / total * p[1])
-    }
-
-    #[inline(always)]
     fn value(&self, col: Col) -> Option<f64> {
         let speed = |w: [f64; 2]| libm::hypot(w[0], w[1]);
         Some(match col {
@@ -309,22 +245,18 @@ impl Impact {
                 }
                 libm::atan2(w[1], w[0]).to_degrees()
             }
-            Col::Turned(i) => between(self.v[i], self.fin[i]).unwrap_or(0.0),
-            Col::Between => between(self.fin[0], self.fin[1])?,
-            Col::KeIn => {
-                let (_, a) = cross_dot(self.mv(0), self.v[0]);
-                let (_, b) = cross_dot(self.mv(1), self.v[1]);
-                0.5 * (a + b)
-            }
-            Col::KeFin => self.ke_com() + self.ke_relative_fin(),
-            Col::Crunch => self.crunch(),
-            Col::Lost => (1.0 - self.e) * (1.0 + self.e) * self.crunch(),
+            // From the impulse form, as `collide solve` prints them (never from the rounded
+            // final velocities: a turn of 1e-13 rad leaves almost nothing in them).
+            Col::Turned(i) => impact::angles(self.m, self.v, self.n, self.e).0[i],
+            Col::Between => impact::angles(self.m, self.v, self.n, self.e).1?,
+            // Each the exact value rounded once, as `collide solve` prints it.
+            Col::KeIn => impact::energies(self.m, self.v, self.n, self.e).ke_in,
+            Col::KeFin => impact::energies(self.m, self.v, self.n, self.e).ke_fin,
+            Col::Crunch => impact::energies(self.m, self.v, self.n, self.e).crunch,
+            Col::Lost => impact::energies(self.m, self.v, self.n, self.e).lost,
             // The impulse on body 2, `(1 + e) mu (n.d / n.n) n` (physics.md section 7), not
             // `m2 (v2' - v2)`, which cancels to nothing when body 2 barely changes.
-            Col::Impulse(k) => {
-                let (nd, nn) = self.closing();
-                (1.0 + self.e) * self.mu() * (nd / nn) * self.n[k]
-            }
+            Col::Impulse(k) => impact::energies(self.m, self.v, self.n, self.e).impulse[k],
             Col::Normal(k) => self.n[k],
         })
     }

@@ -318,6 +318,12 @@
   function player(button, advance) {
     let playing = false, last = 0;
     const tick = (now) => {
+      // A disabled button (its panel shows a refused input) stops the animation.
+      if (button.disabled && playing) {
+        playing = false;
+        button.textContent = "Play";
+        button.setAttribute("aria-pressed", "false");
+      }
       if (!playing) return;
       advance(last ? (now - last) / 1000 : 0);
       last = now;

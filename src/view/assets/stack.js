@@ -22,6 +22,10 @@
     const answer = core(trackRequest());
     for (const [, id] of trackFields) $(id).removeAttribute("aria-invalid");
     const box = $("track-error");
+    // After a bad input the tower, the world lines and the numbers are the last valid run's:
+    // greyed and labelled, and Play disabled (it would animate that run as if it were this).
+    markStale(["tower-svg", "lines-svg", "stack-numbers"], !answer.ok);
+    $("stack-play").disabled = !answer.ok;
     if (!answer.ok) {
       const f = trackFields.find((x) => x[0] === answer.field);
       $(f ? f[1] : "t-masses").setAttribute("aria-invalid", "true");

@@ -24,6 +24,9 @@
   // Solves the case on screen and redraws; `keepMap` keeps the plane's scale (a drag).
   function solveCase(keepMap) {
     if (!core) return null;
+    // An input during a frame's animation wins: the animation would end on the case it began
+    // with (its numbers, not these).
+    cancelAnimationFrame(plane.animation);
     const answer = core(caseRequest());
     showCaseError(answer);
     if (!answer.ok) return answer;
@@ -183,12 +186,16 @@
       if (t0 === null) t0 = now;
       const u = Math.min(1, (now - t0) / duration);
       if (u >= 1) {
-        caseAnswer = end; renderCase();
+        // The case as the fields are now (an input may have changed them during the shift).
+        const now = core(caseRequest(name));
+        showCaseError(now);
+        if (now.ok) { caseAnswer = now; renderCase(); }
         return;
       }
       const s = u < 0.5 ? 2 * u * u : 1 - 2 * (1 - u) * (1 - u);
       const w = w0 + (w1 - w0) * s;
       const mid = core(caseRequest(String(w)));
+      showCaseError(mid);
       if (mid.ok) {
         drawPlane(mid.picture, "observer at " + short(w));
         drawDual(mid.picture);
