@@ -4,7 +4,7 @@ sweep`).
 
 >>> import collide
 >>> r = collide.solve(m=(4, 1), v=(60, 10), e=1)
->>> r.vectors.fin
+>>> r.fin
 [40.0, 90.0]
 """
 
@@ -75,7 +75,7 @@ def solve(
     (`"lab"`, `"com"`, `"rest-in:1"`, ...); `exact=True` is `--exact` (numbers as
     `Fraction`s).
 
-    >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).vectors.fin
+    >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).fin
     [Fraction(4, 3), Fraction(6, 1)]
 
     Raises CollideError with the command line's message for a value it refuses.
@@ -102,5 +102,5 @@ def solve_many(
     >>> import numpy as np
     >>> out = solve_many(4.0, 1.0, np.array([60.0, 30.0]), 10.0, 1.0)
     >>> out["fin1"], out["fin2"]
-    (array([40., 18.]), array([90., 58.]))
+    (array([40., 22.]), array([90., 42.]))
     """

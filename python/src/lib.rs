@@ -30,7 +30,7 @@ pub(crate) fn refused(message: impl std::fmt::Display) -> PyErr {
 ///
 /// >>> import collide
 /// >>> r = collide.solve(m=(4, 1), v=(60, 10), e=1)
-/// >>> r.vectors.fin
+/// >>> r.fin
 /// [40.0, 90.0]
 #[pymodule(name = "collide")]
 fn collide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {

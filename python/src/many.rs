@@ -78,7 +78,7 @@ impl Input<'_> {
 /// >>> import numpy as np
 /// >>> out = solve_many(4.0, 1.0, np.array([60.0, 30.0]), 10.0, 1.0)
 /// >>> out["fin1"], out["fin2"]
-/// (array([40., 18.]), array([90., 58.]))
+/// (array([40., 22.]), array([90., 42.]))
 #[pyfunction]
 #[pyo3(signature = (m1, m2, v1, v2, e=None, *, columns=None))]
 pub fn solve_many<'py>(

@@ -197,11 +197,12 @@ fn text(x: Option<&Bound<'_, PyAny>>, what: &str) -> PyResult<String> {
 /// make it a case in the plane.
 ///
 /// >>> r = solve(m=(4, 1), v=(60, 10), e=1)
-/// >>> r.vectors.fin, r.energy.crunch
+/// >>> r.fin, r.energy.crunch
 /// ([40.0, 90.0], 1000.0)
-/// >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).vectors.fin
+/// >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).fin
 /// [Fraction(4, 3), Fraction(6, 1)]
-/// >>> solve(m=(1, 1), v=((1, 0), (0, 0)), radii=(1, 1), b=1).to_dict()["ok"]
+/// >>> solve(m=(1, 1), v=((1, 0), (0, 0)), radii=(1, 1), b=1).angle_between_deg
+/// 90.0
 ///
 /// Raises `CollideError` (a `ValueError`) with the command line's message for a value
 /// `collide solve` refuses.
