@@ -216,3 +216,12 @@ def test_display():
     assert r.energy._repr_html_().count("<tr>") == 5
     with pytest.raises(AttributeError):
         r.no_such_key
+
+
+def test_a_general_tensor_is_the_cli_json():
+    """--inertia M11,M12;M21,M22 instead of the masses, in the COM frame, binary64 and exact."""
+    for exact in (False, True):
+        r = collide.solve(inertia="4,1;1,2", v=(60, 10), e="1/2", frame="com", exact=exact)
+        cli = ["solve", "--inertia", "4,1;1,2", "-v", "60,10", "-e", "1/2", "--frame", "com"]
+        out, data = cli_json(*cli, *["--exact"] * exact)
+        assert r.to_dict() == data and r.to_json() == out
