@@ -92,12 +92,13 @@ pub struct Velocity {
 /// A velocity as the command line's text.
 pub fn velocity(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Velocity> {
     if let Some(items) = sequence(x) {
-        let [a, b] = pair(x, what, scalar).map_err(|_| {
-            refused(format!(
+        if items.len() != 2 {
+            return Err(refused(format!(
                 "{what}: a vector in the plane has two components, got {}",
                 items.len()
-            ))
-        })?;
+            )));
+        }
+        let [a, b] = pair(x, what, scalar)?;
         return Ok(Velocity {
             text: format!("({a},{b})"),
             planar: true,

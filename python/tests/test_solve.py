@@ -201,6 +201,8 @@ def test_refusals_of_python_values():
         ({"m": (True, 1), "v": (1, 0)}, "m[0]: expected a number or text, got the bool True"),
         ({"m": (1, 1)}, "v: the velocities (V1, V2) are missing"),
         ({"m": 4, "v": (1, 0)}, "m: expected a pair such as (4, 1), got 4"),
+        ({"m": (1, 1), "v": ((1, 2, 3), (0, 0))}, "v[0]: a vector in the plane has two components, got 3"),
+        ({"m": (1, 1), "v": ((1, float("nan")), (0, 0))}, "v[0][1]: NaN is not a number"),
     ]:
         with pytest.raises(collide.CollideError) as refused:
             collide.solve(**kwargs)
