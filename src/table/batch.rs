@@ -12,11 +12,9 @@ use std::fs::File;
 use std::io::{self, BufRead, BufReader, Read};
 use std::path::Path;
 
-use super::row::{LayoutError, RowCase, RowError, RowProblem, ValueProblem};
+use super::row::{LayoutError, RowCase, RowError, RowProblem, ValueProblem, check};
 use super::runs::plane::{Line, PlaneSweep};
 use super::runs::{Kind, Knob};
-use crate::line::inertia::Mass;
-use crate::line::restitution::Restitution;
 use crate::values::number::Number;
 
 /// Input format (`--input-format`; by default from the file's extension, or for stdin from its
@@ -341,11 +339,7 @@ impl LineLayout {
             let n: Number = text.parse().map_err(|e| bad(line_number(text, e)))?;
             *slot = n.value();
             // Each value is validated by the type that holds it.
-            match field {
-                "m1" | "m2" => drop(Mass::new(n).map_err(|e| bad(e.into()))?),
-                "e" => drop(Restitution::new(n).map_err(|e| bad(e.into()))?),
-                _ => {}
-            }
+            check(field, n).map_err(bad)?;
         }
         Ok((
             line,

@@ -1,10 +1,10 @@
 //! One row of a table: its inputs, the solver computing it, and why a row can be bad.
 
-use crate::line::inertia::{InertiaError, MassError};
-use crate::line::restitution::RestitutionError;
+use crate::line::inertia::{InertiaError, Mass, MassError};
+use crate::line::restitution::{Restitution, RestitutionError};
 use crate::solver::Solver;
 use crate::solver::binary64::Binary64;
-use crate::values::number::NumberError;
+use crate::values::number::{Number, NumberError};
 
 /// The inputs of one row: `M = [[m11, m12], [m12, m22]]`, `V`, `e`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -14,6 +14,39 @@ pub struct RowCase {
     pub m22: f64,
     pub v: [f64; 2],
     pub e: f64,
+}
+
+impl RowCase {
+    /// A row of two masses on a rail from binary64 values (`collide.solve_many` in Python),
+    /// each checked as a batch checks its field ([`check`]): a bad one is the batch's
+    /// `field 'm1': ...` (its number as [`Number`] prints it).
+    pub fn masses(m1: f64, m2: f64, v: [f64; 2], e: f64) -> Result<RowCase, RowProblem> {
+        let fields = [("m1", m1), ("m2", m2), ("v1", v[0]), ("v2", v[1]), ("e", e)];
+        for (field, x) in fields {
+            let checked = Number::from_f64(x)
+                .map_err(ValueProblem::from)
+                .and_then(|n| check(field, n));
+            checked.map_err(|problem| RowProblem::Field { field, problem })?;
+        }
+        Ok(RowCase {
+            m11: m1,
+            m12: 0.0,
+            m22: m2,
+            v,
+            e,
+        })
+    }
+}
+
+/// A row's value checked by the type that holds it, as a batch checks each field: `m1` and `m2`
+/// as a `Mass`, `e` as a `Restitution` (velocities and tensor entries take any number).
+pub fn check(field: &str, n: Number) -> Result<(), ValueProblem> {
+    match field {
+        "m1" | "m2" => drop(Mass::new(n)?),
+        "e" => drop(Restitution::new(n)?),
+        _ => {}
+    }
+    Ok(())
 }
 
 /// A row being computed: its inputs, its solver, and FIN once computed (several columns use it).

@@ -64,6 +64,7 @@ impl Setup {
                 e: "elastic".into(),
                 frame: "lab".into(),
                 reverse: false,
+                exact: false,
             },
             plane: PlaneInput {
                 m1: "1".into(),

@@ -309,7 +309,9 @@ impl PlaneInput {
         InputError::new(field, page_words(&e.error))
     }
 
-    fn solve_typed(&self) -> Result<PlaneSolved, InputError> {
+    /// [`PlaneInput::solve`] with every refusal in the command line's words (the Python
+    /// module's errors).
+    pub fn solve_typed(&self) -> Result<PlaneSolved, InputError> {
         let input = self.input()?;
         let frame: Frame = t(&self.frame)
             .parse()

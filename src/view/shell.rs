@@ -80,6 +80,9 @@ pub fn solve_command(c: &CaseInput) -> String {
         word(&format!("{},{}", c.v1.trim(), c.v2.trim()))
     ));
     out.push_str(&rules(&c.e, &c.frame, c.reverse));
+    if c.exact {
+        out.push_str(" --exact");
+    }
     out
 }
 
@@ -123,6 +126,9 @@ pub fn solve_scene(c: &CaseInput) -> String {
     }
     if c.reverse {
         out.push_str("# The time reverse (--reverse) has no scene key: see the command line.\n");
+    }
+    if c.exact {
+        out.push_str("exact = true\n");
     }
     out
 }

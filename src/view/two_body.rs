@@ -36,6 +36,10 @@ pub struct CaseInput {
     pub frame: String,
     #[serde(default)]
     pub reverse: bool,
+    /// Exact arithmetic (`--exact`): the report's numbers as fractions (the picture stays in
+    /// binary64). The page does not send it; the Python module does.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub exact: bool,
 }
 
 /// The answer to a case.
@@ -162,7 +166,7 @@ impl CaseInput {
             si: false,
             gravity: None,
             energy_unit: None,
-            exact: false,
+            exact: self.exact,
             knowns: Default::default(),
         };
         if problem.has_unknowns() {
@@ -222,8 +226,21 @@ impl CaseInput {
     }
 
     /// Solves the case as `collide solve` does and answers with its JSON, command line, scene
-    /// and picture.
+    /// and picture; a result beyond binary64 refused in the page's words.
     pub fn solve(&self) -> Result<Solved, InputError> {
+        self.solve_with(|e| self.beyond_binary64(e))
+    }
+
+    /// [`CaseInput::solve`] with every refusal in the command line's words (the Python
+    /// module's errors).
+    pub fn solve_typed(&self) -> Result<Solved, InputError> {
+        self.solve_with(|e| InputError::new("m1", e))
+    }
+
+    fn solve_with(
+        &self,
+        beyond: impl Fn(crate::report::ReportError) -> InputError,
+    ) -> Result<Solved, InputError> {
         let typed = self.typed()?;
         let case = match typed.problem.solve(typed.inertia) {
             Ok(Posed::Collision(case, _)) => case,
@@ -249,10 +266,10 @@ impl CaseInput {
         sections.energy_scale = case.units.energy_scale();
         sections.force_scale = case.units.force_scale();
         let frame = &typed.frame;
-        let report = AnyReport::of(&case, frame, false, &sections, self.reverse)
-            .map_err(|e| self.beyond_binary64(e))?;
+        let report =
+            AnyReport::of(&case, frame, self.exact, &sections, self.reverse).map_err(beyond)?;
         let mut value = report.json();
-        solved::annotate(&mut value, &case.units, None, false);
+        solved::annotate(&mut value, &case.units, None, self.exact);
         Ok(Solved {
             state: json::render(&value),
             command: super::shell::solve_command(self),
