@@ -150,7 +150,11 @@ fn help_examples_fit_80_columns_and_continue_indented() {
     for sub in SUBCOMMANDS.iter().copied().chain(["view track"]) {
         let mut args: Vec<&str> = sub.split(' ').collect();
         args.push("--help");
-        let help = stdout(&args);
+        let out = common::collide_at_default_width()
+            .args(&args)
+            .output()
+            .unwrap();
+        let help = String::from_utf8(out.stdout).unwrap();
         for line in help.lines() {
             assert!(line.chars().count() <= 80, "{sub} --help: {line}");
         }
