@@ -142,3 +142,65 @@ fn put_chunk(
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::columns::by_names;
+    use crate::table::row::RowProblem;
+    use crate::table::writer::{RowFormat, RowWriter};
+
+    /// Chunks solved in parallel, finishing out of order (each sleeps a time that does not
+    /// grow with its place), over many windows of the pipeline: they come out in order, whole,
+    /// and a stop in a late window ends the output after the chunk before it (the chunks queued
+    /// beside it are dropped). A chunk that panics panics the writer.
+    #[test]
+    fn chunks_come_out_in_order_and_stop_where_asked() {
+        let w = RowWriter::new(by_names(&["fin1"]).unwrap(), RowFormat::Csv);
+        let window = window();
+        let chunks = 5 * window + 3;
+        let stop_at = 3 * window + 1;
+        let solve = |k: usize| {
+            std::thread::sleep(std::time::Duration::from_micros((7 - k as u64 % 7) * 300));
+            ChunkOut {
+                body: Ok(Sealed::Bytes(format!("{k}\n").into_bytes())),
+                rows: 1,
+                skipped: Vec::new(),
+                stop: (k == stop_at).then(|| RowError {
+                    place: format!("chunk {k}"),
+                    problem: RowProblem::NotCsv("stop".into()),
+                }),
+            }
+        };
+        let run = |n: usize| {
+            let mut bytes = Vec::new();
+            let mut sink = Sink::open(&w, 1, &mut bytes).unwrap();
+            let r = write_chunks(0..n, solve, &mut sink, &mut Progress::new(None));
+            drop(sink);
+            (r, String::from_utf8(bytes).unwrap())
+        };
+        let (r, text) = run(stop_at);
+        assert_eq!(r.unwrap().rows, stop_at as u64);
+        let want: String = (0..stop_at).map(|k| format!("{k}\n")).collect();
+        assert_eq!(text, format!("fin1\n{want}"));
+        let (r, text) = run(chunks);
+        match r {
+            Err(RowsError::Row(e)) => assert_eq!(e.place, format!("chunk {stop_at}")),
+            other => panic!("expected the stop, got {other:?}"),
+        }
+        // The stopping chunk's own rows (before its bad row) are written, nothing after.
+        let want: String = (0..=stop_at).map(|k| format!("{k}\n")).collect();
+        assert_eq!(text, format!("fin1\n{want}"));
+        let panicked = std::panic::catch_unwind(|| {
+            let mut bytes = Vec::new();
+            let mut sink = Sink::open(&w, 1, &mut bytes).unwrap();
+            let _ = write_chunks(
+                0..chunks,
+                |k: usize| if k == 5 { panic!("chunk 5") } else { solve(k) },
+                &mut sink,
+                &mut Progress::new(None),
+            );
+        });
+        assert!(panicked.is_err(), "a chunk's panic was lost");
+    }
+}
