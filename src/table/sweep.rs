@@ -311,7 +311,7 @@ fn not_a_range(text: &str, name: &str, value: &str, form: &str) -> VaryError {
         // `-` after the first character, so that `-1-2` reads as -1 to 2.
         let at = value.get(1..)?.find(sep)? + 1;
         let (from, to) = (value[..at].trim(), value[at + sep.len()..].trim());
-        (from.parse::<Number>().is_ok() && to.parse::<Number>().is_ok()).then(|| (from, to))
+        (from.parse::<Number>().is_ok() && to.parse::<Number>().is_ok()).then_some((from, to))
     });
     let example = match ends {
         Some((from, to)) => format!("{name}={from}:{to}:11 for 11 values from {from} to {to}"),
