@@ -77,6 +77,22 @@ pub struct Cli {
     pub wide: bool,
 }
 
+/// `collide pi N`: a whole number of digits after the point, 0 to 10,000.
+fn parse_pi_digits(s: &str) -> Result<u32, String> {
+    let t = s.trim();
+    match t.parse::<u32>() {
+        Ok(n) if n <= 10_000 => Ok(n),
+        _ if !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit()) => {
+            Err("at most 10,000 digits after the point (the count has N + 1 digits)".into())
+        }
+        _ => Err(
+            "expected a whole number of digits after the point, 0 to 10,000 (pi 5 \
+                  gives 3.14159)"
+                .into(),
+        ),
+    }
+}
+
 /// `--sig`: 1..=17 digits, or `full` (0).
 fn parse_sig(s: &str) -> Result<u8, String> {
     match s.trim() {
@@ -93,57 +109,88 @@ fn parse_sig(s: &str) -> Result<u8, String> {
 #[allow(clippy::large_enum_variant)] // parsed once per run
 pub enum Command {
     /// Solve one collision given on the command line
-    #[command(
-        after_help = "Examples:\n  collide solve -m 6,1 -v 3,-4 -e 2/3\n  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy\n  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'\n  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' --fin '0,height 1.5 m' --show vectors,heights\n  collide solve -m '0.01 kg,2 kg' -v '500 m/s,0' --fin '?,height 0.1 m' --pass-through --length '5 m'\n  collide solve -m '1 kg,2 kg' -v '0,0 m/s' --fin '?,?' --released '48 J'\n  collide solve -m '50 g,2 kg' -v '10 m/s,0' --target 'door 0.9 m' --pivot end --hit-at '0.6 m'"
-    )]
+    #[command(after_help = "Examples:
+  collide solve -m 6,1 -v 3,-4 -e 2/3
+  collide solve -m 6,1 -v 3,-4 -e 2/3 --exact --show vectors,energy
+  collide solve -m '4 ton,1 ton' -v '?,10 mph' --fin '40 mph,90 mph'
+  collide solve -m 'wall,0.5 kg' -v '0,-height 2 m' \\
+      --fin '0,height 1.5 m' --show vectors,heights
+  collide solve -m '0.01 kg,2 kg' -v '500 m/s,0' --fin '?,height 0.1 m' \\
+      --pass-through --length '5 m'
+  collide solve -m '1 kg,2 kg' -v '0,0 m/s' --fin '?,?' --released '48 J'
+  collide solve -m '50 g,2 kg' -v '10 m/s,0' --target 'door 0.9 m' \\
+      --pivot end --hit-at '0.6 m'")]
     Solve(SolveArgs),
     /// Solve TOML scene files and check their [expect] numbers
-    #[command(
-        after_help = "Examples:\n  collide scene scenarios/fig-1-3-elastic.toml\n  collide scene scenarios/*.toml --format json"
-    )]
+    #[command(after_help = "Examples:
+  collide scene scenarios/fig-1-3-elastic.toml
+  collide scene scenarios/*.toml --format json")]
     Scene(SceneArgs),
     /// Error against run time: each method against exact arithmetic on seeded case families
-    #[command(
-        after_help = "Examples:\n  collide accuracy --cases 16\n  collide accuracy --plot accuracy.svg"
-    )]
+    #[command(after_help = "Examples:
+  collide accuracy --cases 16
+  collide accuracy --plot accuracy.svg")]
     Accuracy(AccuracyArgs),
     /// The same collision in the standard Galilean frames (lecture Figs. 2.5 and 3.4)
     #[command(
-        after_help = "Examples:\n  collide frames -m 6,1 -v 3,-4 --reverse\n  collide frames -m 4,1 -v 60,10 -e 2/3 --exact",
+        after_help = "Examples:
+  collide frames -m 6,1 -v 3,-4 --reverse
+  collide frames -m 4,1 -v 60,10 -e 2/3 --exact",
         mut_args(on_a_rail)
     )]
     Frames(FramesArgs),
     /// A table of collisions over a grid of parameters (--vary), one row each
     #[command(
-        after_help = "Examples:\n  collide sweep -m 4,1 -v 60,10 --vary e=0:1:11 --columns e,fin1,fin2,ke_fin,lost\n  collide sweep -m 1,1 -v 1,0 --vary m2=1e-3:1e3:7:log --format jsonl -o sweep.jsonl",
+        after_help = "Examples:
+  collide sweep -m 4,1 -v 60,10 --vary e=0:1:11 \\
+      --columns e,fin1,fin2,ke_fin,lost
+  collide sweep -m 1,1 -v 1,0 --vary m2=1e-3:1e3:7:log \\
+      --format jsonl -o sweep.jsonl",
         mut_args(on_a_rail)
     )]
     Sweep(SweepArgs),
     /// A table of collisions read from CSV or JSON Lines, one row each
-    #[command(
-        after_help = "Examples:\n  collide batch scenarios/cases.csv --columns m1,m2,e,fin1,fin2,lost --skip-bad\n  collide batch scenarios/cases.csv --skip-bad --format jsonl -o cases.jsonl\n  collide batch scenarios/plane-cases.csv --columns nx,ny,fin1x,fin1y,between_deg,error"
-    )]
+    #[command(after_help = "Examples:
+  collide batch scenarios/cases.csv --columns m1,m2,e,fin1,fin2,lost \\
+      --skip-bad
+  collide batch scenarios/cases.csv --skip-bad \\
+      --format jsonl -o cases.jsonl
+  collide batch scenarios/plane-cases.csv \\
+      --columns nx,ny,fin1x,fin1y,between_deg,error")]
     Batch(BatchArgs),
     /// Repeated collisions of bodies on a track between walls (pi billiards, superball stacks)
     #[command(
         override_usage = "collide track [OPTIONS] -m <M1,M2,...> -x <X1,X2,...> -v <V1,V2,...>",
-        after_help = "Examples:\n  collide track -m 1,10000 -x 1,2 -v 0,-1 --left-wall 0\n  collide track -m 1 -x 1 -v 0 --left-wall 0 --gravity 2 -e 0.5 --format json"
+        after_help = "Examples:
+  collide track -m 1,10000 -x 1,2 -v 0,-1 --left-wall 0
+  collide track -m 1 -x 1 -v 0 --left-wall 0 --gravity 2 -e 0.5 \\
+      --format json"
     )]
     Track(TrackArgs),
     /// Collisions in time: contact forces (linear spring-dashpot, Hertz, Hunt-Crossley)
     /// integrated through each impact, with the error of each method against its run time
     #[command(
         override_usage = "collide contact [OPTIONS] -m <M1,M2,...> -x <X1,X2,...> -v <V1,V2,...>",
-        after_help = "Examples:\n  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2\n  collide contact -m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz\n  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 --damping 0.4 --wall-stiffness 1e10 --wall-zeta 1 --work-precision --plot wpd.svg"
+        after_help = "Examples:
+  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2
+  collide contact -m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --law hertz
+  collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 1.5 \\
+      --damping 0.4 --wall-stiffness 1e10 --wall-zeta 1 \\
+      --work-precision --plot wpd.svg"
     )]
     Contact(ContactArgs),
-    /// Pi from collisions: the exact count for mass ratio 100^N (the first N + 1 digits of pi),
-    /// simulated as well for N <= 10
-    #[command(after_help = "Examples:\n  collide pi 5\n  collide pi 20 --no-simulate")]
+    /// Pi from collisions: the exact count for mass ratio 100^N, which spells pi to N digits
+    /// after the point (collide pi 5: 314159, 3.14159), simulated as well for N <= 10
+    #[command(after_help = "Examples:
+  collide pi 5
+  collide pi 20 --no-simulate")]
     Pi(PiArgs),
     /// Draw the collision: the velocity-velocity diagram, or Newton's or Minkowski's space-time
     #[command(
-        after_help = "Examples:\n  collide plot -m 4,1 -v 60,10 -o case-a.svg\n  collide plot -m 4,1 -v 60,10 --kind minkowski -o world-lines.svg\n  collide plot -m 4,1 -v 60,10 --term",
+        after_help = "Examples:
+  collide plot -m 4,1 -v 60,10 -o case-a.svg
+  collide plot -m 4,1 -v 60,10 --kind minkowski -o world-lines.svg
+  collide plot -m 4,1 -v 60,10 --term",
         mut_args(no_unknowns)
     )]
     Plot(PlotArgs),
@@ -155,12 +202,14 @@ pub enum Command {
   collide view -m 6,1 -v 3,-4 -e 2/3 --frame com -o fig-2-3.html
   collide view -m 1,1 -v '(1,0),(0,0)' --normal 30deg -o pucks.html
   collide view scenarios/superball-3.toml -o stack.html
-  collide view track -m 1,0.01 -x 1.5,2.25 -v 0,0 --sizes 1,0.5 --left-wall 0 --gravity 9.81")]
+  collide view track -m 1,0.01 -x 1.5,2.25 -v 0,0 --sizes 1,0.5 \\
+      --left-wall 0 --gravity 9.81")]
     View(ViewArgs),
     /// Print a shell completion script (bash, zsh, fish, powershell, elvish)
     #[command(after_help = "Examples:
-  collide completions bash > ~/.local/share/bash-completion/completions/collide
-  collide completions zsh > ~/.zfunc/_collide      # with fpath+=~/.zfunc before compinit
+  collide completions bash \\
+      > ~/.local/share/bash-completion/completions/collide
+  collide completions zsh > ~/.zfunc/_collide  # fpath+=~/.zfunc; compinit
   collide completions fish > ~/.config/fish/completions/collide.fish")]
     Completions {
         /// The shell
@@ -313,6 +362,16 @@ pub struct ViewArgs {
 #[derive(Subcommand, Debug)]
 pub enum ViewTrack {
     /// Open with this track layout for the stack (the flags of `collide track`)
+    #[command(
+        override_usage = concat!(
+            "collide view track [OPTIONS] ",
+            "-m <M1,M2,...> -x <X1,X2,...> -v <V1,V2,...>"
+        ),
+        after_help = "Examples:
+  collide view track -m 1,100 -x 1,2 -v 0,-1 --left-wall 0 -o pi.html
+  collide view track -m 1,0.01 -x 1.5,2.25 -v 0,0 --sizes 1,0.5 \\
+      --left-wall 0 --gravity 9.81 --until 3 -o stack.html"
+    )]
     Track(ViewTrackArgs),
 }
 
@@ -331,8 +390,8 @@ pub struct ViewTrackArgs {
 
 #[derive(Args, Debug)]
 pub struct PiArgs {
-    /// Digits after the 3: the mass ratio is 100^N (0 to 10,000)
-    #[arg(value_name = "N", value_parser = clap::value_parser!(u32).range(0..=10_000))]
+    /// Digits of pi after the point, 0 to 10,000: the mass ratio is 100^N
+    #[arg(value_name = "N", value_parser = parse_pi_digits)]
     pub n: u32,
 
     /// Simulate the collisions too [default: when N <= 10; N = 8 takes seconds, N = 10 minutes;

@@ -1,10 +1,12 @@
 //! Usage errors as clap renders them, with what a person most likely meant: an option whose value
 //! is missing (`-m -v 60,10`: clap takes `-v` as the masses, since a value may start with a
-//! minus) and a list typed with spaces instead of commas (`-m 4 1`).
+//! minus), a list typed with spaces instead of commas (`-m 4 1`) or after them (`-m 4, 1`), and
+//! a case typed without its subcommand (`collide -m 4,1 -v 60,10`).
 
 use std::ffi::OsString;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
+use collide::view::shell::word;
 
 /// The message for a usage error `e` of `command` run with `args`.
 pub fn explain(e: &clap::Error, command: &clap::Command, args: &[OsString]) -> String {
@@ -18,12 +20,39 @@ pub fn explain(e: &clap::Error, command: &clap::Command, args: &[OsString]) -> S
             return format!("error: {message}\n\nFor more information, try '--help'.");
         }
         if let Some(tip) = spaced_list(e, &options, &words) {
-            let text = e.render().to_string();
-            let (first, rest) = text.split_once('\n').unwrap_or((&text, ""));
-            return format!("{first}\n\n  tip: {tip}\n{rest}");
+            return with_tip(e, &tip);
         }
+    } else if let Some(tip) = no_subcommand(e, command, &words) {
+        return with_tip(e, &tip);
     }
     escaped(e)
+}
+
+/// clap's message with `tip` after its first line.
+fn with_tip(e: &clap::Error, tip: &str) -> String {
+    let text = e.render().to_string();
+    let (first, rest) = text.split_once('\n').unwrap_or((&text, ""));
+    format!("{first}\n\n  tip: {tip}\n{rest}")
+}
+
+/// `collide -m 4,1 -v 60,10`: an option of `solve` typed with no subcommand: the same words
+/// after `collide solve`.
+fn no_subcommand(e: &clap::Error, command: &clap::Command, words: &[String]) -> Option<String> {
+    if e.kind() != ErrorKind::UnknownArgument {
+        return None;
+    }
+    let Some(ContextValue::String(unexpected)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let solve = options(command.find_subcommand("solve")?);
+    if !solve.iter().any(|o| o.is(unexpected)) {
+        return None;
+    }
+    let typed: Vec<String> = words.iter().skip(1).map(|w| word(w)).collect();
+    Some(format!(
+        "a collision is solved by a subcommand: collide solve {}",
+        typed.join(" ")
+    ))
 }
 
 /// clap's message, but with control characters in a rejected value escaped (`'5\u{7},1'`):
@@ -136,11 +165,24 @@ fn spaced_list(e: &clap::Error, options: &[Opt], words: &[String]) -> Option<Str
     let at = words.iter().position(|w| w == unexpected)?;
     let (option, first) = (words.get(at.checked_sub(2)?)?, &words[at - 1]);
     let o = options.iter().find(|o| o.is(option))?;
-    if option.contains('=') || first.contains(',') || !bare(first) {
+    // Only for lists: M1,M2, V1,V2,..., COLUMNS.
+    if option.contains('=') || !o.value.as_ref().is_some_and(|v| v.contains(',')) {
         return None;
     }
-    // Only for lists: M1,M2, V1,V2,..., COLUMNS.
-    if !o.value.as_ref().is_some_and(|v| v.contains(',')) {
+    // `-m 4, 1`: a space after a comma ends the value; the words that follow go on the list.
+    if first.ends_with(',') && bare(first) {
+        let mut joined = first.clone();
+        for w in &words[at..] {
+            if !joined.ends_with(',') || !bare(w) {
+                break;
+            }
+            joined.push_str(w);
+        }
+        return Some(format!(
+            "no space after a comma in a list: {option} {joined}"
+        ));
+    }
+    if first.contains(',') || !bare(first) {
         return None;
     }
     let values: Vec<&str> = std::iter::once(first.as_str())

@@ -34,19 +34,23 @@ fn exit_statuses() -> impl Iterator<Item = (&'static str, &'static str)> {
     })
 }
 
-/// Every subcommand's examples, from the `Examples:` of its `--help`.
+/// Every subcommand's examples, from the `Examples:` of its `--help`, a line each as typed there:
+/// a long example ends its lines with ` \` and goes on, indented, on the next (so the page's
+/// EXAMPLES fit 80 columns, as `--help` does).
 fn examples(top: &clap::Command) -> Vec<String> {
-    top.get_subcommands()
-        .filter_map(|sub| sub.get_after_help())
-        .flat_map(|help| {
-            help.to_string()
-                .lines()
-                .map(str::trim)
-                .filter(|l| l.starts_with("collide "))
-                .map(String::from)
-                .collect::<Vec<_>>()
-        })
-        .collect()
+    let mut lines = Vec::new();
+    for help in top.get_subcommands().filter_map(|sub| sub.get_after_help()) {
+        let mut continued = false;
+        for line in help.to_string().lines() {
+            let example = line.trim_start().starts_with("collide ");
+            if example || continued {
+                // Two columns of indent off: `collide` at the margin, continuations below it.
+                lines.push(line.strip_prefix("  ").unwrap_or(line).to_string());
+                continued = line.ends_with(" \\");
+            }
+        }
+    }
+    lines
 }
 
 /// The man page (clap_mangen), in roff: one page with every subcommand's synopsis and options.

@@ -3,8 +3,8 @@
 use anyhow::{Result, bail};
 use collide::scene::{AnyScene, Scene};
 use collide::values::output::write_file;
+use collide::view::input::TrackInput;
 use collide::view::page::{self, Focus, Setup};
-use collide::view::stack::TrackInput;
 
 use super::Outcome;
 use crate::cli::{ViewArgs, ViewTrack, ViewTrackArgs};

@@ -144,11 +144,12 @@ pub fn text(setup: &Setup, run: &ContactRun) -> String {
     }
     energy.render(&mut out);
     let s = run.stats;
-    let _ = writeln!(
-        out,
-        "\nWork: {} steps ({} rejected), {} right-hand sides, {} Jacobians",
+    let work = format!(
+        "Work: {} steps ({} rejected), {} right-hand sides, {} Jacobians",
         s.steps, s.rejected, s.rhs_evals, s.jacobians
     );
+    out.push('\n');
+    out.push_str(&wrap(&work, crate::values::terminal::width(), "  "));
     out
 }
 

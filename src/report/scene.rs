@@ -109,6 +109,16 @@ fn failures(s: &Checked) -> Vec<&Check> {
     failed
 }
 
+/// A row of the summary: `aligned` (padded to line up with the others) when it fits the terminal,
+/// else `plain` wrapped under column 6 (a long path does not push the counts past the edge).
+fn fitted(aligned: String, plain: &str) -> String {
+    let width = crate::values::terminal::width();
+    if aligned.chars().count() <= width {
+        return aligned;
+    }
+    wrap(plain, width, "      ").trim_end().to_string()
+}
+
 /// `line`, then `title` beside it when both fit the terminal, else on the next line under
 /// column `under` (wrapped).
 fn with_title(line: String, title: &str, under: usize) -> String {
@@ -159,18 +169,20 @@ pub fn summary(checked: &[Checked], listed: &[Listed]) -> String {
     for s in checked {
         let failed = s.failures().count();
         let verdict = if failed > 0 { "FAIL" } else { "ok  " };
-        let line = format!(
-            "{verdict}  {:<width$}  {:>3}/{:<3} checks",
-            s.path.display(),
-            s.checks.len() - failed,
-            s.checks.len(),
+        let (path, pass, of) = (s.path.display(), s.checks.len() - failed, s.checks.len());
+        let line = fitted(
+            format!("{verdict}  {path:<width$}  {pass:>3}/{of:<3} checks"),
+            &format!("{verdict}  {path}  {pass}/{of} checks"),
         );
         out.push_str(&with_title(line, s.title.as_deref().unwrap_or(""), 6));
         failure_lines(s, &mut out);
     }
     for t in listed {
-        let rows = format!("{} rows", t.rows);
-        let line = format!("table {:<width$}  {rows:>13}", t.path.display());
+        let (path, rows) = (t.path.display(), format!("{} rows", t.rows));
+        let line = fitted(
+            format!("table {path:<width$}  {rows:>13}"),
+            &format!("table {path}  {rows}"),
+        );
         let title = format!(
             "{} (a [sweep] scene: run it alone to write it)",
             t.title.as_deref().unwrap_or("")

@@ -32,7 +32,7 @@ mod enabled {
     use parquet::file::writer::{SerializedFileWriter, SerializedPageWriter, TrackedWrite};
     use parquet::schema::types::{SchemaDescriptor, Type};
 
-    use crate::table::writer::Columns;
+    use crate::table::columnar::Columns;
 
     /// A table's Parquet schema and writer settings.
     pub struct Schema {
@@ -207,7 +207,7 @@ mod enabled {
 mod disabled {
     use std::io::{self, Write};
 
-    use crate::table::writer::Columns;
+    use crate::table::columnar::Columns;
 
     /// No Parquet in this build: [`Schema::new`] says how to get it.
     pub enum Schema {}

@@ -78,6 +78,16 @@ pub enum VaryError {
         "'{0}': the list has an empty entry (two commas in a row, or one at an end); give a value between every two commas"
     )]
     EmptyEntry(String),
+    /// `e=0-1`: one value that is no number, most likely a range typed another way.
+    #[error(
+        "'{text}': '{value}' is not a number; a range is FROM:TO:COUNT, e.g. {example}; {form}"
+    )]
+    NotARange {
+        text: String,
+        value: String,
+        example: String,
+        form: String,
+    },
 }
 
 /// Values more numerous than this are computed when needed instead of stored (a huge --vary is
@@ -294,6 +304,27 @@ impl FromStr for Vary {
     }
 }
 
+/// `NAME=VALUE` where VALUE is no number: how a range is written, with FROM and TO read from
+/// `VALUE` when it is two numbers joined by `-`, `..` or `to` (`e=0-1`: `e=0:1:11`).
+fn not_a_range(text: &str, name: &str, value: &str, form: &str) -> VaryError {
+    let ends = ["..", " to ", "-"].iter().find_map(|sep| {
+        // `-` after the first character, so that `-1-2` reads as -1 to 2.
+        let at = value.get(1..)?.find(sep)? + 1;
+        let (from, to) = (value[..at].trim(), value[at + sep.len()..].trim());
+        (from.parse::<Number>().is_ok() && to.parse::<Number>().is_ok()).then_some((from, to))
+    });
+    let example = match ends {
+        Some((from, to)) => format!("{name}={from}:{to}:11 for 11 values from {from} to {to}"),
+        None => format!("{name}=0:1:11 for 11 values from 0 to 1"),
+    };
+    VaryError::NotARange {
+        text: text.to_string(),
+        value: value.to_string(),
+        example,
+        form: form.to_string(),
+    }
+}
+
 /// Parses `NAME=RANGE`: `name` resolves NAME to a parameter (`None`: not one, and `form` says
 /// what is expected), `check` refuses a value it cannot take.
 pub fn parse_vary<P: Copy + Named>(
@@ -365,6 +396,10 @@ pub fn parse_vary<P: Copy + Named>(
             // `e=1,,2` dropped the empty entry: a typo, refused rather than guessed.
             if list.split(',').any(|t| t.trim().is_empty()) {
                 return Err(VaryError::EmptyEntry(text));
+            }
+            // `e=0-1`, `e=0..1`: a range in another notation; say how ranges are written.
+            if !list.contains(',') && list.trim().parse::<Number>().is_err() {
+                return Err(not_a_range(&text, typed.trim(), list.trim(), form));
             }
             let values = list
                 .split(',')

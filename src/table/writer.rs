@@ -8,6 +8,7 @@
 
 use std::io::{self, Write};
 
+use super::columnar::Columns;
 use super::columns::Column;
 use super::parquet;
 
@@ -333,27 +334,6 @@ impl RowWriter {
             (RowBuf::Columns(c), Some(schema)) => schema.encode(&c).map(Sealed::Group),
             (RowBuf::Columns(_), None) => Err(io::Error::other("Parquet is not built in")),
         }
-    }
-}
-
-/// The columns of a chunk, for Parquet.
-pub struct Columns {
-    /// One vector per column (NaN: missing, in a table of runs).
-    pub numbers: Vec<Vec<f64>>,
-    /// The text column, per row (a table of runs that has one).
-    pub texts: Vec<Option<String>>,
-    pub rows: usize,
-}
-
-impl Columns {
-    fn push(&mut self, values: &[f64], text: Option<Option<&str>>) {
-        for (col, v) in self.numbers.iter_mut().zip(values) {
-            col.push(*v);
-        }
-        if let Some(t) = text {
-            self.texts.push(t.map(str::to_string));
-        }
-        self.rows += 1;
     }
 }
 

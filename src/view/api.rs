@@ -11,9 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::InputError;
-use super::plane::PlaneInput;
-use super::stack::TrackInput;
-use super::two_body::CaseInput;
+use super::input::{CaseInput, PlaneInput, TrackInput};
 
 /// What the page asks.
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]

@@ -4,6 +4,8 @@
 //!
 //! - `api`: what the page asks and what it is answered, as JSON text in and out (the one entry
 //!   point of the WebAssembly module, and callable natively, which the tests do);
+//! - `input`: the page's inputs as typed (a case, two pucks, a track), which the panels below
+//!   solve and `shell` writes back as a command line and a scene;
 //! - `two_body`: a collision for the velocity plane and the dual panel: the same report JSON as
 //!   `collide solve --format json`, and the geometry to draw;
 //! - `plane`: two pucks in the plane (issue 25's solver) for the third panel: the same JSON as
@@ -15,6 +17,7 @@
 //! - `page` (feature `cli`): the self-contained page, with the module embedded.
 
 pub mod api;
+pub mod input;
 #[cfg(feature = "cli")]
 pub mod page;
 pub mod plane;
@@ -23,16 +26,6 @@ pub mod stack;
 pub mod two_body;
 
 use serde::Serialize;
-
-/// The default restitution of an input: `collide solve`'s (no `-e`).
-fn elastic() -> String {
-    "elastic".into()
-}
-
-/// The default frame of an input.
-fn lab() -> String {
-    "lab".into()
-}
 
 /// A bad input, with the page's field it is in (`m1`, `v2`, `e`, `masses`, `gravity`, ...) and
 /// the message the command line would give.

@@ -8,9 +8,7 @@ use serde::Serialize;
 
 use super::InputError;
 use super::api::{Request, answer};
-use super::plane::PlaneInput;
-use super::stack::TrackInput;
-use super::two_body::CaseInput;
+use super::input::{CaseInput, PlaneInput, TrackInput};
 
 const TEMPLATE: &str = include_str!("assets/page.html");
 const STYLE: &str = include_str!("assets/page.css");

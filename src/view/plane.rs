@@ -7,7 +7,7 @@
 //! momentum triangles `p1 + p2 = P = p1' + p2'` and the lecture's velocity plane of the normal
 //! parts `(v1.n, v2.n)` (physics.md section 7).
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use crate::line::case::Case;
 use crate::line::frame::Frame;
@@ -24,39 +24,8 @@ use crate::values::number::{Given, Number};
 use crate::values::rational::{Q, to_f64};
 
 use super::InputError;
+use super::input::{PlaneInput, largest_field};
 use super::two_body::Picture as RailPicture;
-
-/// Two pucks as the page's inputs hold them: text, read by the command line's own parsers.
-/// The line of impact is `normal` (`30deg`, `(1,1)`, `N30E`), or the disks' radii `r1`, `r2`
-/// with the impact parameter `b`, or neither (then only `e = 0`, the pucks stick, fixes FIN).
-#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct PlaneInput {
-    pub m1: String,
-    pub m2: String,
-    pub v1: String,
-    pub v2: String,
-    #[serde(default = "super::elastic")]
-    pub e: String,
-    #[serde(default)]
-    pub normal: String,
-    #[serde(default)]
-    pub r1: String,
-    #[serde(default)]
-    pub r2: String,
-    #[serde(default)]
-    pub b: String,
-    #[serde(default = "super::lab")]
-    pub frame: String,
-    #[serde(default)]
-    pub reverse: bool,
-    #[serde(default)]
-    pub exact: bool,
-    /// The page's choice of line of impact (`normal`, `disks` or `none`), when it sends one:
-    /// a chosen line left empty is named as missing.
-    #[serde(default, skip_serializing_if = "String::is_empty")]
-    pub line: String,
-}
 
 /// The answer to two pucks.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -450,23 +419,6 @@ impl PlaneInput {
             },
         })
     }
-}
-
-/// The field whose typed numbers are the largest or smallest in size (the likeliest cause of a
-/// result beyond binary64), by the exponent of each number in it.
-pub(super) fn largest_field(fields: &[(&'static str, &String)]) -> &'static str {
-    let size = |text: &str| -> f64 {
-        text.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e' || c == 'E' || c == '-'))
-            .filter_map(|w| w.trim_matches('-').parse::<f64>().ok())
-            .filter(|x| *x != 0.0)
-            .map(|x| x.abs().log10().abs())
-            .fold(0.0, f64::max)
-    };
-    fields
-        .iter()
-        .map(|(f, text)| (*f, size(text)))
-        .fold(("m1", -1.0), |best, x| if x.1 > best.1 { x } else { best })
-        .0
 }
 
 /// A command line's message in the page's words: its flags named as the page's fields.

@@ -2,9 +2,7 @@
 //! that a case found by playing becomes a command that reproduces it. Values go out as they were
 //! typed (`2/3` stays `2/3`), so the command computes from the same exact numbers.
 
-use super::plane::PlaneInput;
-use super::stack::TrackInput;
-use super::two_body::CaseInput;
+use super::input::{CaseInput, PlaneInput, TrackInput};
 
 /// `text` as one shell word: as it is when no shell treats any of its characters specially,
 /// else in single quotes (a quote inside written `'\''`).

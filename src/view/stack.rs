@@ -5,7 +5,7 @@
 //! of the top ball (Harter 1971: 3, 7, ..., 2^n - 1 times the drop speed in the limit of light
 //! upper balls).
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use crate::line::restitution::Restitution;
 use crate::report::json;
@@ -13,35 +13,7 @@ use crate::track::{Contact, Event, Limits, Run, Track, TrackReport};
 use crate::values::number::{Number, NumberList};
 
 use super::InputError;
-
-/// A layout as the page's inputs hold it, in `collide track`'s words; an empty text is a flag
-/// not given.
-#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct TrackInput {
-    pub masses: String,
-    pub positions: String,
-    pub velocities: String,
-    #[serde(default)]
-    pub sizes: String,
-    #[serde(default)]
-    pub left_wall: String,
-    #[serde(default)]
-    pub right_wall: String,
-    #[serde(default = "elastic")]
-    pub e: String,
-    #[serde(default)]
-    pub e_wall: String,
-    #[serde(default)]
-    pub gravity: String,
-    /// The end of the animation; empty: eight times the first collision's time.
-    #[serde(default)]
-    pub until: String,
-}
-
-fn elastic() -> String {
-    "elastic".into()
-}
+use super::input::TrackInput;
 
 /// Collisions the page runs at most (a pi-billiards layout of mass ratio 1e10 makes 314,159).
 pub const MAX_COLLISIONS: u64 = 100_000;

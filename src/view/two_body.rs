@@ -3,7 +3,7 @@
 //! report JSON that `collide solve --format json` prints (byte for byte), the command line and
 //! scene that reproduce it, and the geometry the page draws (lecture Figs. 1.3, 2.3 and 2.5).
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use crate::line::case::parse_inertia;
 use crate::line::collision::Collision;
@@ -16,31 +16,7 @@ use crate::values::number::Given;
 use crate::values::units::{Dimension, HeightScale, parse_pair};
 
 use super::InputError;
-
-/// A case as the page's inputs hold it: text, parsed by the command line's own parsers.
-#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct CaseInput {
-    #[serde(default)]
-    pub m1: String,
-    #[serde(default)]
-    pub m2: String,
-    /// A general tensor `M11,M12;M21,M22` instead of the masses.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub inertia: Option<String>,
-    pub v1: String,
-    pub v2: String,
-    #[serde(default = "super::elastic")]
-    pub e: String,
-    #[serde(default = "super::lab")]
-    pub frame: String,
-    #[serde(default)]
-    pub reverse: bool,
-    /// Exact arithmetic (`--exact`): the report's numbers as fractions (the picture stays in
-    /// binary64). The page does not send it; the Python module does.
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub exact: bool,
-}
+use super::input::CaseInput;
 
 /// The answer to a case.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -214,7 +190,7 @@ impl CaseInput {
         let field = if self.reverse {
             "reverse"
         } else {
-            super::plane::largest_field(&[
+            super::input::largest_field(&[
                 ("m1", &self.m1),
                 ("m2", &self.m2),
                 ("v1", &self.v1),

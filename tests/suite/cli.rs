@@ -469,3 +469,80 @@ fn energy_unit_is_refused_where_nothing_is_printed_in_it() {
         &["--energy-unit eV"],
     );
 }
+
+#[test]
+fn usage_errors_say_what_was_meant() {
+    // Issue 45 §3. A space after a comma ends the value: the rest of the list is named.
+    refused(
+        &["solve", "-m", "4,", "1", "-v", "60,10"],
+        &[
+            "unexpected argument '1'",
+            "tip: no space after a comma in a list: -m 4,1",
+        ],
+    );
+    refused(
+        &["contact", "-m", "1,1", "-x", "0,", "1", "-v", "1,0"],
+        &["tip: no space after a comma in a list: -x 0,1"],
+    );
+    refused(
+        &["solve", "-m", "4,1", "-v", "1,", "2,", "3"],
+        &["-v 1,2,3"],
+    );
+    // A case without its subcommand: the same words after `collide solve`, quoted for the shell.
+    refused(
+        &["-m", "4,1", "-v", "60,10"],
+        &["tip: a collision is solved by a subcommand: collide solve -m 4,1 -v 60,10"],
+    );
+    refused(
+        &["-m", "4 ton,1 ton", "-v", "60,10", "--exact"],
+        &["collide solve -m '4 ton,1 ton' -v 60,10 --exact"],
+    );
+    // Not for a word no subcommand knows.
+    let err = failure(&["--frobnicate"]);
+    assert!(!err.contains("tip:"), "{err}");
+    // A range typed another way: how ranges are written, with the typed ends.
+    for (vary, example) in [
+        ("e=0-1", "e=0:1:11 for 11 values from 0 to 1"),
+        ("e=0..1", "e=0:1:11 for 11 values from 0 to 1"),
+        ("v1=-2-3", "v1=-2:3:11 for 11 values from -2 to 3"),
+        ("e=half", "e=0:1:11 for 11 values from 0 to 1"),
+    ] {
+        refused(
+            &["sweep", "-m", "4,1", "-v", "60,10", "--vary", vary],
+            &["is not a number", "FROM:TO:COUNT", example],
+        );
+    }
+    refused(
+        &[
+            "contact",
+            "-m",
+            "1,1",
+            "-x",
+            "0,1",
+            "--sizes",
+            "1,1",
+            "-v",
+            "1,0",
+            "--vary",
+            "stiffness=1-10",
+        ],
+        &["stiffness=1:10:11"],
+    );
+    // A list still names its bad entry as before.
+    refused(
+        &["sweep", "-m", "4,1", "-v", "60,10", "--vary", "e=0,x"],
+        &["'x'", "not a number"],
+    );
+    // `collide pi five`: what N is, not Rust's "invalid digit found in string".
+    for n in ["five", "2.5", "", "1e3"] {
+        let err = failure(&["pi", n]);
+        assert!(
+            err.contains("a whole number of digits after the point")
+                && !err.contains("invalid digit"),
+            "pi {n:?}: {err}"
+        );
+    }
+    for n in ["10001", "99999999999999999999999"] {
+        refused(&["pi", n], &["at most 10,000 digits after the point"]);
+    }
+}

@@ -551,3 +551,92 @@ fn the_architecture_page_lists_every_test_module() {
         missing.join(",")
     );
 }
+
+#[test]
+fn the_readme_starts_with_an_answer() {
+    // Issue 45 §2: the first screen (24 lines) shows what collide does by doing it: a command and
+    // its output, before the set-up.
+    let readme = std::fs::read_to_string("README.md").unwrap();
+    let first: Vec<&str> = readme.lines().take(24).collect();
+    let command = first.iter().position(|l| l.starts_with("$ collide "));
+    let setup = readme.lines().position(|l| l == "## Set-up");
+    assert!(
+        command.is_some_and(|c| setup.is_some_and(|s| c < s)),
+        "no `$ collide` example in the README's first 24 lines, before its set-up"
+    );
+    let shown = first[command.unwrap() + 1..]
+        .iter()
+        .take_while(|l| !l.starts_with("```"))
+        .count();
+    assert!(
+        (1..=8).contains(&shown),
+        "the first example shows {shown} lines"
+    );
+}
+
+/// `name version [(proc-macro)] features` for each crate a build compiles: `cargo tree` from the
+/// lock file (no network), with the dependency `edges` of that build.
+fn resolved_features(edges: &str) -> BTreeSet<String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let out = std::process::Command::new(cargo)
+        .args([
+            "tree",
+            "--offline",
+            "--locked",
+            "-p",
+            "collide",
+            "--prefix",
+            "none",
+        ])
+        .args(["-e", edges, "-f", "{p} {f}"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("cargo runs");
+    assert!(
+        out.status.success(),
+        "cargo tree -e {edges}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| l.trim_end_matches(" (*)").trim_end().to_string())
+        .filter(|l| !l.is_empty())
+        .collect()
+}
+
+#[test]
+fn the_two_setup_commands_share_one_build() {
+    // Issue 45 §1: `cargo run --release` then `cargo test --release --locked` (the README's
+    // set-up) compiled 44 crates twice, nalgebra and clap among them: Cargo's resolver 2 keeps
+    // dev-dependencies' features out of the normal build, so a dev-dependency that switched on a
+    // feature of a shared crate (approx's `default`, rustix's `fs` through proptest's `fork`)
+    // gave that crate, and every crate above it, a second build. Every crate the binary's build
+    // compiles must have the same features in the tests' build; the tests add crates of their
+    // own (proptest, assert_cmd, ...), compiled once.
+    let run = resolved_features("normal,build");
+    let test = resolved_features("normal,build,dev");
+    assert!(
+        run.iter().any(|c| c.starts_with("nalgebra ")) && run.len() > 100,
+        "cargo tree listed {} crates for the binary",
+        run.len()
+    );
+    let twice: Vec<String> = run
+        .iter()
+        .filter(|c| !test.contains(*c))
+        .map(|c| {
+            let name = c.split(' ').take(2).collect::<Vec<_>>().join(" ");
+            let other = test.iter().filter(|t| t.starts_with(&format!("{name} ")));
+            format!(
+                "{c}  ->  {}",
+                other.cloned().collect::<Vec<_>>().join(" | ")
+            )
+        })
+        .collect();
+    assert!(
+        twice.is_empty(),
+        "the tests' build changes these crates' features (a second build of each; add the \
+         feature to [dependencies] or drop it from [dev-dependencies]):\n{}",
+        twice.join("\n")
+    );
+}

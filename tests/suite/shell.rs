@@ -44,11 +44,12 @@ fn every_shell_completes_every_subcommand_and_value() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("bash"));
 }
 
-/// The page rendered by groff as `man -l` would, overstriking (bold: "C\x08C") dropped.
+/// The page rendered by groff as `man -l` would at `MANWIDTH=80`, overstriking (bold: "C\x08C")
+/// dropped.
 fn rendered(page: &str) -> String {
     use std::io::Write;
     let mut child = std::process::Command::new("groff")
-        .args(["-man", "-Tutf8", "-ww"])
+        .args(["-man", "-Tutf8", "-ww", "-rLL=80n"])
         .stdin(std::process::Stdio::piped())
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
@@ -105,17 +106,100 @@ fn words(text: &str) -> String {
     text.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
-/// The `Examples:` of `collide SUB --help`.
+/// Examples as lines of text, each `collide ...` with its continuations (a line that ends with
+/// ` \` goes on, indented further, on the next) joined into one command line.
+fn joined(lines: &[&str]) -> Vec<String> {
+    let mut examples: Vec<String> = Vec::new();
+    let mut continued = false;
+    for line in lines {
+        let text = line.trim();
+        if continued {
+            let last = examples.last_mut().unwrap();
+            last.truncate(last.len() - 1);
+            last.push_str(text);
+        } else {
+            examples.push(text.to_string());
+        }
+        continued = text.ends_with(" \\");
+    }
+    examples
+}
+
+/// The `Examples:` of `collide SUB --help` (`SUB` may be `view track`), each on one line.
 fn help_examples(sub: &str) -> Vec<String> {
-    let help = stdout(&[sub, "--help"]);
+    let mut args: Vec<&str> = sub.split(' ').collect();
+    args.push("--help");
+    let help = stdout(&args);
     let (_, examples) = help
         .split_once("\nExamples:\n")
         .unwrap_or_else(|| panic!("{sub} --help has no examples"));
-    examples
+    let lines: Vec<&str> = examples
         .lines()
-        .take_while(|l| l.starts_with("  collide "))
-        .map(|l| l.trim().to_string())
-        .collect()
+        .take_while(|l| l.starts_with("  collide ") || l.starts_with("      "))
+        .collect();
+    joined(&lines)
+}
+
+#[test]
+fn help_examples_fit_80_columns_and_continue_indented() {
+    // Issue 45 §3: a wrapped example's tail sat at the indent of the next example and read as a
+    // command of its own. At the default width every line of every `--help` fits 80 columns; in
+    // Examples, a line is an example (`collide` at two spaces) or the indented continuation of
+    // one whose line ends with ` \`; and the man page's EXAMPLES, as `man` lays them out at 80
+    // columns, fit too.
+    for sub in SUBCOMMANDS.iter().copied().chain(["view track"]) {
+        let mut args: Vec<&str> = sub.split(' ').collect();
+        args.push("--help");
+        let out = common::collide_at_default_width()
+            .args(&args)
+            .output()
+            .unwrap();
+        let help = String::from_utf8(out.stdout).unwrap();
+        for line in help.lines() {
+            assert!(line.chars().count() <= 80, "{sub} --help: {line}");
+        }
+        let usage = help.lines().find(|l| l.starts_with("Usage: ")).unwrap();
+        assert!(
+            usage.starts_with(&format!("Usage: collide {sub} ")),
+            "{usage}"
+        );
+        let (_, examples) = help.split_once("\nExamples:\n").unwrap();
+        let mut continued = false;
+        for line in examples.lines().take_while(|l| !l.is_empty()) {
+            if continued {
+                assert!(
+                    line.starts_with("      ") && line.trim_start().starts_with("-")
+                        || line.trim_start().starts_with("> "),
+                    "{sub}: '{line}'"
+                );
+            } else {
+                assert!(
+                    line.starts_with("  collide "),
+                    "{sub}: '{line}' is no example"
+                );
+            }
+            continued = line.ends_with(" \\");
+        }
+        assert!(
+            !continued,
+            "{sub}: the last example ends with a continuation"
+        );
+    }
+    // `collide view track`'s examples run (the man page lists the top subcommands' only).
+    for example in help_examples("view track") {
+        let run = Sandbox::new("view-track").run(&example);
+        assert_eq!((run.status, run.stderr.as_str()), (0, ""), "{example}");
+    }
+    let page = rendered(&stdout(&["man"]));
+    let (_, section) = page.split_once("\nEXAMPLES\n").unwrap();
+    let section: Vec<&str> = section
+        .lines()
+        .take_while(|l| !l.starts_with("SEE ALSO"))
+        .collect();
+    assert!(section.len() > 20, "{}", section.join("\n"));
+    for line in section {
+        assert!(line.chars().count() <= 80, "man EXAMPLES: {line}");
+    }
 }
 
 #[test]
@@ -145,7 +229,8 @@ fn every_help_example_runs_and_succeeds() {
         .take_while(|l| *l != ".fi")
         .map(|l| l.replace("\\-", "-").replace("\\e", "\\"))
         .collect();
-    assert_eq!(listed, all);
+    let listed: Vec<&str> = listed.iter().map(String::as_str).collect();
+    assert_eq!(joined(&listed), all);
 }
 
 /// Runs one of `collide SUB --help`'s examples (it must be listed there) in a sandbox, and

@@ -215,3 +215,29 @@ fn fitting_moves_words_between_lines_and_never_cuts_or_changes_one() {
         );
     }
 }
+
+#[test]
+fn a_narrow_terminal_is_honoured_by_contact_and_scene_summaries() {
+    // Issue 45 §3: at COLUMNS=60, contact's `Work:` line was 62 wide and the scene status rows
+    // 65 (a long path pushed the counts out).
+    assert_fits(
+        "collide contact -m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --zeta 0.2",
+        Some("60"),
+        60,
+    );
+    let scenes = "collide scene scenarios/bouncing-ball.toml \
+                  scenarios/fig-3-4-vw-initially-at-rest.toml scenarios/fig-1-3-elastic.toml";
+    assert_fits(scenes, Some("60"), 60);
+    // At 80 the rows stay aligned: each count's slash in the same column.
+    let (out, _) = run(&args(scenes), None);
+    let columns: BTreeSet<usize> = out
+        .lines()
+        .filter(|l| l.starts_with("ok "))
+        .map(|l| l.rfind('/').unwrap())
+        .collect();
+    assert!(
+        out.lines().filter(|l| l.starts_with("ok ")).count() == 3,
+        "{out}"
+    );
+    assert_eq!(columns.len(), 1, "{out}");
+}

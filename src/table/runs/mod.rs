@@ -27,7 +27,7 @@ use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
-use super::engine::{CHUNK_ROWS, RowsError, Summary};
+use super::pipeline::{CHUNK_ROWS, RowsError, Summary};
 use super::row::{RowError, RowProblem, ValueProblem};
 use super::sweep::{Grid, Named, RANGE_FORMS, Shard, Vary, VaryError, parse_vary};
 use super::writer::{FieldCache, RowWriter, Sink};
@@ -126,7 +126,7 @@ fn fill_failed<C>(cells: &[Cell<C>], point: &[(Knob, f64)], values: &mut [f64]) 
 }
 
 /// `write_runs` for a cheap kind: chunks of rows run and formatted in parallel, written in
-/// order (`engine::write_chunks`, as a sweep on a line).
+/// order (`pipeline::write_chunks`, as a sweep on a line).
 #[allow(clippy::too_many_arguments)]
 fn write_cheap<K: Kind>(
     kind: &K,
@@ -138,7 +138,7 @@ fn write_cheap<K: Kind>(
     sink: &mut Sink,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
-    use super::engine::{ChunkOut, write_chunks};
+    use super::pipeline::{ChunkOut, write_chunks};
     use std::sync::atomic::{AtomicU64, Ordering};
     let errors = AtomicU64::new(0);
     let solve = |start: u64| -> ChunkOut {
@@ -200,7 +200,7 @@ fn chunk<K: Kind>(
     point: &mut Vec<(Knob, f64)>,
     next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
     place: impl Fn(u64, &[(Knob, f64)]) -> String,
-) -> super::engine::ChunkOut {
+) -> super::pipeline::ChunkOut {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the processor has every feature `cheap_chunk_v3` is compiled for.
@@ -218,7 +218,7 @@ fn cheap_chunk_v3<K: Kind>(
     point: &mut Vec<(Knob, f64)>,
     next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
     place: impl Fn(u64, &[(Knob, f64)]) -> String,
-) -> super::engine::ChunkOut {
+) -> super::pipeline::ChunkOut {
     cheap_chunk(table, point, next, place)
 }
 
@@ -232,8 +232,8 @@ fn cheap_chunk<K: Kind>(
     point: &mut Vec<(Knob, f64)>,
     mut next: impl FnMut(&mut Vec<(Knob, f64)>) -> Option<Result<u64, RowError>>,
     place: impl Fn(u64, &[(Knob, f64)]) -> String,
-) -> super::engine::ChunkOut {
-    use super::engine::ChunkOut;
+) -> super::pipeline::ChunkOut {
+    use super::pipeline::ChunkOut;
     use super::writer::Sealed;
     use std::sync::atomic::Ordering;
     let (kind, cells, writer, skip_bad, errors) = (
@@ -311,7 +311,7 @@ pub fn write_points<K: Kind>(
     out: &mut dyn Write,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
-    use super::engine::write_chunks;
+    use super::pipeline::write_chunks;
     use std::sync::atomic::{AtomicU64, Ordering};
     let mut sink = Sink::open(writer, 1, out)?;
     let errors = AtomicU64::new(0);

@@ -1,0 +1,114 @@
+//! The page's inputs as it holds them: text, as typed, in the command line's words, read by the
+//! command line's own parsers when a panel solves them. Below the panels (`two_body`, `plane`,
+//! `stack`) and the command lines and scenes built from them (`shell`), which all read them.
+
+use serde::{Deserialize, Serialize};
+
+/// The default restitution of an input: `collide solve`'s (no `-e`).
+fn elastic() -> String {
+    "elastic".into()
+}
+
+/// The default frame of an input.
+fn lab() -> String {
+    "lab".into()
+}
+
+/// A case as the page's inputs hold it: text, parsed by the command line's own parsers.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct CaseInput {
+    #[serde(default)]
+    pub m1: String,
+    #[serde(default)]
+    pub m2: String,
+    /// A general tensor `M11,M12;M21,M22` instead of the masses.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inertia: Option<String>,
+    pub v1: String,
+    pub v2: String,
+    #[serde(default = "elastic")]
+    pub e: String,
+    #[serde(default = "lab")]
+    pub frame: String,
+    #[serde(default)]
+    pub reverse: bool,
+    /// Exact arithmetic (`--exact`): the report's numbers as fractions (the picture stays in
+    /// binary64). The page does not send it; the Python module does.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub exact: bool,
+}
+
+/// Two pucks as the page's inputs hold them: text, read by the command line's own parsers.
+/// The line of impact is `normal` (`30deg`, `(1,1)`, `N30E`), or the disks' radii `r1`, `r2`
+/// with the impact parameter `b`, or neither (then only `e = 0`, the pucks stick, fixes FIN).
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlaneInput {
+    pub m1: String,
+    pub m2: String,
+    pub v1: String,
+    pub v2: String,
+    #[serde(default = "elastic")]
+    pub e: String,
+    #[serde(default)]
+    pub normal: String,
+    #[serde(default)]
+    pub r1: String,
+    #[serde(default)]
+    pub r2: String,
+    #[serde(default)]
+    pub b: String,
+    #[serde(default = "lab")]
+    pub frame: String,
+    #[serde(default)]
+    pub reverse: bool,
+    #[serde(default)]
+    pub exact: bool,
+    /// The page's choice of line of impact (`normal`, `disks` or `none`), when it sends one:
+    /// a chosen line left empty is named as missing.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub line: String,
+}
+
+/// A layout as the page's inputs hold it, in `collide track`'s words; an empty text is a flag
+/// not given.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct TrackInput {
+    pub masses: String,
+    pub positions: String,
+    pub velocities: String,
+    #[serde(default)]
+    pub sizes: String,
+    #[serde(default)]
+    pub left_wall: String,
+    #[serde(default)]
+    pub right_wall: String,
+    #[serde(default = "elastic")]
+    pub e: String,
+    #[serde(default)]
+    pub e_wall: String,
+    #[serde(default)]
+    pub gravity: String,
+    /// The end of the animation; empty: eight times the first collision's time.
+    #[serde(default)]
+    pub until: String,
+}
+
+/// The field whose typed numbers are the largest or smallest in size (the likeliest cause of a
+/// result beyond binary64), by the exponent of each number in it.
+pub fn largest_field(fields: &[(&'static str, &String)]) -> &'static str {
+    let size = |text: &str| -> f64 {
+        text.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e' || c == 'E' || c == '-'))
+            .filter_map(|w| w.trim_matches('-').parse::<f64>().ok())
+            .filter(|x| *x != 0.0)
+            .map(|x| x.abs().log10().abs())
+            .fold(0.0, f64::max)
+    };
+    fields
+        .iter()
+        .map(|(f, text)| (*f, size(text)))
+        .fold(("m1", -1.0), |best, x| if x.1 > best.1 { x } else { best })
+        .0
+}
