@@ -50,7 +50,7 @@ pub struct Track {
     pub bodies: Vec<Body>,
     pub left_wall: Option<f64>,
     pub right_wall: Option<f64>,
-    /// Restitution between bodies and at the walls.
+    /// Restitution between bodies and at the walls ([`Track::walls_restitution`]).
     pub e: f64,
     pub e_wall: f64,
     /// Acceleration toward the left (so a left wall is a floor and positions are heights).
@@ -262,6 +262,14 @@ pub fn bodies(
 }
 
 impl Track {
+    /// The walls' restitution: the one given for the walls (`--wall-restitution`,
+    /// `wall_restitution` in a scene or a sweep), else the bodies' `e`: `-e` sets every
+    /// collision's restitution unless the walls have their own. The one rule for every way a
+    /// track is given (command line, `--vary`, scenes, the page).
+    pub fn walls_restitution(e: f64, wall: Option<f64>) -> f64 {
+        wall.unwrap_or(e)
+    }
+
     /// Pi billiards: a block of mass `m` at rest at x = 1 between a wall at 0 and a block of mass
     /// `big_m` at x = 2 moving toward it at speed 1, elastic.
     pub fn pi_billiards(m: Mass, big_m: Mass) -> Track {
