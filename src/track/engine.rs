@@ -215,6 +215,7 @@ impl<'a> Sim<'a> {
     fn snap(&mut self, i: usize) {
         let r = self.reach[i];
         let b = &self.track.bodies;
+        let v = (self.v[i], self.v[i + 1]);
         if b[i].m.value() <= b[i + 1].m.value() {
             self.shift(i, self.x[i + 1] - r);
         } else {
@@ -234,11 +235,17 @@ impl<'a> Sim<'a> {
             self.shift(i + 1, w - self.half(i + 1));
             self.shift(i, self.x[i + 1] - r);
         }
+        // At micro speeds the energy's correction could turn the approach around: then the
+        // velocities stay as they came.
+        if !closing(self.v[i], self.v[i + 1]) {
+            (self.v[i], self.v[i + 1]) = v;
+        }
     }
 
     /// Moves body `i` (advanced to the event) to `x`, a correction of rounding size onto a wall
     /// or into contact, keeping its energy: under gravity its speed becomes the one its parabola
-    /// has at `x`, `v'^2 = v^2 + 2 a (x - x_old)`. The event's time is rounded to an ulp of `t`,
+    /// has at `x`, `v'^2 = v^2 + 2 a (x - x_old)`, its sign kept (`snap` keeps a pair's
+    /// velocities as they came if this would end its approach). The event's time is rounded to an ulp of `t`,
     /// which grows with `t`; putting the body in place without this moved it up or down the
     /// gravity field by up to `|v| ulp(t)`, an energy error per collision growing with time (an
     /// elastic stack drifted by 1e-8 in a million collisions, 1.4e-9 in 300,000).
