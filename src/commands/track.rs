@@ -40,7 +40,17 @@ pub fn run(args: TrackArgs) -> Result<Outcome> {
 /// `--vary`: a table of runs, one row each (`collide::table::runs::track`).
 fn sweep(args: TrackArgs) -> Result<Outcome> {
     let (track, limits) = base(&args)?;
-    super::table::run_table(&TrackSweep { track, limits }, &args.table, args.format)
+    let sweep = TrackSweep {
+        track,
+        limits,
+        wall_restitution: wall_restitution(&args),
+    };
+    super::table::run_table(&sweep, &args.table, args.format)
+}
+
+/// `--wall-restitution` as given (`None`: the walls take `-e`).
+fn wall_restitution(args: &TrackArgs) -> Option<f64> {
+    args.rules.wall_restitution.as_ref().map(|r| r.value())
 }
 
 /// The track and limits as given, checked.
@@ -52,11 +62,7 @@ fn base(args: &TrackArgs) -> Result<(Track, Limits)> {
         left_wall: args.layout.left_wall.as_ref().map(|x| x.value()),
         right_wall: args.layout.right_wall.as_ref().map(|x| x.value()),
         e,
-        e_wall: args
-            .rules
-            .wall_restitution
-            .as_ref()
-            .map_or(e, |r| r.value()),
+        e_wall: Track::walls_restitution(e, wall_restitution(args)),
         gravity: args.rules.gravity.value(),
     };
     track.check()?;

@@ -1,7 +1,7 @@
 //! `collide track`'s result for people: the stop, the counts, the bodies, the bookkeeping.
 
 use super::text::{Block, paragraph};
-use crate::track::{Limits, Stop, Track, TrackReport};
+use crate::track::{Beyond, DEFAULT_MAX_COLLISIONS, Limits, Stop, Track, TrackReport};
 use crate::values::number::num;
 
 /// A quantity of a track's result beyond binary64.
@@ -57,14 +57,32 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
             None => "no collision can happen any more".to_string(),
         },
         Stop::Until => "reached --until".to_string(),
-        Stop::Horizon { next } => format!(
-            "the next collision would come at t = {}, where positions are beyond binary64; \
-             the state is the last collision's",
-            num(*next)
-        ),
+        Stop::Horizon { next, beyond } => {
+            let at = next.map_or_else(
+                || "after t = 1.8e308 (beyond binary64's times)".to_string(),
+                |t| format!("at t = {}", num(t)),
+            );
+            let what = match beyond {
+                Beyond::Time => "",
+                Beyond::Position => ", where positions are beyond binary64",
+                Beyond::Energy => {
+                    " and leave the energy below binary64's range (2.2e-308): it would underflow"
+                }
+            };
+            format!(
+                "the collisions go on, but the next would come {at}{what}; the state is the \
+                 last collision's"
+            )
+        }
         Stop::MaxCollisions => format!(
-            "stopped at the --max-collisions cap of {}; raise it to go on",
-            limits.max_collisions
+            "at the --max-collisions cap of {}{}, before the motion ended (it may never end): \
+             give --until T for the state at a time T, or a --max-collisions N to go further",
+            limits.max_collisions,
+            if limits.max_collisions == DEFAULT_MAX_COLLISIONS {
+                " (the default)"
+            } else {
+                ""
+            }
         ),
         Stop::Zeno {
             at,

@@ -92,10 +92,10 @@ impl TrackScene {
             left_wall: t.left_wall.map(|n| n.value()),
             right_wall: t.right_wall.map(|n| n.value()),
             e,
-            e_wall: t
-                .wall_restitution
-                .as_ref()
-                .map_or(e, |r| r.get_ref().value()),
+            e_wall: Track::walls_restitution(
+                e,
+                t.wall_restitution.as_ref().map(|r| r.get_ref().value()),
+            ),
             gravity: t.gravity.as_ref().map_or(0.0, |g| g.get_ref().value()),
         };
         track.check().map_err(|e| {

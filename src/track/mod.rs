@@ -31,6 +31,7 @@ use crate::line::inertia::{Mass, MassError};
 use crate::line::restitution::{Restitution, RestitutionError};
 use crate::values::number::Number;
 
+pub use engine::{ENERGY_PER_COLLISION, ENERGY_TOLERANCE, energy_tolerance};
 pub use pi::{PiTheory, TrackReport};
 
 /// A body: mass (exact as typed), centre position, velocity, size (length along the track; 0
@@ -50,7 +51,7 @@ pub struct Track {
     pub bodies: Vec<Body>,
     pub left_wall: Option<f64>,
     pub right_wall: Option<f64>,
-    /// Restitution between bodies and at the walls.
+    /// Restitution between bodies and at the walls ([`Track::walls_restitution`]).
     pub e: f64,
     pub e_wall: f64,
     /// Acceleration toward the left (so a left wall is a floor and positions are heights).
@@ -100,10 +101,15 @@ pub enum Stop {
     Until,
     /// `--max-collisions` was reached.
     MaxCollisions,
-    /// The next collision would come at `next`, so late that positions there are beyond
-    /// binary64 (inelastic bounces slowing geometrically spread collisions out without end):
-    /// the state is the last collision's.
-    Horizon { next: f64 },
+    /// The next collision would leave binary64 (inelastic bounces slowing geometrically spread
+    /// collisions out without end): its time (`next`, absent when beyond 1.8e308), the
+    /// positions there, or the energy after it (below 2.2e-308, where it underflows), as
+    /// `beyond` says. The state is the last collision's.
+    Horizon {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        next: Option<f64>,
+        beyond: Beyond,
+    },
     /// Infinitely many collisions accumulate at `accumulation` (near `x`, involving `who`).
     Zeno {
         at: f64,
@@ -111,6 +117,19 @@ pub enum Stop {
         who: String,
         x: f64,
     },
+}
+
+/// What the next collision would take out of binary64's range (a [`Stop::Horizon`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Beyond {
+    /// Its time is above 1.8e308.
+    Time,
+    /// A position at its time is.
+    Position,
+    /// The energy after it is below 2.2e-308 (`f64::MIN_POSITIVE`) though bodies move: it
+    /// would underflow, and print as 0.
+    Energy,
 }
 
 /// What collided.
@@ -262,6 +281,14 @@ pub fn bodies(
 }
 
 impl Track {
+    /// The walls' restitution: the one given for the walls (`--wall-restitution`,
+    /// `wall_restitution` in a scene or a sweep), else the bodies' `e`: `-e` sets every
+    /// collision's restitution unless the walls have their own. The one rule for every way a
+    /// track is given (command line, `--vary`, scenes, the page).
+    pub fn walls_restitution(e: f64, wall: Option<f64>) -> f64 {
+        wall.unwrap_or(e)
+    }
+
     /// Pi billiards: a block of mass `m` at rest at x = 1 between a wall at 0 and a block of mass
     /// `big_m` at x = 2 moving toward it at speed 1, elastic.
     pub fn pi_billiards(m: Mass, big_m: Mass) -> Track {

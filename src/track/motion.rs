@@ -86,11 +86,12 @@ fn plus_times(v: f64, k: Dd, dh: f64, dl: f64) -> f64 {
 /// The first `s >= 0` at which a gap `d0 + r s + (a/2) s^2` closes (`d0 >= 0`), if it ever does;
 /// `approach` says whether the bodies approach now by the rule of [`closing`] (used when `a = 0`).
 /// Roots in the stable forms `2 d0 / (-r + sqrt(r^2 - 2 a d0))` and `(r + sqrt(...)) / -a`
-/// (no cancellation), with `r^2 - 2 a d0` formed without overflow.
+/// (no cancellation), with `r^2 - 2 a d0` formed without overflow. A gap that closes later
+/// than binary64 can count gives an infinite `s`: it does close (a horizon), unlike `None`.
 pub fn first_contact(d0: f64, r: f64, a: f64, approach: bool) -> Option<f64> {
     let d0 = d0.max(0.0);
     if a == 0.0 {
-        return approach.then(|| d0 / -r).filter(|s| s.is_finite());
+        return approach.then(|| d0 / -r).filter(|s| !s.is_nan());
     }
     // sqrt(2 |a| d0) without overflow.
     let q = (std::f64::consts::SQRT_2 * a.abs().sqrt()) * d0.sqrt();
@@ -109,7 +110,7 @@ pub fn first_contact(d0: f64, r: f64, a: f64, approach: bool) -> Option<f64> {
         }
         2.0 * d0 / (-r + ((-r - q) * (-r + q)).sqrt())
     };
-    s.is_finite().then_some(s)
+    (!s.is_nan()).then_some(s)
 }
 
 /// Allowed rounding in a gap between two positions: `2^-40` (about 9e-13) of the positions'
@@ -120,9 +121,10 @@ pub fn slack(magnitudes: f64) -> f64 {
     magnitudes * (1.0 / (1u64 << 40) as f64)
 }
 
-/// The time of an event `s` after `now`, if binary64 can hold it (a contact too far in the future
-/// is no event).
+/// The time of an event `s` after `now`; infinite when binary64 cannot hold it (the contact
+/// closes, but beyond binary64's times: the engine stops there with a horizon, it is not "no
+/// collision any more").
 #[inline]
 pub fn event_at(now: f64, s: Option<f64>) -> Option<f64> {
-    s.map(|s| now + s).filter(|t| t.is_finite())
+    s.map(|s| now + s)
 }

@@ -115,7 +115,7 @@ impl TrackInput {
             left_wall: value(optional(&self.left_wall, "left_wall")?),
             right_wall: value(optional(&self.right_wall, "right_wall")?),
             e: e.value(),
-            e_wall: e_wall.map_or(e.value(), |r| r.value()),
+            e_wall: Track::walls_restitution(e.value(), e_wall.map(|r| r.value())),
             gravity: value(optional(&self.gravity, "gravity")?).unwrap_or(0.0),
         };
         track.check().map_err(|e| {

@@ -704,3 +704,83 @@ fn the_slurm_recipe_shards_read_back_as_the_single_process_table() {
     assert_eq!(i, 10_000);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Issue 41 §2: a varied restitution means exactly what the flag means. Every row of `--vary`
+/// is the single run with that value on the command line, bit for bit (the JSON numbers of
+/// `collide track --format json` against the row's): a varied `e` with no `--wall-restitution`
+/// is also the walls' (it was left at the base's 1 for them), a varied `e` with one given leaves
+/// the walls at it, and a varied `wall_restitution` is `--wall-restitution`.
+#[test]
+fn a_varied_restitution_is_the_single_run_with_that_flag() {
+    let base = [
+        "track",
+        "-m",
+        "1,3",
+        "-x",
+        "1,3",
+        "-v",
+        "-1,1",
+        "--left-wall",
+        "0",
+        "--right-wall",
+        "4",
+        "--until",
+        "6",
+    ];
+    let columns = "collisions,pair_collisions,wall_collisions,time,fin1,fin2,xfin1,xfin2,\
+                   energy_end,momentum_end";
+    let keys = |j: &serde_json::Value| -> Vec<f64> {
+        let f = |v: &serde_json::Value| v.as_f64().unwrap();
+        vec![
+            f(&j["collisions"]),
+            f(&j["pair_collisions"]),
+            f(&j["wall_collisions"]),
+            f(&j["time"]),
+            f(&j["v"][0]),
+            f(&j["v"][1]),
+            f(&j["x"][0]),
+            f(&j["x"][1]),
+            f(&j["energy"]["end"]),
+            f(&j["momentum"]["end"]),
+        ]
+    };
+    let row_keys = |j: &serde_json::Value| -> Vec<f64> {
+        columns.split(',').map(|c| j[c].as_f64().unwrap()).collect()
+    };
+    // (extra flags, the varied parameter, its flag)
+    for (extra, vary, flag) in [
+        (vec![], "e", "-e"),
+        (vec!["--wall-restitution", "0.9"], "e", "-e"),
+        (vec!["-e", "0.7"], "wall_restitution", "--wall-restitution"),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(&extra);
+        let range = format!("{vary}=0:1:45");
+        let cols = format!("{vary},{columns}");
+        args.extend(["--vary", &range, "--columns", &cols, "--format", "jsonl"]);
+        let table = stdout(&args);
+        let rows: Vec<serde_json::Value> = table
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(rows.len(), 45);
+        let mut differ = 0;
+        for row in &rows {
+            let value = row[vary].as_f64().unwrap().to_string();
+            let mut single = base.to_vec();
+            single.extend(&extra);
+            single.extend([flag, &value, "--format", "json"]);
+            let j: serde_json::Value = serde_json::from_str(&stdout(&single)).unwrap();
+            let (want, got) = (keys(&j), row_keys(row));
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            if bits(&want) != bits(&got) {
+                differ += 1;
+                eprintln!("{extra:?} {vary} = {value}: single {want:?}, row {got:?}");
+            }
+        }
+        assert_eq!(
+            differ, 0,
+            "{extra:?} --vary {vary}: rows unlike the single run"
+        );
+    }
+}

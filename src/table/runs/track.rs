@@ -15,6 +15,9 @@ use crate::values::number::Number;
 pub struct TrackSweep {
     pub track: Track,
     pub limits: Limits,
+    /// The walls' restitution as given (`--wall-restitution`); `None`: the walls take `e`, the
+    /// base's or a varied one ([`Track::walls_restitution`]), as `-e` alone would give them.
+    pub wall_restitution: Option<f64>,
 }
 
 /// A summary column; bodies counted from 1.
@@ -101,6 +104,7 @@ impl Kind for TrackSweep {
     fn run(&self, point: &[(Knob, f64)]) -> Result<(Track, Run), String> {
         let mut track = self.track.clone();
         let mut limits = self.limits;
+        let mut wall_restitution = self.wall_restitution;
         for &(knob, v) in point {
             match knob {
                 Knob::Mass(i) => {
@@ -112,7 +116,7 @@ impl Kind for TrackSweep {
                 Knob::Velocity(i) => track.bodies[i].v = v,
                 Knob::Size(i) => track.bodies[i].size = v,
                 Knob::Named("e") => track.e = v,
-                Knob::Named("wall_restitution") => track.e_wall = v,
+                Knob::Named("wall_restitution") => wall_restitution = Some(v),
                 Knob::Named("gravity") => track.gravity = v,
                 Knob::Named("until") => limits.until = Some(v),
                 Knob::Named("left_wall") => track.left_wall = Some(v),
@@ -120,6 +124,7 @@ impl Kind for TrackSweep {
                 Knob::Named(other) => return Err(format!("'{other}' is not a parameter")),
             }
         }
+        track.e_wall = Track::walls_restitution(track.e, wall_restitution);
         track.check().map_err(|e| e.to_string())?;
         limits.check().map_err(|e| e.to_string())?;
         let run = track.run(limits, None).map_err(|e| e.to_string())?;
