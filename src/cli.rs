@@ -335,7 +335,8 @@ pub struct ViewArgs {
     pub normal: Option<String>,
 
     /// Radii of two smooth disks in the plane (with --impact-parameter)
-    #[arg(long, value_name = "R1,R2", requires_all = ["impact_parameter", "velocities"])]
+    #[arg(long, value_name = "R1,R2", allow_hyphen_values = true,
+          requires_all = ["impact_parameter", "velocities"])]
     pub radii: Option<String>,
 
     /// Distance from body 2's centre to the line of body 1's relative motion (with --radii)
@@ -490,7 +491,7 @@ pub struct CaseArgs {
 
     /// Radii of two smooth disks (with --impact-parameter): the line of impact from the
     /// geometry; numbers, or lengths with a unit ('2.5 cm,2.5 cm') like the impact parameter
-    #[arg(long, value_name = "R1,R2", requires = "impact_parameter",
+    #[arg(long, value_name = "R1,R2", requires = "impact_parameter", allow_hyphen_values = true,
           value_parser = |s: &str| -> Result<[Quantity; 2], String> {
               let [a, b] = collide::values::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
               let length = |t: &str| collide::values::units::parse(t, Dimension::Length).map_err(|e| e.to_string());

@@ -68,6 +68,25 @@ impl CaseArgs {
             || self.radii.is_some()
     }
 
+    /// Whether the case is a body against a wall, floor or ceiling in the plane (`-m '1
+    /// kg,wall' -v '(17.32,10) m/s,0'`): a smooth rigid contact, solved by the rigid mode as
+    /// with `--friction 0` (a wall to the ball's right, a floor below it, a ceiling above).
+    pub fn wall_in_plane(&self) -> bool {
+        let immovable = |t: &&str| {
+            matches!(
+                collide::rigid::pose::MassTyped::parse(t, "mass"),
+                Ok(collide::rigid::pose::MassTyped::Immovable(_))
+            )
+        };
+        self.spatial()
+            && self.normal.is_none()
+            && self.radii.is_none()
+            && self.masses.as_ref().is_some_and(|m| {
+                collide::space::typed::split_bodies(&m.text)
+                    .is_ok_and(|b| b.len() == 2 && b.iter().any(immovable))
+            })
+    }
+
     /// The typed problem (masses or tensor, velocities, restitution, units), for exact
     /// arithmetic or not: two bodies on a line (the plane and N bodies are `space_input`).
     pub fn problem(&self, fin: Option<&Listed>, exact: bool) -> Result<Problem> {

@@ -35,7 +35,8 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
             ),
         }
     }
-    let rigid = args.rigid.active() && floor.is_none();
+    let rigid = (args.rigid.active() || (args.case.wall_in_plane() && args.fin.is_none()))
+        && floor.is_none();
     if let Some(flag) = (args.knowns.knowns().first_flag()).or(args.knowns.first_asked(false))
         && (rigid || args.case.spatial())
     {

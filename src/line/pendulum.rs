@@ -4,8 +4,11 @@
 //! to the side. `1 - cos(theta) = 2 sin^2(theta / 2)`, so the angle is computed as
 //! `2 asin(sqrt(h / 2L))`, which loses nothing for small swings (where `1 - h / L` rounds to 1).
 //! Above `h = L` a string goes slack before the bob gets there (only a rigid rod swings past the
-//! horizontal); above `2L` not even a rod stops: it goes over the top. Everything is exact
-//! rational arithmetic, with the roots and the angle taken to `DIGITS` digits.
+//! horizontal), and the bob flies free to its real highest point (`peak`). Above `2L` a rod
+//! would go over the top, but a string still goes slack: it stays taut over the top only when
+//! the speed left there holds the bob on its circle, `u^2 = 2 g (h - 2L) >= g L`, so from
+//! `h = 5L/2` on the bob loops (`OverTheTop`). Everything is exact rational arithmetic, with
+//! the roots and the angle taken to `DIGITS` digits.
 
 use num_traits::Signed;
 
@@ -25,15 +28,21 @@ pub enum Swing {
         /// With `slack`, the height the bob really reaches on a string (`peak`), exact.
         peak: Option<Q>,
     },
-    /// `h > 2L`: over the top.
+    /// `2L < h < 5L/2`: a rod would go over the top (no rod's angle), a string goes slack
+    /// and the bob flies free to `peak`, exact.
+    Slack { peak: Q },
+    /// `h >= 5L/2`: the string stays taut over the top and the bob loops.
     OverTheTop,
 }
 
 /// The swing of a bob rising `h` on a string of length `l` (both in metres, `l > 0`, `h >= 0`).
 pub fn swing(h: &Q, l: &Q) -> Swing {
     let two_l = int(2) * l;
-    if h > &two_l {
+    if h * int(2) >= int(5) * l {
         return Swing::OverTheTop;
+    }
+    if h > &two_l {
+        return Swing::Slack { peak: peak(h, l) };
     }
     let horizontal = root(&(h * (&two_l - h)));
     // cos(theta) = 1 - h / L: the angles whose cosine is rational and whose degrees are too.
@@ -60,7 +69,7 @@ pub fn swing(h: &Q, l: &Q) -> Swing {
     }
 }
 
-/// The highest point of a bob whose string goes slack (`L < h <= 2L`): the string's tension
+/// The highest point of a bob whose string goes slack (`L < h < 5L/2`): the string's tension
 /// vanishes where `u^2 = -g L cos(theta)` with `u^2 = 2 g h - 2 g L (1 - cos(theta))` (energy),
 /// at `c = cos(theta) = 2 (L - h) / 3L`, the height `L (1 - c)`; the bob then flies free with
 /// the vertical speed `u sin(theta)` and rises `u^2 sin^2(theta) / 2g = -(L c / 2)(1 - c^2)`
@@ -181,7 +190,18 @@ mod tests {
             };
             assert_eq!((degrees, slack), (Ok(q(deg)), slack_expected), "h = {h}");
         }
-        assert_eq!(swing(&q("2.01"), &q("1")), Swing::OverTheTop);
+        // 2L < h < 5L/2: slack, no rod's angle. h = 2.2 on L = 1: c = 2 (1 - 2.2) / 3 = -0.8,
+        // slack at 1.8 m, then up (0.8 / 2)(1 - 0.64) = 0.144: 1.944 m. From 5L/2 it loops:
+        // at the top u^2 = 2 g (2.5 - 2) = g L, just enough to keep the string taut.
+        assert_eq!(swing(&q("2.2"), &q("1")), Swing::Slack { peak: q("1.944") });
+        assert_eq!(
+            swing(&q("2.4999"), &q("1")),
+            Swing::Slack {
+                peak: peak(&q("2.4999"), &q("1"))
+            }
+        );
+        assert_eq!(swing(&q("2.5"), &q("1")), Swing::OverTheTop);
+        assert_eq!(peak(&q("2.5"), &q("1")), q("2"));
         // Slack: L = 0.5, h = 0.8 (g = 10, f = 4): c = 2 (0.5 - 0.8) / 1.5 = -2/5, slack at
         // 0.5 (7/5) = 0.7 m with u^2 = 10 0.5 2/5 = 2, then up 2 (21/25) / 20 = 0.084: 0.784 m.
         assert_eq!(peak(&q("0.8"), &q("0.5")), q("0.784"));

@@ -122,10 +122,13 @@ pub struct SwingReport<N> {
     pub body: u8,
     /// `h = f^2 / 2g` in metres.
     pub height: N,
-    /// `theta = acos(1 - h / L)`, from the vertical.
-    pub angle_deg: N,
-    /// `x = L sin(theta) = sqrt(h (2L - h))` in metres.
-    pub horizontal: N,
+    /// `theta = acos(1 - h / L)`, from the vertical; none above `h = 2L`, where a rod would
+    /// go over the top (the string goes slack: `peak`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle_deg: Option<N>,
+    /// `x = L sin(theta) = sqrt(h (2L - h))` in metres; none above `h = 2L`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub horizontal: Option<N>,
     /// `h > L`: a string goes slack before the bob gets there (a rod would).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub slack: bool,
@@ -148,15 +151,16 @@ pub struct SlidesReport<N> {
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum AskedError {
     #[error(
-        "--length {length}: body {body} would rise {height} m (f^2 / 2g), above the top of its \
-         circle (2 L = {two_l} m): the string goes slack and even a rod would go over the top, \
-         so there is no angle (a longer string, or a body that is not on one)"
+        "--length {length}: body {body} would rise {height} m (f^2 / 2g), at least 5L/2 = \
+         {five_halves_l} m: the string stays taut over the top (the speed left there, \
+         u^2 = 2 g (h - 2L) >= g L, holds the bob on its circle), so it goes over the top and \
+         loops, with no angle or highest point (a longer string, or a body that is not on one)"
     )]
     OverTheTop {
         length: String,
         body: usize,
         height: String,
-        two_l: String,
+        five_halves_l: String,
     },
     #[error(
         "--spring {spring}: the bodies move together (V1 = V2 = {v}), so they never touch and \
@@ -301,9 +305,17 @@ impl<N: Scalar> AskedReport<N> {
                         length: typed.to_string(),
                         body: i + 1,
                         height: significant(&h, 6),
-                        two_l: significant(&(int(2) * l), 6),
+                        five_halves_l: significant(&(int(5) * l / int(2)), 6),
                     });
                 }
+                Swing::Slack { peak } => swings.push(SwingReport {
+                    body: i as u8 + 1,
+                    height: nonzero(&h),
+                    angle_deg: None,
+                    horizontal: None,
+                    slack: true,
+                    peak: Some(nonzero(&peak)),
+                }),
                 Swing::Angle {
                     degrees,
                     horizontal,
@@ -312,8 +324,8 @@ impl<N: Scalar> AskedReport<N> {
                 } => swings.push(SwingReport {
                     body: i as u8 + 1,
                     height: nonzero(&h),
-                    angle_deg: either(degrees),
-                    horizontal: either(horizontal),
+                    angle_deg: Some(either(degrees)),
+                    horizontal: Some(either(horizontal)),
                     slack,
                     peak: peak.as_ref().map(nonzero),
                 }),
@@ -383,9 +395,17 @@ impl<N: Scalar> AskedReport<N> {
                          flies free to this height",
                     );
                 }
+                let (Some(angle), Some(horizontal)) = (&s.angle_deg, &s.horizontal) else {
+                    b.row(
+                        "theta = acos(1 - h / L)",
+                        "none",
+                        "h > 2L: a rod would go over the top; the string goes slack (peak)",
+                    );
+                    continue;
+                };
                 b.row(
                     "theta = acos(1 - h / L)",
-                    format!("{} deg", s.angle_deg.show()),
+                    format!("{} deg", angle.show()),
                     if s.slack {
                         "h > L: a string goes slack before this (only a rod swings past the \
                          horizontal)"
@@ -395,7 +415,7 @@ impl<N: Scalar> AskedReport<N> {
                 );
                 b.row(
                     "x = L sin(theta)",
-                    format!("{} m", s.horizontal.show()),
+                    format!("{} m", horizontal.show()),
                     if s.slack {
                         "= sqrt(h (2L - h)), how far a rod's bob would move sideways"
                     } else {

@@ -147,7 +147,7 @@ impl Homework {
             .velocities
             .iter()
             .flatten()
-            .any(|e| matches!(e, Either::Vector(v) if v.parts.len() != 2))
+            .any(|e| matches!(e, Either::Vector(v) if v.dim() != 2))
         {
             return Err(HomeworkError::Space);
         }

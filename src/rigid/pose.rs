@@ -18,6 +18,9 @@ use super::laws::{Law, Tangential};
 use super::shape::{ShapeError, ShapeTyped};
 use super::slip::DEFAULT_RTOL;
 use super::units::{Measure, RigidUnitError, Typed, TypedVec};
+use crate::space::angle::Angle;
+use crate::space::pose::NormalGiven;
+use crate::space::typed::TypedError;
 
 /// A mass, or an immovable body (`wall`, `floor`).
 #[derive(Clone, Debug, PartialEq)]
@@ -46,9 +49,9 @@ pub enum Either {
 }
 
 impl Either {
-    /// `(a,b[,c]) unit` as a vector, anything else as one number.
+    /// `(a,b[,c]) unit` or `size unit @ angle` as a vector, anything else as one number.
     pub fn parse(text: &str, measure: Measure, what: &str) -> Result<Either, RigidUnitError> {
-        if text.trim_start().starts_with('(') {
+        if text.trim_start().starts_with('(') || text.contains('@') {
             TypedVec::parse(text, measure, what, &[2, 3]).map(Either::Vector)
         } else {
             Typed::parse(text, measure, what).map(Either::One)
@@ -65,7 +68,7 @@ impl Either {
     fn dim(&self) -> Option<usize> {
         match self {
             Either::One(_) => None,
-            Either::Vector(v) => Some(v.parts.len()),
+            Either::Vector(v) => Some(v.dim()),
         }
     }
 }
@@ -94,9 +97,38 @@ pub struct BodyTyped {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ContactTyped {
     pub point: TypedVec,
-    /// A direction: any length, no unit.
-    pub normal: Vec<Number>,
+    pub normal: NormalTyped,
     pub laws: LawsTyped,
+}
+
+/// A contact normal as typed: components of any length and no unit (`(1,0)`, `[1, 0]`), or in
+/// the plane an angle or a compass bearing (`30deg`, `N30E`), as the plane's `--normal` reads
+/// them.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NormalTyped {
+    Components(Vec<Number>),
+    Angle(Angle),
+}
+
+impl std::str::FromStr for NormalTyped {
+    type Err = TypedError;
+    fn from_str(text: &str) -> Result<NormalTyped, TypedError> {
+        match text.parse::<NormalGiven>()? {
+            NormalGiven::Components(parts) => Ok(NormalTyped::Components(parts)),
+            NormalGiven::Angle(a) => Ok(NormalTyped::Angle(a)),
+            NormalGiven::Geometry { .. } => Err(TypedError::AfterParen(text.trim().to_string())),
+        }
+    }
+}
+
+impl NormalTyped {
+    /// How many components it has (2 for an angle).
+    fn dim(&self) -> usize {
+        match self {
+            NormalTyped::Components(parts) => parts.len(),
+            NormalTyped::Angle(_) => 2,
+        }
+    }
 }
 
 /// Restitution and friction as typed.
@@ -167,6 +199,17 @@ pub enum PoseError {
          error estimate: drop --exact"
     )]
     ExactSlip,
+    #[error(
+        "body {index}: its {what} = {value}{} is beyond binary64's normal range (2.2e-308 to \
+         1.8e308) and would print as 0 or inf while the impact uses it: rescale the units \
+         (mm, g), or use --exact", if unit.is_empty() { String::new() } else { format!(" {unit}") }
+    )]
+    Unprintable {
+        index: usize,
+        what: &'static str,
+        value: String,
+        unit: &'static str,
+    },
     #[error("the tolerance {0} must be a number in [1e-13, 1e-3]")]
     Tolerance(String),
 }
@@ -294,6 +337,10 @@ pub fn problem(
     if b1.immovable().is_some() && b2.immovable().is_some() {
         return Err(PoseError::TwoWalls);
     }
+    if !r.exact {
+        printable(&b1, 1, r.si)?;
+        printable(&b2, 2, r.si)?;
+    }
     let (e, law, tangential) = contact_laws(r, c)?;
     exact_allowed(r.exact, dim, &tangential)?;
     Ok(Problem {
@@ -309,6 +356,47 @@ pub fn problem(
         rtol: tolerance(rtol)?,
         si: r.si,
     })
+}
+
+/// In binary64 output a body's mass and moments of inertia print as the binary64 nearest the
+/// exact values the impact uses: a value that is not 0 but below binary64's normal range would
+/// print as 0 (or a subnormal of few digits), one above it as inf. Refused, named (issue 41: a
+/// rod of 1e-308 m printed `I_cm = 0` while its spin came from 3.3e-617).
+fn printable(body: &Body, index: usize, si: bool) -> Result<(), PoseError> {
+    let diagonal = |m: &Mat| (0..m.len()).map(|k| m[k][k].clone()).collect::<Vec<_>>();
+    let mut values: Vec<(&'static str, Q, &'static str)> = body
+        .mass
+        .iter()
+        .map(|m| ("mass m", m.clone(), "kg"))
+        .collect();
+    if let Some(i) = body.inertia() {
+        values.extend(
+            diagonal(i)
+                .into_iter()
+                .map(|x| ("inertia I_cm", x, "kg m^2")),
+        );
+    }
+    if let Mobility::Pivoted { about_pivot, .. } = &body.mobility {
+        values.extend(
+            diagonal(about_pivot)
+                .into_iter()
+                .map(|x| ("inertia about the pivot I_p", x, "kg m^2")),
+        );
+    }
+    for (what, q, unit) in values {
+        let fits = q.is_zero()
+            || crate::values::rational::to_f64(&q)
+                .is_some_and(|x| x.is_finite() && x.abs() >= f64::MIN_POSITIVE);
+        if !fits {
+            return Err(PoseError::Unprintable {
+                index,
+                what,
+                value: crate::values::quantity::significant(&q, 6),
+                unit: if si { unit } else { "" },
+            });
+        }
+    }
+    Ok(())
 }
 
 /// The tolerance of the ODE, checked.
@@ -346,8 +434,8 @@ impl BodyTyped {
 
     fn dims(&self) -> Vec<usize> {
         [
-            self.position.as_ref().map(|p| p.parts.len()),
-            self.pivot.as_ref().map(|p| p.parts.len()),
+            self.position.as_ref().map(TypedVec::dim),
+            self.pivot.as_ref().map(TypedVec::dim),
             self.velocity.as_ref().and_then(Either::dim),
             self.omega.as_ref().and_then(Either::dim),
         ]
@@ -479,7 +567,7 @@ fn inertia(index: usize, i: &InertiaTyped, dim: usize, r: &Resolver) -> Result<M
     match (i, dim) {
         (InertiaTyped::One(t), 2) => Ok(vec![vec![r.one(t)?]]),
         (InertiaTyped::One(t), _) => Ok(algebra::diag(3, &r.one(t)?)),
-        (InertiaTyped::Rows(rows), 3) if rows.len() == 1 && rows[0].parts.len() == 3 => {
+        (InertiaTyped::Rows(rows), 3) if rows.len() == 1 && rows[0].dim() == 3 => {
             let d = r.vector(&rows[0])?;
             let mut m = algebra::diag(3, &Q::ZERO);
             for (k, x) in d.into_iter().enumerate() {
@@ -488,7 +576,7 @@ fn inertia(index: usize, i: &InertiaTyped, dim: usize, r: &Resolver) -> Result<M
             Ok(m)
         }
         (InertiaTyped::Rows(rows), 3)
-            if rows.len() == 3 && rows.iter().all(|row| row.parts.len() == 3) =>
+            if rows.len() == 3 && rows.iter().all(|row| row.dim() == 3) =>
         {
             rows.iter().map(|row| r.vector(row)).collect()
         }
@@ -505,7 +593,7 @@ impl Input {
     /// The dimension every vector agrees on.
     fn dim(&self) -> Result<usize, PoseError> {
         let mut dims: Vec<usize> = self.bodies.iter().flat_map(BodyTyped::dims).collect();
-        dims.push(self.contact.point.parts.len());
+        dims.push(self.contact.point.dim());
         dims.sort_unstable();
         dims.dedup();
         match dims.as_slice() {
@@ -528,13 +616,26 @@ impl Input {
             self.bodies[1].spec(2, dim, &r)?,
         ];
         let c = &self.contact;
-        if c.normal.len() != dim {
+        if c.normal.dim() != dim {
             return Err(PoseError::NormalSize {
-                got: c.normal.len(),
+                got: c.normal.dim(),
                 dim,
             });
         }
-        let normal: Vec<Q> = c.normal.iter().map(|n| r.plain(n)).collect();
+        let normal: Vec<Q> = match &c.normal {
+            NormalTyped::Components(parts) => parts.iter().map(|n| r.plain(n)).collect(),
+            NormalTyped::Angle(a) => {
+                let (d, rounded) = a.direction();
+                if rounded && r.exact {
+                    return Err(PoseError::Irrational(
+                        format!("the normal {a}"),
+                        "cos and sin of the angle are irrational, give components such as [1, 1]",
+                    ));
+                }
+                r.note(rounded, &a.typed)?;
+                d
+            }
+        };
         if algebra::is_zero(&normal) {
             return Err(PoseError::ZeroNormal);
         }

@@ -118,8 +118,12 @@ impl std::str::FromStr for ShapeTyped {
                 unit: one.unit,
                 measure: Measure::Length,
                 text: one.text,
+                angle: None,
             }
         };
+        if sizes.angle.is_some() {
+            return Err(ShapeError::Syntax(t.into()));
+        }
         if sizes.parts.iter().any(|n| n.value() <= 0.0) {
             return Err(ShapeError::Size(t.into()));
         }

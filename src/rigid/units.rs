@@ -1,6 +1,10 @@
 //! Quantities of a rigid body as typed: masses, lengths and velocities with the units of the rest
 //! of collide (`0.05 kg`, `1.2 m`, `(3,-4) m/s`), angular velocities (`20 rad/s`, `300 rpm`,
-//! `5 rev/s`, `90 deg/s`) and moments of inertia (`0.12 kg m^2`, `50 g cm^2`).
+//! `5 rev/s`, `90 deg/s`) and moments of inertia (`0.12 kg m^2`, `50 g cm^2`). Numbers and
+//! units are split by the values layer's one parser (`values::units::split_number`: `1e-3 m` is
+//! a millimetre), and a velocity or a length in the plane may be typed as `size @ angle` with
+//! the plane's angles and compass bearings (`20 m/s @ 30deg`, `5 m/s @ N30E`; `Angle::along`),
+//! so a string means the same here as on a line and in the plane.
 //!
 //! A rigid case mixes lengths with velocities and spins (`v + omega x r`), so its units are
 //! resolved together: a case without any unit is computed in the numbers as typed (consistent
@@ -9,9 +13,10 @@
 //! (`rpm`, `rev/s`) and degrees are irrational in radians: their values are the binary64 of
 //! `pi` times the exact rest, marked approximate.
 
+use crate::space::angle::{Angle, AngleError};
 use crate::values::number::{Number, NumberError};
-use crate::values::rational::{Q, from_f64, int, ratio};
-use crate::values::units::{Dimension, QuantityError, lookup};
+use crate::values::rational::{Q, from_f64, int, ratio, to_f64};
+use crate::values::units::{Dimension, QuantityError, lookup, split_number};
 
 /// What a typed value measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -140,6 +145,26 @@ pub enum RigidUnitError {
         text: String,
         expected: usize,
     },
+    #[error("{what} '{text}': {error}")]
+    Angle {
+        what: String,
+        text: String,
+        error: AngleError,
+    },
+    #[error(
+        "{what} '{text}': a size along a direction must be >= 0 (a negative size is the \
+         opposite direction)"
+    )]
+    NegativeSize { what: String, text: String },
+    #[error(
+        "--exact: {what} '{text}': cos and sin of {angle} are irrational, and exact arithmetic \
+         holds rationals only: give it as components, e.g. '(4,3) m/s', or drop --exact"
+    )]
+    Irrational {
+        what: String,
+        text: String,
+        angle: String,
+    },
     #[error(
         "{what} '{text}' has no unit while other values have one: a rigid case with units is \
          computed in SI, so give every value its unit (e.g. '{example}'), or none"
@@ -161,13 +186,15 @@ pub struct Typed {
     pub text: String,
 }
 
-/// A typed vector: its components and one unit.
+/// A typed vector: its components and one unit, or a size and an angle in the plane
+/// (`5 m/s @ 30deg`: `parts` is the one size, `angle` its direction).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TypedVec {
     pub parts: Vec<Number>,
     pub unit: Option<RigidUnit>,
     pub measure: Measure,
     pub text: String,
+    pub angle: Option<Angle>,
 }
 
 fn common_unit(name: &str, measure: Measure) -> Option<RigidUnit> {
@@ -234,57 +261,27 @@ fn known(measure: Measure) -> String {
     }
 }
 
-/// Splits `text` into a number and a unit name at the first place where the rest starts with a
-/// letter, a space or a degree sign and the part before is a number.
-fn split(text: &str) -> Option<(Number, &str)> {
-    if let Ok(n) = text.parse::<Number>() {
-        return Some((n, ""));
-    }
-    text.char_indices()
-        .filter(|(_, c)| c.is_whitespace() || c.is_alphabetic() || *c == '°')
-        .find_map(|(i, _)| {
-            text[..i]
-                .trim()
-                .parse::<Number>()
-                .ok()
-                .map(|n| (n, &text[i..]))
-        })
-        .map(|(n, rest)| (n, rest.trim()))
-}
-
 impl Typed {
-    /// Parses `<number> [<unit>]` measuring `measure`; `what` names it in messages.
+    /// Parses `<number> [<unit>]` measuring `measure`; `what` names it in messages. The
+    /// number and the unit are split as everywhere else (`split_number`).
     pub fn parse(text: &str, measure: Measure, what: &str) -> Result<Typed, RigidUnitError> {
         let t = text.trim();
-        let Some((number, name)) = split(t) else {
-            let error = t.parse::<Number>().err().unwrap_or(NumberError::Empty);
-            return Err(RigidUnitError::Number {
+        let (number, name) = split_number(t).map_err(|error| match error {
+            QuantityError::Number(error) => RigidUnitError::Number {
                 what: what.into(),
                 text: t.into(),
                 error,
-            });
-        };
+            },
+            error => RigidUnitError::Quantity {
+                what: what.into(),
+                text: t.into(),
+                error,
+            },
+        })?;
         let unit = if name.is_empty() {
             None
         } else {
-            Some(unit(name, measure).ok_or_else(|| match measure {
-                Measure::Mass | Measure::Length | Measure::Velocity => {
-                    let dimension = match measure {
-                        Measure::Mass => Dimension::Mass,
-                        Measure::Length => Dimension::Length,
-                        _ => Dimension::Velocity,
-                    };
-                    match lookup(name, dimension) {
-                        Err(e) => RigidUnitError::Quantity {
-                            what: what.into(),
-                            text: t.into(),
-                            error: e.into(),
-                        },
-                        Ok(_) => unreachable_unit(what, t, measure, name),
-                    }
-                }
-                _ => unreachable_unit(what, t, measure, name),
-            })?)
+            Some(unit_named(name, measure, what, t)?)
         };
         Ok(Typed {
             number,
@@ -307,17 +304,44 @@ impl Typed {
     }
 }
 
-fn unreachable_unit(what: &str, text: &str, measure: Measure, name: &str) -> RigidUnitError {
-    RigidUnitError::Unit {
+/// The unit called `name` for `measure`, or an error naming the nearest ones (the common
+/// table's suggestions for masses, lengths and velocities).
+fn unit_named(
+    name: &str,
+    measure: Measure,
+    what: &str,
+    text: &str,
+) -> Result<RigidUnit, RigidUnitError> {
+    if let Some(u) = unit(name, measure) {
+        return Ok(u);
+    }
+    let dimension = match measure {
+        Measure::Mass => Some(Dimension::Mass),
+        Measure::Length => Some(Dimension::Length),
+        Measure::Velocity => Some(Dimension::Velocity),
+        Measure::Spin | Measure::Inertia => None,
+    };
+    if let Some(Err(error)) = dimension.map(|d| lookup(name, d)) {
+        return Err(RigidUnitError::Quantity {
+            what: what.into(),
+            text: text.into(),
+            error: error.into(),
+        });
+    }
+    Err(RigidUnitError::Unit {
         what: what.into(),
         text: text.into(),
         measure,
         unit: name.into(),
         known: known(measure),
-    }
+    })
 }
 
-/// A typed number's value: `n` (exact or its binary64) times its unit's size in SI when `si`.
+/// A typed number's value: `n` times its unit's size in SI when `si`, exact, or (`exact` false)
+/// the binary64 nearest that product, as the plane converts (`values::units::resolve`: `10.8
+/// km/h` is 3 m/s exactly, as typed, not the binary64 of 10.8 times 5/18). A unit with a factor
+/// of pi (turns, degrees) multiplies the binary64 of `n` by the one pi, so `300 rpm` reads back
+/// as 300.
 fn resolve(
     n: &Number,
     unit: Option<&RigidUnit>,
@@ -325,16 +349,18 @@ fn resolve(
     exact: bool,
     (text, measure): (&str, Measure),
 ) -> Result<(Q, bool), RigidUnitError> {
-    let q = if exact {
-        n.exact()
-    } else {
-        from_f64(n.value())
+    let binary64 = |q: Q| {
+        if exact {
+            q
+        } else {
+            to_f64(&q).map_or(q, from_f64)
+        }
     };
     match (unit, si) {
-        (Some(u), _) => {
-            let (size, rounded) = u.si();
-            Ok((q * size, rounded))
-        }
+        (Some(u), _) => match u.si() {
+            (size, true) => Ok((binary64(n.exact()) * size, true)),
+            (size, false) => Ok((binary64(n.exact() * size), false)),
+        },
         (None, true) if n.value() != 0.0 => Err(RigidUnitError::Bare {
             what: measure.name().into(),
             text: text.into(),
@@ -346,12 +372,13 @@ fn resolve(
                 Measure::Inertia => "0.1 kg m^2",
             },
         }),
-        _ => Ok((q, false)),
+        _ => Ok((binary64(n.exact()), false)),
     }
 }
 
 impl TypedVec {
-    /// Parses `(a,b[,c]) [unit]`, with `dims` the sizes allowed.
+    /// Parses `(a,b[,c]) [unit]`, with `dims` the sizes allowed; a velocity or a length in the
+    /// plane also as `size [unit] @ angle` (`20 m/s @ 30deg`, `5 m/s @ N30E`).
     pub fn parse(
         text: &str,
         measure: Measure,
@@ -364,6 +391,32 @@ impl TypedVec {
             text: t.into(),
             expected: *dims.last().unwrap_or(&2),
         };
+        if let Some((size, angle)) = t.split_once('@')
+            && matches!(measure, Measure::Velocity | Measure::Length)
+            && dims.contains(&2)
+        {
+            let size = Typed::parse(size, measure, what)?;
+            let angle = angle
+                .parse::<Angle>()
+                .map_err(|error| RigidUnitError::Angle {
+                    what: what.into(),
+                    text: t.into(),
+                    error,
+                })?;
+            if size.number.value() < 0.0 {
+                return Err(RigidUnitError::NegativeSize {
+                    what: what.into(),
+                    text: t.into(),
+                });
+            }
+            return Ok(TypedVec {
+                parts: vec![size.number],
+                unit: size.unit,
+                measure,
+                text: t.into(),
+                angle: Some(angle),
+            });
+        }
         let inner = t.strip_prefix('(').ok_or_else(bad)?;
         let (inside, after) = inner.split_once(')').ok_or_else(bad)?;
         let parts = inside
@@ -385,14 +438,24 @@ impl TypedVec {
         let unit = if after.is_empty() {
             None
         } else {
-            Some(unit(after, measure).ok_or_else(|| unreachable_unit(what, t, measure, after))?)
+            Some(unit_named(after, measure, what, t)?)
         };
         Ok(TypedVec {
             parts,
             unit,
             measure,
             text: t.into(),
+            angle: None,
         })
+    }
+
+    /// How many components: 2 for `size @ angle`.
+    pub fn dim(&self) -> usize {
+        if self.angle.is_some() {
+            2
+        } else {
+            self.parts.len()
+        }
     }
 
     /// A vector of numbers (a TOML array) with no unit.
@@ -410,10 +473,13 @@ impl TypedVec {
             unit: None,
             measure,
             text,
+            angle: None,
         }
     }
 
-    /// The components in the case's units, and whether they are rounded.
+    /// The components in the case's units, and whether they are rounded (a factor of pi, or
+    /// the cosine and sine of an angle that is not a multiple of 90 degrees: refused when
+    /// `exact`).
     pub fn value(&self, si: bool, exact: bool) -> Result<(Vec<Q>, bool), RigidUnitError> {
         let mut rounded = false;
         let mut out = Vec::new();
@@ -421,6 +487,17 @@ impl TypedVec {
             let (q, r) = resolve(p, self.unit.as_ref(), si, exact, (&self.text, self.measure))?;
             rounded |= r;
             out.push(q);
+        }
+        if let (Some(angle), [size]) = (&self.angle, out.as_slice()) {
+            let (parts, r) = angle.along(size);
+            if r && exact {
+                return Err(RigidUnitError::Irrational {
+                    what: self.measure.name().into(),
+                    text: self.text.clone(),
+                    angle: angle.typed.clone(),
+                });
+            }
+            return Ok((parts, rounded || r));
         }
         Ok((out, rounded))
     }

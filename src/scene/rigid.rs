@@ -11,12 +11,13 @@
 //! shape = "rod 1 m"         # or inertia = "0.1 kg m^2"; pivot = "(0,-0.5) m"
 //! [contact]
 //! point = "(0,0.5) m"
-//! normal = [1, 0]           # from body 1 to body 2, any length
+//! normal = [1, 0]           # from body 1 to body 2, any length; or "(1,0)", "0deg", "E"
 //! restitution = 1
 //! friction = 0.3            # optional: law = "poisson" | "newton" | "stronge",
 //!                           # tangential_restitution = 1 (Garwin)
 //! ```
-//! Values are numbers or strings with a unit; vectors are arrays or strings `"(a,b) unit"`;
+//! Values are numbers or strings with a unit; vectors are arrays or strings `"(a,b) unit"`, in
+//! the plane also `"5 m/s @ 30deg"` or a compass bearing `"5 m/s @ N30E"`;
 //! `omega` is a number in the plane and a vector in space, `rpm` a number of turns per minute;
 //! `mass = "wall"` or `"floor"` is immovable.
 
@@ -31,7 +32,7 @@ use crate::report::Section;
 use crate::rigid::impact::Problem;
 use crate::rigid::laws::Law;
 use crate::rigid::pose::{
-    BodyTyped, ContactTyped, Either, InertiaTyped, Input, LawsTyped, MassTyped,
+    BodyTyped, ContactTyped, Either, InertiaTyped, Input, LawsTyped, MassTyped, NormalTyped,
 };
 use crate::rigid::shape::ShapeTyped;
 use crate::rigid::units::{Measure, Typed, TypedVec};
@@ -70,7 +71,7 @@ struct BodyTable {
 #[serde(deny_unknown_fields)]
 struct ContactTable {
     point: Val,
-    normal: Spanned<Vec<Number>>,
+    normal: Val,
     restitution: Option<Spanned<Number>>,
     friction: Option<Spanned<Number>>,
     law: Option<Law>,
@@ -124,14 +125,30 @@ fn vector(v: &toml::Value, measure: Measure, what: &str) -> Result<TypedVec, Str
     }
 }
 
-/// A number or a vector.
+/// A number or a vector (`Either::parse` reads a string, as on the command line).
 fn either(v: &toml::Value, measure: Measure, what: &str) -> Result<Either, String> {
     match v {
         toml::Value::Array(_) => vector(v, measure, what).map(Either::Vector),
-        toml::Value::String(s) if s.trim_start().starts_with('(') => {
-            vector(v, measure, what).map(Either::Vector)
-        }
+        toml::Value::String(s) => Either::parse(s, measure, what).map_err(|e| e.to_string()),
         _ => one(v, measure, what).map(Either::One),
+    }
+}
+
+/// The contact normal: an array of numbers, or a string as `--normal` takes it (`"(1, 0)"`,
+/// `"30deg"`, `"N30E"`).
+fn normal(v: &toml::Value) -> Result<NormalTyped, String> {
+    let what = "[contact] normal";
+    match v {
+        toml::Value::String(s) => s.parse().map_err(|e| format!("{what}: {e}")),
+        toml::Value::Array(items) => items
+            .iter()
+            .map(number)
+            .collect::<Result<Vec<_>, _>>()
+            .map(NormalTyped::Components)
+            .map_err(|e| format!("{what}: {e}")),
+        _ => Err(format!(
+            "{what}: expected a direction, [a, b], \"(a,b)\" or an angle \"30deg\""
+        )),
     }
 }
 
@@ -257,7 +274,7 @@ impl RigidScene {
             bodies,
             contact: ContactTyped {
                 point,
-                normal: c.normal.get_ref().clone(),
+                normal: normal(c.normal.get_ref()).map_err(|m| err(at(&c.normal), m))?,
                 laws: LawsTyped {
                     restitution: one_number(&c.restitution)
                         .unwrap_or_else(|| Number::from_f64(1.0).expect("finite")),

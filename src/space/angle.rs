@@ -12,7 +12,7 @@ use std::fmt;
 use num_traits::Zero;
 
 use crate::values::number::{Number, NumberError};
-use crate::values::rational::{Q, int, to_f64};
+use crate::values::rational::{Q, from_f64, int, to_f64};
 
 /// An angle from +x, counterclockwise.
 #[derive(Clone, Debug, PartialEq)]
@@ -98,6 +98,44 @@ impl Angle {
         }
         let a = self.radians();
         (libm::cos(a), libm::sin(a), None)
+    }
+
+    /// The unit vector `(cos a, sin a)` as rationals, and whether it is rounded: exact for
+    /// multiples of 90 degrees, else the binary64 cosine and sine of [`Angle::unit`].
+    pub fn unit_rational(&self) -> (Vec<Q>, bool) {
+        match self.unit() {
+            (_, _, Some(u)) => (u.to_vec(), false),
+            (c, s, None) => (vec![from_f64(c), from_f64(s)], true),
+        }
+    }
+
+    /// `size` along the angle, `(size cos a, size sin a)`, and whether it is rounded: exact for
+    /// multiples of 90 degrees, else each component the binary64 nearest `size` times the
+    /// binary64 cosine or sine. The one reading of `speed @ angle` in every mode (the plane,
+    /// rigid bodies, scenes).
+    pub fn along(&self, size: &Q) -> (Vec<Q>, bool) {
+        let (unit, rounded) = self.unit_rational();
+        let parts = unit
+            .iter()
+            .map(|c| {
+                let q = size * c;
+                if rounded {
+                    from_f64(to_f64(&q).unwrap_or(0.0))
+                } else {
+                    q
+                }
+            })
+            .collect();
+        (parts, rounded)
+    }
+
+    /// A vector along the angle's line (any length) and whether it is rounded: rational for
+    /// multiples of 45 degrees ([`Angle::rational_direction`]), else the rounded unit vector.
+    pub fn direction(&self) -> (Vec<Q>, bool) {
+        match self.rational_direction() {
+            Some(d) => (d.to_vec(), false),
+            None => self.unit_rational(),
+        }
     }
 
     /// A rational vector along the angle's line (any length), for multiples of 45 degrees: a

@@ -108,8 +108,10 @@ pub enum PoseError {
     #[error("at least two bodies: --masses has {0}")]
     OneBody(usize),
     #[error(
-        "a wall in the plane or in space is not supported yet: give a mass (a wall is for \
-         `collide solve` and `collide track` on a line)"
+        "a wall, floor or ceiling in the plane is one smooth contact solved forward: give two \
+         masses ('1 kg,wall'), the ball's velocity and e, without --fin, --normal or '?' (the \
+         wall stands to the ball's right, a floor below it); among more bodies or in space a \
+         wall is not supported (on a line: `collide solve`, `collide track`)"
     )]
     Wall,
     #[error("mass {0} must be a number > 0")]
@@ -248,11 +250,10 @@ impl Input {
                     }
                     match (speed, angle) {
                         (Some(s), Given::Known(a)) => {
-                            let unit = unit_of(a, self.exact, "a velocity typed with an angle")?;
-                            inexact |= unit.1;
-                            Velocity::known(
-                                unit.0.iter().map(|c| round_if(&s * c, unit.1)).collect(),
-                            )
+                            unit_of(a, self.exact, "a velocity typed with an angle")?;
+                            let (v, rounded) = a.along(&s);
+                            inexact |= rounded;
+                            Velocity::known(v)
                         }
                         (None, Given::Known(a)) => {
                             let unit = unit_of(a, self.exact, "a velocity typed with an angle")?;
@@ -343,10 +344,10 @@ impl Input {
                 if dim != 2 {
                     return Err(PoseError::NormalSize(a.typed.clone(), 2, dim));
                 }
-                match a.rational_direction() {
-                    Some(d) => (d.to_vec(), false),
-                    None => unit_of(a, self.exact, "the line of impact")?,
+                if a.rational_direction().is_none() {
+                    unit_of(a, self.exact, "the line of impact")?;
                 }
+                a.direction()
             }
             NormalGiven::Geometry { radii, b } => {
                 if dim != 2 {
@@ -435,26 +436,15 @@ fn magnitudes(t: &Typed) -> Vec<Given<Quantity>> {
 
 /// A unit vector along `a` and whether it is rounded (refused in exact arithmetic).
 fn unit_of(a: &Angle, exact: bool, what: &str) -> Result<(Vec<Q>, bool), PoseError> {
-    let (c, s, rational) = a.unit();
-    match rational {
-        Some(u) => Ok((u.to_vec(), false)),
-        None if exact => Err(PoseError::Irrational {
+    let (unit, rounded) = a.unit_rational();
+    if rounded && exact {
+        return Err(PoseError::Irrational {
             what: what.to_string(),
             why: format!("cos and sin of {a} are irrational"),
             hint: "(4,3) m/s or --normal '(1,1)'",
-        }),
-        None => Ok((vec![from_f64(c), from_f64(s)], true)),
+        });
     }
-}
-
-/// `q` rounded to binary64 when it comes from rounded values (a component of a polar vector:
-/// the velocity is the binary64 nearest the product).
-fn round_if(q: Q, rounded: bool) -> Q {
-    if rounded {
-        from_f64(crate::values::rational::to_f64(&q).unwrap_or(0.0))
-    } else {
-        q
-    }
+    Ok((unit, rounded))
 }
 
 fn describe(t: &Typed) -> String {

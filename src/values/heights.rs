@@ -2,9 +2,11 @@
 //! through it, `slide 5 cm mu 0.62` the speed `sqrt(2 mu g d)` friction stops in that distance),
 //! and heights from speeds (`--show heights`, `h = v^2 / 2g`), exact.
 
+use super::case_units::Units;
+use super::measure::{Quantity, QuantityError, parse_plain};
 use super::number::{Number, NumberError};
 use super::rational::Q;
-use super::units::{Dimension, Quantity, QuantityError, Unit, Units, lookup, parse};
+use super::unit_table::{Dimension, Unit, lookup};
 
 /// The standard acceleration of gravity, 9.80665 m/s^2 (CGPM 1901), exact by definition.
 pub const STANDARD_GRAVITY: &str = "9.80665";
@@ -126,7 +128,7 @@ pub(crate) fn parse_height(t: &str) -> Option<Result<Quantity, QuantityError>> {
         ),
     };
     Some((|| {
-        let q = parse(rest, Dimension::Length)?;
+        let q = parse_plain(rest, Dimension::Length)?;
         let unit = q
             .unit
             .map_or_else(|| crate::values::rational::int(1), Unit::si);

@@ -378,6 +378,78 @@ mod pendulum {
             &["-m", "wall,1", "-v", "0,-1", "--length", "1"],
             &["--length", "wall"],
         );
+        // h = 5L/2 exactly: at the top the speed left, u^2 = 2 g (h - 2L) = g L, just holds
+        // the bob on its circle: it loops.
+        refused(
+            &ballistic("height 2.5 m,height 2.5 m"),
+            &["body 2 would rise 2.5 m", "5L/2 = 2.5 m", "loops"],
+        );
+    }
+
+    /// The ballistic pendulum of 10 g into 2 kg on a 1 m string with g = 10, the block rising
+    /// to the FIN height `fin`.
+    fn ballistic(fin: &str) -> Vec<&str> {
+        vec![
+            "-m",
+            "10 g,2 kg",
+            "-v",
+            "?,0",
+            "-e",
+            "0",
+            "--fin",
+            fin,
+            "--gravity",
+            "10",
+            "--length",
+            "1 m",
+        ]
+    }
+
+    #[test]
+    fn above_two_lengths_a_string_goes_slack_as_below() {
+        // Issue 41: 2L <= h < 5L/2 was refused ("even a rod would go over the top") though the
+        // string only goes slack, as for h = 1.9 L. A bob on L = 1 m rising h = 2.2 m (g = 10):
+        // the tension vanishes at c = cos(theta) = 2 (L - h) / 3L = -0.8, 1.8 m up, with
+        // u^2 = -g L c = 8; it flies free and rises u^2 sin^2 / 2g = 8 (0.36) / 20 = 0.144 m
+        // more: peak 1.944 m, below the 2 m top. A rod would go over the top: no angle.
+        let args = ballistic("height 2.2 m,height 2.2 m");
+        let p = pendulum(&args);
+        let s = &p["swings"][0];
+        assert_eq!(s["slack"], true, "{p}");
+        // (The FIN speed sqrt(2 g h) = sqrt(44) is irrational: h and the peak to REL.)
+        assert_close(f(&s["height"]), 2.2, REL, "h");
+        assert_close(f(&s["peak"]), 1.944, REL, "peak");
+        assert!(
+            s.get("angle_deg").is_none() && s.get("horizontal").is_none(),
+            "{p}"
+        );
+        let (code, text, _) = run(&args);
+        assert_eq!(code, 0);
+        assert!(
+            text.contains("peak, string slack") && text.contains("h > 2L: a rod would go over"),
+            "{text}"
+        );
+        // Exact, h = 2L itself: equal bodies stick, 2 -> FIN 1 m/s, h = 1/20 m with g = 10, on
+        // L = 1/40 m. A rod just reaches the top (180 degrees); the string goes slack at
+        // c = -2/3 and the bob peaks at 50/27 L (c = -2/3: L (5/3) + L (1/3)(5/9)) = 5/108 m.
+        let args = [
+            "-m",
+            "1,1",
+            "-v",
+            "2,0",
+            "-e",
+            "0",
+            "--gravity",
+            "10",
+            "--length",
+            "0.025",
+            "--exact",
+        ];
+        let s = pendulum(&args)["swings"][0].clone();
+        assert_eq!(
+            (&s["angle_deg"], &s["peak"]),
+            (&json!("180"), &json!("5/108"))
+        );
     }
 }
 

@@ -9,6 +9,7 @@ mod cli;
 mod contact;
 mod exact_and_accuracy;
 mod frames;
+mod grammar;
 mod homework;
 mod homework_review;
 mod hostile;

@@ -582,4 +582,36 @@ fn a_vector_that_prints_as_zero_has_no_angle() {
         .find(|l| l.trim_start().starts_with("v1'"))
         .unwrap();
     assert!(line.ends_with("@ -90°"), "{line}");
+
+#[test]
+fn a_smooth_wall_in_the_plane_reflects_the_normal_part_times_e() {
+    // Issue 41: "a wall in the plane is not supported yet", though solved with --friction 0.
+    // A 1 kg puck at (17.32, 10) m/s onto a smooth wall to its right (normal +x), e = 0.8:
+    // the normal part reverses times e, the tangent part is kept: v' = (-0.8 x 17.32, 10) =
+    // (-13.856, 10), the binary64 product of the typed binary64 values rounded once; lost
+    // 1/2 m (1 - e^2) v_n^2 = 0.18 x 17.32^2 = 53.996832 J.
+    let args = ["-m", "1 kg,wall", "-v", "(17.32,10) m/s,0", "-e", "0.8"];
+    let (code, j) = crate::common::solve_json(&args);
+    assert_eq!(code, 0, "{j}");
+    let v = &j["fin"][0]["v"];
+    assert_eq!(f(&v[0]), -(0.8 * 17.32));
+    assert_eq!(f(&v[1]), 10.0);
+    assert_ulps(f(&j["energy"]["lost"]), 53.996832, 4.0, "lost");
+    // The same answer as --friction 0 (one computation), apart from the friction it names.
+    let (_, mut rough) = crate::common::solve_json(&[&args[..], &["--friction", "0"]].concat());
+    rough.as_object_mut().unwrap().remove("friction");
+    assert_eq!(rough, j);
+    let text = stdout(&[&["solve"], &args[..]].concat());
+    assert!(text.contains("v1'  (-13.856, 10) m/s"), "{text}");
+    // A floor below the ball: (3, -4) m/s with e = 1/2 leaves at (3, 2).
+    let (_, j) =
+        crate::common::solve_json(&["-m", "0.06 kg,floor", "-v", "(3,-4) m/s,0", "-e", "0.5"]);
+    assert_eq!(j["fin"][0]["v"], serde_json::json!([3.0, 2.0]));
+    // Where it cannot be laid out, refused by name.
+    let (code, _, err) = run(&["solve", "-m", "1,wall,1", "-v", "(1,0),0,0"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("a wall, floor or ceiling in the plane"),
+        "{err}"
+    );
 }

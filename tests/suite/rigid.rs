@@ -736,3 +736,25 @@ fn the_picture_draws_bodies_contact_and_the_impulse_plane() {
     assert_eq!(j["contact"], "stick");
     let _ = Mode::Stick;
 }
+
+#[test]
+fn a_tiny_inertia_is_refused_not_printed_as_zero() {
+    // Issue 41: a 4 kg rod of 1e-308 has I = 4 (1e-308)^2 / 12 = 3.3e-617, below binary64: it
+    // printed `I_cm = 0` while the spin came from the true value. Refused in binary64 output,
+    // named; --exact prints it (1/3 of 1e-616).
+    let args = [
+        "-m",
+        "1,4",
+        "-v",
+        "3,0",
+        "--target",
+        "rod 1e-308",
+        "--hit-at",
+        "1e-309",
+    ];
+    common::solve_refused(&args, &["body 2", "I_cm = 3.33333e-617", "--exact"]);
+    let (code, j) = solve(&[&args[..], &["--exact"]].concat());
+    assert_eq!(code, 0);
+    let third = format!("1/3{}", "0".repeat(616));
+    assert_eq!(j["bodies"][1]["inertia"], serde_json::json!(third), "{j}");
+}
