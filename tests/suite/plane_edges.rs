@@ -582,6 +582,7 @@ fn a_vector_that_prints_as_zero_has_no_angle() {
         .find(|l| l.trim_start().starts_with("v1'"))
         .unwrap();
     assert!(line.ends_with("@ -90°"), "{line}");
+}
 
 #[test]
 fn a_smooth_wall_in_the_plane_reflects_the_normal_part_times_e() {
