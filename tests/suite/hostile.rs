@@ -1068,8 +1068,11 @@ fn accuracy_keeps_to_its_budget_or_says_what_fits() {
         "--cases 100000 would spend about",
     );
     assert!(f.stderr.contains("or fewer"), "{}", f.stderr);
-    // The refusal comes before the cases are drawn: a few MB, not hundreds.
-    assert!(f.max_rss_kb < 50 * 1024, "{} kB", f.max_rss_kb);
+    // The refusal comes before the cases are drawn: a few MB (6.9 MB measured alone), not
+    // hundreds. On Linux a child's ru_maxrss keeps the resident pages of the test process that
+    // spawned it (the peak carries across exec), which grows with the suite: 57 MB was seen with
+    // this stop's larger suite, so the bound is the 100 MB `resources::` uses for every child.
+    assert!(f.max_rss_kb < 100 * 1024, "{} kB", f.max_rss_kb);
     // A small report within a small budget runs.
     let f = bounded(&[
         "accuracy",
