@@ -1072,7 +1072,11 @@ fn accuracy_keeps_to_its_budget_or_says_what_fits() {
     // hundreds. On Linux a child's ru_maxrss keeps the resident pages of the test process that
     // spawned it (the peak carries across exec), which grows with the suite: 57 MB was seen with
     // this stop's larger suite, so the bound is the 100 MB `resources::` uses for every child.
-    assert!(f.max_rss_kb < 100 * 1024, "{} kB", f.max_rss_kb);
+    assert!(
+        f.max_rss_kb < crate::resources::MAX_RSS_KB,
+        "{} kB",
+        f.max_rss_kb
+    );
     // A small report within a small budget runs.
     let f = bounded(&[
         "accuracy",
