@@ -10,7 +10,8 @@ use pyo3::types::PyDict;
 use rayon::prelude::*;
 
 use collide::table::columns::{Column, by_names};
-use collide::table::engine::{CHUNK_ROWS, solve_row};
+use collide::table::engine::solve_row;
+use collide::table::pipeline::CHUNK_ROWS;
 use collide::table::row::RowCase;
 
 use crate::refused;

@@ -8,8 +8,7 @@ use pyo3::exceptions::{PyAttributeError, PyKeyError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString};
 
-use collide::view::plane::PlaneInput;
-use collide::view::two_body::CaseInput;
+use collide::view::input::{CaseInput, PlaneInput};
 
 use crate::refused;
 use crate::values::{Velocity, pair, scalar, velocity};
