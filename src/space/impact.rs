@@ -161,6 +161,15 @@ pub fn angles(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> ([f64; 2], 
     fast_angles(m, v, n, e).unwrap_or_else(|| exact_angles(m, v, n, e))
 }
 
+/// Whether every input is 0 or of a moderate size (1e-60 to 1e60): then every product of the
+/// fast paths stays far inside binary64 (and so do the vectors as `angle_between` scales
+/// them), so no rounding meets a subnormal or an overflow.
+#[inline(always)]
+fn moderate(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> bool {
+    let ok = |x: f64| x == 0.0 || (x.abs() > 1e-60 && x.abs() < 1e60);
+    m.iter().chain(v.iter().flatten()).chain(&n).all(|x| ok(*x)) && ok(e)
+}
+
 /// `angles` in double-double alone: `None` where it cannot decide a rounding.
 #[inline(always)]
 fn fast_angles(
@@ -169,16 +178,7 @@ fn fast_angles(
     n: [f64; 2],
     e: f64,
 ) -> Option<([f64; 2], Option<f64>)> {
-    // Moderate sizes only: every product below stays far inside binary64 (and so do the
-    // vectors as `angle_between` scales them), so no rounding meets a subnormal.
-    let moderate = |x: f64| x == 0.0 || (x.abs() > 1e-60 && x.abs() < 1e60);
-    if !(m
-        .iter()
-        .chain(v.iter().flatten())
-        .chain(&n)
-        .all(|x| moderate(*x))
-        && moderate(e))
-    {
+    if !moderate(m, v, n, e) {
         return None;
     }
     let (j1, j2) = coefficients(m, v, n, e)?;
@@ -253,14 +253,7 @@ pub fn energies(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> Energies 
 /// `energies` in double-double alone: `None` where it cannot decide a rounding.
 #[inline(always)]
 fn fast_energies(m: [f64; 2], v: [[f64; 2]; 2], n: [f64; 2], e: f64) -> Option<Energies> {
-    let moderate = |x: f64| x == 0.0 || (x.abs() > 1e-60 && x.abs() < 1e60);
-    if !(m
-        .iter()
-        .chain(v.iter().flatten())
-        .chain(&n)
-        .all(|x| moderate(*x))
-        && moderate(e))
-    {
+    if !moderate(m, v, n, e) {
         return None;
     }
     let (_, j2) = coefficients(m, v, n, e)?;

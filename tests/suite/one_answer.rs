@@ -138,11 +138,11 @@ fn a_speed_solved_negative_along_its_given_direction_is_refused() {
         assert!(err.contains("v1' solves to"), "{err}");
         assert!(err.contains(at), "{err}");
         assert!(err.contains("negative"), "{err}");
-        // The same physics typed as components is refused too (exit 2), as homework.md says.
     }
-    // The direction it really leaves in, given as that: a collision (v1' at 102.098°) or a
-    // refusal for e < 0, never a FIN printed beside a negative e.
-    let (code, out, _) = run(&[
+    // The direction it really leaves in, given as that (102.098°): the speeds are positive, and
+    // the restitution the data imply, e = -7.21, is refused by name (exit 2), never printed
+    // beside a FIN.
+    let (code, out, err) = run(&[
         "solve",
         "-m",
         "13,18",
@@ -151,10 +151,8 @@ fn a_speed_solved_negative_along_its_given_direction_is_refused() {
         "--fin",
         "? @ 102.098deg,? @ -45.323deg",
     ]);
-    assert!(
-        code == 2 || !out.contains("negative: no collision"),
-        "{out}"
-    );
+    assert_eq!((code, out.as_str()), (2, ""), "{err}");
+    assert!(err.contains("e = -7.21") && err.contains("< 0"), "{err}");
 }
 
 #[test]
