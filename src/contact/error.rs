@@ -80,6 +80,17 @@ pub enum ContactError {
     PointBody(usize),
     #[error("--dt {} must be a finite number > 0", num(*.0))]
     Dt(f64),
+    #[error(
+        "--dt {} is too small: the shortest contact (lasting about {}) would take {} steps, \
+         more than --max-steps {max_steps}; give --dt {} or more, or raise --max-steps",
+        num(*.dt), num(*.t), step_count(.t / .dt), num(.t / *.max_steps as f64)
+    )]
+    DtTooSmall {
+        dt: f64,
+        /// The time a run must step through: the shortest contact, or --until when sooner.
+        t: f64,
+        max_steps: u64,
+    },
     #[error("--tol {} must be a number in [1e-14, 0.1]", num(*.0))]
     Tol(f64),
     #[error(
@@ -147,5 +158,14 @@ fn three(x: f64) -> String {
         format!("{x:.3}")
     } else {
         format!("{x:.3e}")
+    }
+}
+
+/// A number of steps, to 4 digits; past binary64's range, "more than 1.797e308".
+fn step_count(steps: f64) -> String {
+    if steps.is_finite() {
+        format!("{steps:.3e}")
+    } else {
+        format!("more than {:.3e}", f64::MAX)
     }
 }

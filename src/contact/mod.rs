@@ -206,6 +206,7 @@ fn integrate(
         peaks: vec![0.0; slots.len()],
         energy_cap: 2.0 * e_rel_start.max(f64::MIN_POSITIVE),
         trace: settings.trace.then(Vec::new),
+        origin: 0.0,
     };
     let fail = |failure: Failure| ContactError::Failed {
         method: method.name(),
@@ -280,15 +281,29 @@ fn integrate(
         let sys = system(&active, &x);
         let mut y0 = vec![0.0; 2 * n];
         y0[n..].copy_from_slice(&v);
+        // The stretch steps in its own time, from 0: steps stay exact however late it starts
+        // (at t = 6e15 a step of 0.01 would be lost in the time's rounding).
+        ledger.origin = t;
         let end = match (method, dt, tolerances) {
             (Method::Fixed(f), Some(h), _) => {
-                run::fixed_stretch((f, h), &sys, (t, &y0), until, &mut ledger)
+                run::fixed_stretch((f, h), &sys, (0.0, &y0), until - t, &mut ledger)
             }
             (Method::Adaptive(a), _, Some(tol)) => {
-                adaptive::stretch((a, tol), &sys, (t, &y0), until, &mut ledger)
+                adaptive::stretch((a, tol), &sys, (0.0, &y0), until - t, &mut ledger)
             }
             _ => unreachable!("steps_for gives a step to fixed methods and a tolerance otherwise"),
         }
+        .map(|end| run::End {
+            // A stretch that ran to its stop ends at --until itself (`t + (until - t)` may
+            // round beside it).
+            t: if end.event.is_none() && until.is_finite() {
+                until
+            } else {
+                t + end.t
+            },
+            ..end
+        })
+        .map_err(|failure| failure.shifted(t))
         .map_err(|failure| match failure {
             Failure::Through { t, slot, y } => {
                 // Positions in the lab frame: the stretch's start moved by y's displacements,

@@ -29,6 +29,12 @@ pub enum Failure {
         "the energy grew to {ratio:.3e} times its start at t = {t} (the method is unstable at this step size)"
     )]
     Blowup { t: f64, ratio: f64 },
+    /// A step that does not move the time on: `t + h` rounds to `t`.
+    #[error(
+        "the step {h:e} no longer moves the time on at t = {t:e} (below its rounding); give a \
+         larger --dt"
+    )]
+    Stalled { t: f64, h: f64 },
     #[error("Newton's iteration did not converge at t = {t}")]
     Newton { t: f64 },
     #[error("the solver failed at t = {t}: {why}")]
@@ -41,6 +47,28 @@ pub enum Failure {
     /// state `y`: a body went through another or through a wall.
     #[error("a body passed through another or a wall at t = {t}")]
     Through { t: f64, slot: usize, y: Vec<f64> },
+}
+
+impl Failure {
+    /// The failure with its time moved by `origin` (a stretch runs in its own time, from 0).
+    pub fn shifted(self, origin: f64) -> Failure {
+        match self {
+            Failure::NotFinite { t } => Failure::NotFinite { t: t + origin },
+            Failure::Blowup { t, ratio } => Failure::Blowup {
+                t: t + origin,
+                ratio,
+            },
+            Failure::Stalled { t, h } => Failure::Stalled { t: t + origin, h },
+            Failure::Newton { t } => Failure::Newton { t: t + origin },
+            Failure::Solver { t, why } => Failure::Solver { t: t + origin, why },
+            Failure::Steps(n) => Failure::Steps(n),
+            Failure::Through { t, slot, y } => Failure::Through {
+                t: t + origin,
+                slot,
+                y,
+            },
+        }
+    }
 }
 
 /// Refuses a state in which any slot overlaps as deep as its reach (the centres met: a body
@@ -67,6 +95,9 @@ pub struct Ledger {
     pub energy_cap: f64,
     /// `Some` to record `(t, slot, overlap, force)` of the active contacts after every step.
     pub trace: Option<Vec<Sample>>,
+    /// The run's time at the start of the stretch, which steps in its own time from 0: the
+    /// trace records `origin + t`.
+    pub origin: f64,
 }
 
 /// One point of a contact's history.
@@ -96,7 +127,7 @@ impl Ledger {
         for s in (0..sys.slots.len()).filter(|&s| sys.active[s]) {
             let (d, rate) = sys.overlap(s, y);
             trace.push(Sample {
-                t,
+                t: self.origin + t,
                 slot: s,
                 overlap: d,
                 force: sys.slots[s].law.force(d, rate),
@@ -296,6 +327,11 @@ pub fn fixed_stretch(
                 } else {
                     (h, t + h)
                 };
+                // A step lost in the time's rounding would repeat for ever (each one ending the
+                // stretch at the same instant), so it is an error.
+                if next <= t {
+                    return Err(Failure::Stalled { t, h });
+                }
                 method
                     .step(sys, &y_prev, step, &mut y, &mut counts)
                     .map_err(|_| Failure::Newton { t })?;
@@ -346,6 +382,33 @@ mod tests {
             );
             assert!(calls <= 12, "{calls} evaluations");
         }
+    }
+
+    /// A fixed step lost in the time's rounding (`1e20 + 1e-3 = 1e20`) stops the stretch with
+    /// `Stalled` at once (it used to repeat until the step budget was spent); one that moves
+    /// the time on from the same state runs to the stop time in its count of steps.
+    #[test]
+    fn a_step_below_the_time_rounding_stalls() {
+        let sys = System {
+            m: vec![1.0, 2.0],
+            slots: Vec::new(),
+            active: Vec::new(),
+            d0: Vec::new(),
+        };
+        let y0 = [0.0, 5.0, 3.0, -1.0];
+        let ledger = || Ledger {
+            steps_left: 1000,
+            energy_cap: f64::INFINITY,
+            ..Ledger::default()
+        };
+        let mut l = ledger();
+        let end = fixed_stretch((Fixed::Rk4, 1e-3), &sys, (1e20, &y0), 2e20, &mut l);
+        assert!(matches!(end, Err(Failure::Stalled { t, h }) if t == 1e20 && h == 1e-3));
+        assert_eq!(l.counts.steps, 0);
+        let mut l = ledger();
+        let end = fixed_stretch((Fixed::Rk4, 0.25), &sys, (1.0, &y0), 2.0, &mut l);
+        assert!(matches!(end, Ok(End { t: 2.0, .. })));
+        assert_eq!(l.counts.steps, 4);
     }
 
     /// A step that gives a time or a state not finite stops the stretch with `NotFinite` at

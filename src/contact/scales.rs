@@ -151,6 +151,16 @@ pub(super) fn steps_for(
             if !(dt > 0.0 && dt.is_finite()) {
                 return Err(ContactError::Dt(dt));
             }
+            // A step that cannot get through the shortest contact within the step budget is
+            // refused before the run (a run would spend the whole budget and end in error).
+            let t = scales.t_min.min(settings.until.unwrap_or(f64::INFINITY));
+            if t / dt > settings.max_steps as f64 {
+                return Err(ContactError::DtTooSmall {
+                    dt,
+                    t,
+                    max_steps: settings.max_steps,
+                });
+            }
             Ok((Some(dt), None))
         }
         Method::Adaptive(_) => {

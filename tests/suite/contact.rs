@@ -438,9 +438,25 @@ fn bad_input_is_refused_with_exit_2() {
     );
     refused(&with(&["--methods", "rk4"]), "--work-precision");
     refused(&args("-m 1,1 -x 0,0.5 --sizes 1,1 -v 1,0"), "overlap");
+    // A step too small for the budget is refused before the run: the contact lasts pi/sqrt(2)
+    // = 2.2214 (k = 1, reduced mass 1/2), so --dt 1e-9 needs 2.2e9 steps; the least step within
+    // 1000 steps is 2.2214e-3. At 5e-324 the count is past binary64's range (the run used to
+    // repeat steps lost in the time's rounding and grew to gigabytes).
+    for needle in [
+        "--dt 1e-9 is too small",
+        "2.22144146907918)",
+        "2.221e9 steps",
+        "--max-steps 1000;",
+        "0.00222144146907918 or more",
+    ] {
+        refused(
+            &with(&args("--method rk4 --dt 1e-9 --max-steps 1000")),
+            needle,
+        );
+    }
     refused(
-        &with(&args("--method rk4 --dt 1e-9 --max-steps 1000")),
-        "more than 1000 steps",
+        &with(&args("--method rk4 --dt 5e-324")),
+        "would take more than 1.798e308 steps",
     );
 }
 
@@ -1730,10 +1746,12 @@ fn every_runtime_failure_that_input_can_cause_is_refused() {
         "-m 1 -x 0 --sizes 1 -v 1 --right-wall 0.5 --wall-stiffness 1e6 --method verlet --dt 1e-4",
         "verlet gained energy: 0.50000170",
     );
-    // The step budget.
+    // The step budget: within it for one contact (64 steps of the default rk4 step), over it
+    // for the two of three bodies in a row (100 steps). (A step too small for one contact
+    // within the budget is refused before the run: bad_input_is_refused_with_exit_2.)
     fails_at_run_time(
-        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --method rk4 --dt 1e-6 --max-steps 10",
-        "rk4 failed: more than 10 steps",
+        "-m 1,1,1 -x 0,1,2 --sizes 1,1,1 -v 1,0,0 --method rk4 --max-steps 80",
+        "rk4 failed: more than 80 steps",
     );
 }
 

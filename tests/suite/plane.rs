@@ -161,6 +161,46 @@ fn n_bodies_on_a_line_stick() {
     assert_eq!(j["dim"], 1);
 }
 
+/// Many bodies that stick, in the plane: 10,000 bodies (the most one case takes), masses 1 and 3
+/// in turn, body i at (i, 1) for even i and (i, -1) for odd i. Each pair of bodies 2k, 2k + 1
+/// brings a momentum of (2k + 3 (2k + 1), 1 - 3) = (8k + 3, -2); summed over k from 0 to 4999
+/// that is P = (4 * 4999 * 5000 + 15000, -10000) = (99995000, -10000), of a total mass of
+/// 20000, so V = (19999/4, -1/2) for every body. The elimination took O(N^3) (400 bodies ran
+/// 50 s); the closed form is O(N). One more body is refused by name.
+#[test]
+fn ten_thousand_bodies_stick_and_one_more_is_refused() {
+    let n = 10_000;
+    let masses: Vec<&str> = (0..n).map(|i| if i % 2 == 0 { "1" } else { "3" }).collect();
+    let v: Vec<String> = (0..n)
+        .map(|i| format!("({i},{})", if i % 2 == 0 { 1 } else { -1 }))
+        .collect();
+    let (masses, v) = (masses.join(","), v.join(","));
+    let j = json(&["-m", &masses, "-v", &v, "-e", "0", "--exact"]);
+    let fin = j["fin"].as_array().unwrap();
+    assert_eq!(fin.len(), n);
+    for f in fin {
+        assert_eq!(*f, serde_json::json!(["19999/4", "-1/2"]));
+    }
+    let out = collide()
+        .args([
+            "solve",
+            "-m",
+            &format!("{masses},1"),
+            "-v",
+            &format!("{v},(0,0)"),
+        ])
+        .args(["-e", "0"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("10001 bodies: collide solves at most 10000"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+}
+
 #[test]
 fn spheres_in_space() {
     // m = 1, 3; v1 = (1, 2, 2), v2 = 0; n = (0, 0, 1), e = 1/2: only z changes;
