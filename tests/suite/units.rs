@@ -18,7 +18,7 @@ fn suggestion(typed: &str, d: Dimension) -> Option<&'static str> {
 fn a_mistyped_unit_gets_the_nearest_name() {
     // Edit distance (an insertion, deletion, substitution or swap of neighbours counts 1),
     // at most 2, ties to the first name in byte order; the nearest three, by hand:
-    //   mhp: mph 1 (a swap), kph 2, m/s 2     kks: km/s 2, kn 2, kph 2
+    //   mhp: mph 1 (a swap), kph 2, m/s 2     kks: kts 1, km/s 2, kn 2
     //   h: kn 2, kph 2, mph 2                 kk: kn 1, kph 2, km/h 3
     //   mk/: km/h 2 (a swap, an insertion), km/s 2, kn 2
     //   mk: kn 2, m/s 2, mph 2                knott: knot 1, knots 1
@@ -26,7 +26,7 @@ fn a_mistyped_unit_gets_the_nearest_name() {
     //   kgx: kg 1                             slgu: slug 1 (a swap)
     for (typed, near) in [
         ("mhp", Some("mph")),
-        ("kks", Some("km/s")),
+        ("kks", Some("kts")),
         ("h", Some("kn")),
         ("kk", Some("kn")),
         ("mk/", Some("km/h")),
@@ -40,6 +40,39 @@ fn a_mistyped_unit_gets_the_nearest_name() {
     assert_eq!(suggestion("kgxyz", Dimension::Mass), None);
     assert_eq!(suggestion("kgx", Dimension::Mass), Some("kg"));
     assert_eq!(suggestion("slgu", Dimension::Mass), Some("slug"));
+}
+
+#[test]
+fn the_spellings_sources_use_are_units_with_their_exact_factors() {
+    // Issue 45 §5: each spelling against its exact size in m/s, by the definitions
+    // (1 ft = 0.3048 m, 1 mi = 1609.344 m, 1 nautical mile = 1852 m, 1 h = 3600 s):
+    //   fps = ft/sec = 0.3048 = 381/1250; m/sec = 1; km/hr = kph = 1000/3600 = 5/18;
+    //   km/sec = 1000; mi/h = mi/hr = 1609.344/3600 = 0.44704 = 1397/3125;
+    //   kts = 1852/3600 = 463/900; cm/sec = 1/100.
+    use collide::values::rational::{int, ratio};
+    for (name, si, printed) in [
+        ("fps", ratio(381, 1250), "ft/s"),
+        ("ft/sec", ratio(381, 1250), "ft/s"),
+        ("m/sec", int(1), "m/s"),
+        ("kph", ratio(5, 18), "km/h"),
+        ("km/hr", ratio(5, 18), "km/h"),
+        ("km/sec", int(1000), "km/s"),
+        ("mi/h", ratio(1397, 3125), "mph"),
+        ("mi/hr", ratio(1397, 3125), "mph"),
+        ("kts", ratio(463, 900), "knot"),
+        ("cm/sec", ratio(1, 100), "cm/s"),
+    ] {
+        let unit = lookup(name, Dimension::Velocity).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(unit.si(), si, "{name}");
+        assert_eq!(unit.name(), printed, "{name}");
+    }
+    // Typed on the command line: a 2 kg ball at 15 fps (= 15 ft/s) stopping a 1 kg one at rest,
+    // elastic: v1' = (2 - 1)/3 * 15 = 5 ft/s, v2' = 2*2/3 * 15 = 20 ft/s, printed in ft/s.
+    let out = common::stdout(&["solve", "-m", "2 kg,1 kg", "-v", "15 fps,0", "--exact"]);
+    assert!(
+        out.starts_with("FIN: v1' = 5 ft/s, v2' = 20 ft/s\n"),
+        "{out}"
+    );
 }
 
 #[test]
