@@ -256,3 +256,70 @@ fn converting_needs_units_on_both_sides() {
         assert!(err.contains(want), "{args:?}: {err}");
     }
 }
+
+/// Issue 45 §5: a value may be a sum of like quantities (a rider and a bike as one body),
+/// with or without spaces, in mixed units, exactly; `1e+3` keeps its meaning; a bad part is
+/// named.
+#[test]
+fn sums_of_like_quantities_are_one_value() {
+    use collide::values::rational::{int, ratio};
+    use collide::values::units::parse;
+    // A 60 kg rider on a 10 kg bike at 5 m/s sticks to a 5 kg cart at rest: the same case as
+    // 70 kg, bit for bit, however the sum is written.
+    let json = |m: &str, v: &str| {
+        common::stdout(&["solve", "-m", m, "-v", v, "-e", "0", "--format", "json"])
+    };
+    let want = json("70 kg,5 kg", "5 m/s,0");
+    for m in [
+        "60 kg+10 kg,5 kg",
+        "60 kg + 10 kg,5 kg",
+        "60kg+10kg,5kg",
+        "50 kg + 10 kg + 10 kg,5 kg",
+    ] {
+        assert_eq!(json(m, "5 m/s,0"), want, "{m}");
+    }
+    // Velocities too: 3 m/s + 2 m/s is 5 m/s.
+    assert_eq!(json("70 kg,5 kg", "3 m/s + 2 m/s,0"), want);
+    // Exact: 0.1 + 0.2 is 3/10 (binary64 would give 0.30000000000000004), and mixed units are
+    // converted exactly to the first part's: 1 kg + 500 g = 3/2 kg; 1 m + 50 cm = 3/2 m.
+    let exact = |text: &str, d: Dimension| {
+        let q = parse(text, d).unwrap_or_else(|e| panic!("{text}: {e}"));
+        (q.number.exact(), q.unit.map(|u| u.name()))
+    };
+    assert_eq!(
+        exact("0.1 kg + 0.2 kg", Dimension::Mass),
+        (ratio(3, 10), Some("kg"))
+    );
+    assert_eq!(exact("0.1+0.2", Dimension::Mass), (ratio(3, 10), None));
+    assert_eq!(
+        exact("1 kg + 500 g", Dimension::Mass),
+        (ratio(3, 2), Some("kg"))
+    );
+    assert_eq!(
+        exact("1 m + 50 cm", Dimension::Length),
+        (ratio(3, 2), Some("m"))
+    );
+    // An exponent's + is an exponent: 1e+3 g + 1 kg = 1000 g + 1000 g = 2000 g; +4 is 4.
+    assert_eq!(
+        exact("1e+3 g + 1 kg", Dimension::Mass),
+        (int(2000), Some("g"))
+    );
+    assert_eq!(exact("1e+3", Dimension::Mass), (int(1000), None));
+    assert_eq!(exact("+4", Dimension::Mass), (int(4), None));
+    // A bad part is named; units on every part or none; a sum has no heights.
+    for (text, needles) in [
+        ("60 kg + 10 kgg", &["'10 kgg'", "did you mean 'kg'"][..]),
+        ("60 kg + abc", &["'abc'"][..]),
+        ("60 kg + 10", &["every part of a sum or to none"][..]),
+        ("60 kg +", &["its part ''"][..]),
+        ("60 kg + 2 m/s", &["'2 m/s'", "velocity"][..]),
+    ] {
+        let e = parse(text, Dimension::Mass).unwrap_err().to_string();
+        for n in needles {
+            assert!(e.contains(n), "{text}: {n} in {e}");
+        }
+    }
+    let (code, _, err) = common::run(&["solve", "-m", "60 kg+abc,5 kg", "-v", "5 m/s,0"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("'abc'"), "{err}");
+}
