@@ -533,11 +533,13 @@ fn impulse_on_ball(
 
 /// A solved value as a `Number` (`quantity::number_of`), its error naming the variable.
 fn solved_number(var: Var, q: &Q) -> Result<Number, ProblemError> {
-    crate::values::quantity::number_of(q).map_err(|error| ProblemError::Solved {
-        var,
-        text: crate::values::quantity::fraction(q),
-        error,
-    })
+    crate::values::quantity::number_of(q)
+        .map(Number::answer)
+        .map_err(|error| ProblemError::Solved {
+            var,
+            text: crate::values::quantity::fraction(q),
+            error,
+        })
 }
 
 /// The case of resolved values, none of them unknown.

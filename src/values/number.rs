@@ -60,6 +60,9 @@ pub struct Number {
     text: Option<Box<str>>,
     /// Solved rather than typed (`Number::solved`): headers show its decimal, not its fraction.
     derived: bool,
+    /// A problem's unknown, solved (`Number::answer`), not a unit conversion: `--exact`
+    /// headers show its fraction, as `Solved:` does.
+    answer: bool,
 }
 
 /// Equal value and text (whether typed or solved does not matter).
@@ -254,6 +257,7 @@ impl Number {
                 value,
                 text: None,
                 derived: false,
+                answer: false,
             })
         } else {
             Err(NumberError::Syntax(format!("{value}")))
@@ -282,12 +286,26 @@ impl Number {
         self.derived
     }
 
+    /// The same value marked as the answer to a problem's unknown.
+    pub fn answer(self) -> Number {
+        Number {
+            answer: true,
+            ..self
+        }
+    }
+
+    /// Whether this value answers a problem's unknown (`Number::answer`).
+    pub fn is_answer(&self) -> bool {
+        self.answer
+    }
+
     /// The same binary64 value without its typed text (so a clone allocates nothing).
     pub fn untyped(&self) -> Number {
         Number {
             value: self.value,
             text: None,
             derived: false,
+            answer: false,
         }
     }
 
@@ -368,6 +386,7 @@ impl Number {
             value,
             text: Some(text.into()),
             derived: !typed,
+            answer: false,
         })
     }
 }
