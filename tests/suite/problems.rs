@@ -408,7 +408,20 @@ fn walls_forward_moving_and_refused() {
     assert!(out.contains("do not meet"), "{out}");
     for (args, needle) in [
         (vec!["-m", "wall,wall", "-v", "0,1"], "two walls"),
-        (vec!["-m", "wall,?", "-v", "0,-1", "--fin", "0,1"], "mass"),
+        // An impulse needs the ball's mass (a rebound in speeds does not: below).
+        (
+            vec![
+                "-m",
+                "wall,?",
+                "-v",
+                "0,-1",
+                "--fin",
+                "0,?",
+                "--impulse",
+                "2",
+            ],
+            "an impulse needs it",
+        ),
         (
             vec!["-m", "wall,1", "-v", "0,-1", "--frame", "com"],
             "--frame",
@@ -845,6 +858,47 @@ fn sig_keeps_trailing_zeros() {
     // JSON carries numbers whatever --sig says.
     let (_, j) = json("-m 1,1 -v 0.3,0 -e 0 --sig 3");
     assert_eq!(j["v_com"], serde_json::json!(0.15));
+}
+
+/// Issue 45 §5: a ball against a wall asked only in speeds and e needs no mass, and nothing
+/// that needs one is printed.
+#[test]
+fn a_wall_rebound_in_speeds_needs_no_mass() {
+    // The ball (body 2) comes at -3 toward the wall on the left, at rest, and leaves at 2:
+    // f - w = -e (v - w) gives 2 = 3 e, e = 2/3, whatever the mass. The wall on the right and
+    // the ball at 3 leaving at -2: the same. The changes that need no mass: dv = f - v = 5
+    // (or -5), lost / crunch = 1 - e^2 = 5/9 and kept / crunch = e^2 = 4/9.
+    for (m, v, fin, dv) in [
+        ("wall,?", "0,-3", "0,2", "5"),
+        ("?,wall", "3,0", "-2,0", "-5"),
+    ] {
+        let (code, j) = json(&format!(
+            "-m {m} -v {v} --fin {fin} --exact --show vectors,momentum,energy,changes"
+        ));
+        assert_eq!(code, 0, "{m}: {j}");
+        assert_eq!(j["solved"], serde_json::json!({"e": "2/3"}), "{m}");
+        assert_eq!(j["restitution"], "2/3", "{m}");
+        for key in ["mass", "momentum", "energy"] {
+            assert!(j.get(key).is_none(), "{m}: {key} in {j}");
+        }
+        let changes = &j["changes"];
+        assert!(changes.get("impulse").is_none(), "{m}: {j}");
+        assert_eq!(
+            (
+                &changes["dv"],
+                &changes["lost_fraction"],
+                &changes["kept_fraction"]
+            ),
+            (&Value::from(dv), &Value::from("5/9"), &Value::from("4/9")),
+            "{m}"
+        );
+    }
+    let (code, out, _) = run(&["-m", "wall,?", "-v", "0,-3", "--fin", "0,2", "--exact"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("Solved: e = 2/3"), "{out}");
+    assert!(out.contains("M = (wall, ?)"), "{out}");
+    assert!(out.contains("The ball's mass is not given"), "{out}");
+    assert!(!out.contains("KE_IN"), "{out}");
 }
 
 #[test]
