@@ -395,7 +395,8 @@ pub fn run_table<K: Kind>(
         skip_bad: args.skip_bad,
         header: args.header,
     };
-    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(&table)?);
+    let writer = RowWriter::runs(names, runs::error_at(&cells), format_of(&table)?)
+        .with_integers(runs::counts(kind, &cells));
     let (mut out, writer) = open(&table, writer)?;
     let shard = args.shard.unwrap_or(Shard::WHOLE);
     let rows = shard.rows(grid.total);

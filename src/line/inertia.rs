@@ -163,16 +163,21 @@ impl InertiaTensor {
 
     /// `diag(4, 1)` or `[[4, 0.5], [0.5, 1]]`, as typed.
     pub fn describe(&self) -> String {
+        self.describe_with(Number::brief)
+    }
+
+    /// `describe` with each entry shown by `show` (`--exact`: a solved mass as its fraction).
+    pub fn describe_with(&self, show: impl Fn(&Number) -> String) -> String {
         let e = &self.entries;
         if self.is_diagonal() {
-            format!("diag({}, {})", e[0][0].brief(), e[1][1].brief())
+            format!("diag({}, {})", show(&e[0][0]), show(&e[1][1]))
         } else {
             format!(
                 "[[{}, {}], [{}, {}]]",
-                e[0][0].brief(),
-                e[0][1].brief(),
-                e[1][0].brief(),
-                e[1][1].brief()
+                show(&e[0][0]),
+                show(&e[0][1]),
+                show(&e[1][0]),
+                show(&e[1][1])
             )
         }
     }

@@ -123,7 +123,7 @@ pub enum ProblemError {
     TwoWalls,
     #[error("a wall needs --masses M1,wall (not --inertia)")]
     WallNeedsMasses,
-    #[error("the ball's mass against a wall: give it (a wall problem does not fix it)")]
+    #[error("the ball's mass against a wall: an impulse needs it (give it with -m)")]
     WallBallMass,
     #[error("gravity {0}: expected a number > 0 in m/s^2 (9.80665 standard, 9.8 or 9.81)")]
     Gravity(String),
@@ -415,8 +415,6 @@ impl Problem {
         if m[ball].is_wall() {
             return Err(ProblemError::TwoWalls);
         }
-        let mass = m[ball].known().cloned().ok_or(ProblemError::WallBallMass)?;
-        let mass = Mass::new(mass)?;
         let q = |x: Option<&Given<Number>>| x.and_then(Given::known).map(Number::exact);
         // `--impulse J` is the impulse on body 2: on the ball it is J when the ball is body 2,
         // -J when it is body 1 (the wall, body 2, takes J).
@@ -425,6 +423,13 @@ impl Problem {
             None => None,
         };
         let j_ball = impulse.map(|j| if ball == 1 { j } else { -j });
+        // The ball's mass; `?` only when nothing needs it: a rebound asked in speeds and e
+        // does not depend on it (issue 45 §5), an impulse does.
+        let mass = match &m[ball] {
+            Given::Known(n) => Some(Mass::new(n.clone())?),
+            _ if j_ball.is_some() => return Err(ProblemError::WallBallMass),
+            _ => None,
+        };
         let e = match &self.restitution {
             Some(r) => r.known().map(|r| r.number().exact()),
             None if self.fin.is_some() || j_ball.is_some() => None,
@@ -432,12 +437,15 @@ impl Problem {
         };
         let given_fin = self.fin.is_some();
         let fin = |i: usize| if given_fin { q(v.get(2 + i)) } else { None };
-        let (ball_v, ball_f, impulse_check) = impulse_on_ball(
-            q(v.get(ball)),
-            fin(ball),
-            j_ball.as_ref(),
-            &mass.number().exact(),
-        );
+        let (ball_v, ball_f, impulse_check) = match &mass {
+            Some(mass) => impulse_on_ball(
+                q(v.get(ball)),
+                fin(ball),
+                j_ball.as_ref(),
+                &mass.number().exact(),
+            ),
+            None => (q(v.get(ball)), fin(ball), None),
+        };
         let problem = WallProblem {
             ball: (ball_v, ball_f),
             wall: (q(v.get(wall)), fin(wall)),
@@ -464,7 +472,7 @@ impl Problem {
         };
         let case = WallCase {
             wall,
-            mass: mass.number().clone(),
+            mass: mass.as_ref().map(|m| m.number().clone()),
             velocities,
             restitution,
             units,
@@ -474,7 +482,8 @@ impl Problem {
         }
         // What was solved, in the two-body variables (the wall's mass means nothing).
         let mut values: [Q; 7] = Default::default();
-        values[ball] = mass.number().exact(); // M1 or M2
+        // M1 or M2; without a mass 0, never shown (the mass is not among the unknowns solved).
+        values[ball] = mass.map(|m| m.number().exact()).unwrap_or_default();
         values[bv as usize] = s.v.clone();
         values[bf as usize] = s.f.clone();
         values[wv as usize] = s.w.clone();
@@ -533,11 +542,13 @@ fn impulse_on_ball(
 
 /// A solved value as a `Number` (`quantity::number_of`), its error naming the variable.
 fn solved_number(var: Var, q: &Q) -> Result<Number, ProblemError> {
-    crate::values::quantity::number_of(q).map_err(|error| ProblemError::Solved {
-        var,
-        text: crate::values::quantity::fraction(q),
-        error,
-    })
+    crate::values::quantity::number_of(q)
+        .map(Number::answer)
+        .map_err(|error| ProblemError::Solved {
+            var,
+            text: crate::values::quantity::fraction(q),
+            error,
+        })
 }
 
 /// The case of resolved values, none of them unknown.

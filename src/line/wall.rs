@@ -19,8 +19,9 @@ use crate::values::units::Units;
 pub struct WallCase {
     /// Which body is the wall: 0 (on the left) or 1 (on the right).
     pub wall: usize,
-    /// The ball's mass as typed.
-    pub mass: Number,
+    /// The ball's mass as typed; `None` when not given (`-m 'wall,?'`): a rebound asked in
+    /// speeds and e does not depend on it (issue 45 §5), only momentum and energy do.
+    pub mass: Option<Number>,
     pub velocities: [Number; 2],
     pub restitution: Restitution,
     pub units: Units,
@@ -30,8 +31,8 @@ impl WallCase {
     pub fn ball(&self) -> usize {
         1 - self.wall
     }
-    pub fn m(&self) -> Q {
-        self.mass.exact()
+    pub fn m(&self) -> Option<Q> {
+        self.mass.as_ref().map(Number::exact)
     }
     pub fn e(&self) -> Q {
         self.restitution.number().exact()
@@ -56,24 +57,31 @@ impl WallCase {
         let v = self.v();
         v[0] > v[1]
     }
-    /// `1/2 m (v - w)^2`: the kinetic energy in the wall's frame.
-    pub fn crunch(&self) -> Q {
+    /// `1/2 m (v - w)^2`: the kinetic energy in the wall's frame (`None`: no mass given).
+    pub fn crunch(&self) -> Option<Q> {
         let (v, w) = self.ball_wall();
         let d = v - w;
-        half() * self.m() * &d * &d
+        Some(half() * self.m()? * &d * &d)
     }
     /// `(1 - e^2) crunch` (negative when superelastic).
-    pub fn lost(&self) -> Q {
+    pub fn lost(&self) -> Option<Q> {
         let e = self.e();
-        (Q::one() - &e * &e) * self.crunch()
+        Some((Q::one() - &e * &e) * self.crunch()?)
+    }
+    /// `lost / crunch = 1 - e^2`, the share of the ball's energy in the wall's frame lost,
+    /// whatever the mass; `None` when there is no crunch (the ball at the wall's speed).
+    pub fn lost_fraction(&self) -> Option<Q> {
+        let (v, w) = self.ball_wall();
+        let e = self.e();
+        (v != w).then(|| Q::one() - &e * &e)
     }
     /// The ball's kinetic energy at a velocity.
-    pub fn ke(&self, v: &Q) -> Q {
-        half() * (self.m() * v) * v
+    pub fn ke(&self, v: &Q) -> Option<Q> {
+        Some(half() * (self.m()? * v) * v)
     }
     /// The ball's momentum at a velocity.
-    pub fn p(&self, v: &Q) -> Q {
-        self.m() * v
+    pub fn p(&self, v: &Q) -> Option<Q> {
+        Some(self.m()? * v)
     }
     /// The ball's change of velocity `f - v = -(1 + e)(v - w)`.
     pub fn dv(&self) -> Q {

@@ -33,8 +33,10 @@ impl Special<'_> {
         if exact {
             let typed: Vec<&crate::values::number::Number> = match self {
                 Special::Separation(s) => s.masses.iter().chain(&s.velocities).collect(),
-                Special::Wall(w) => [&w.mass, w.restitution.number()]
-                    .into_iter()
+                Special::Wall(w) => w
+                    .mass
+                    .iter()
+                    .chain([w.restitution.number()])
                     .chain(&w.velocities)
                     .collect(),
             };

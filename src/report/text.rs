@@ -21,19 +21,27 @@ pub fn header(case: &Case) -> String {
     header_in(case, false)
 }
 
-/// The header; `exact`: a solved value (e, a velocity) is shown as the fraction it is (`Solved: e = 3/7` and `e =
-/// 3/7` in the header), not as `≈` digits.
+/// The header; `exact`: a solved value (e, a mass, a velocity) is shown as the fraction it is,
+/// as `Solved:` and FIN show it (`Solved: e = 25/32` and `e = 25/32`, `M = diag(800/11, 200)`;
+/// issue 45 §5), not as its decimal (`0.78125`) or `≈` digits; a unit conversion keeps its
+/// decimal (`10 g` is `0.01` kg).
 pub fn header_in(case: &Case, exact: bool) -> String {
+    use crate::values::number::Number;
+    use crate::values::quantity::Exact;
     let e = case.restitution();
+    let solved = |n: &Number| (exact && n.is_answer()).then(|| Exact::Rational(n.exact()).show());
     // Typed (or solved) text as it is; a binary64-born value (the default e = 1) as a header
     // shows it, not as its Debug digits ("1.0").
-    let shown = |n: &crate::values::number::Number| match n.text() {
-        std::borrow::Cow::Borrowed(t) if exact && t.len() <= 40 => t.to_string(),
-        _ => typed(n),
+    let shown = |n: &Number| {
+        solved(n).unwrap_or_else(|| match n.text() {
+            std::borrow::Cow::Borrowed(t) if exact && t.len() <= 40 => t.to_string(),
+            _ => typed(n),
+        })
     };
+    let mass = |n: &Number| solved(n).unwrap_or_else(|| n.brief());
     let e_text = shown(e.number());
     let mut out = parts(&[
-        format!("M = {}", case.inertia().describe()),
+        format!("M = {}", case.inertia().describe_with(mass)),
         format!(
             "V_IN = ({}, {})",
             shown(&case.velocities[0]),

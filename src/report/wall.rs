@@ -3,6 +3,8 @@
 //! `event = "wall"`, `wall` (1 or 2), `restitution`, `mass`, `in`, `fin`, `approaching`,
 //! `momentum {in, fin}`, `energy {in, fin, crunch, lost | released}`, `changes {dv, impulse,
 //! lost_fraction, kept_fraction, average_force}` (the ball's), `heights {in, fin}` (the ball's).
+//! A ball whose mass is not given (`-m 'wall,?'`) has no `mass`, `momentum`, `energy`,
+//! `impulse` or `average_force`: a rebound does not fix them (issue 45 §5).
 
 use crate::values::rational::Q;
 use serde::Serialize;
@@ -20,8 +22,9 @@ pub struct WallReport<N> {
     /// Which body is the wall, 1 or 2.
     pub wall: usize,
     pub restitution: N,
-    /// The ball's mass.
-    pub mass: N,
+    /// The ball's mass (none when not given).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mass: Option<N>,
     #[serde(rename = "in")]
     pub v_in: [N; 2],
     pub fin: [N; 2],
@@ -61,8 +64,9 @@ pub struct WallEnergy<N> {
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct WallChanges<N> {
     pub dv: N,
-    /// The impulse on the ball, `m dv` (the wall takes the opposite).
-    pub impulse: N,
+    /// The impulse on the ball, `m dv` (the wall takes the opposite; none without a mass).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impulse: Option<N>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lost_fraction: Option<N>,
     /// The share kept, `1 - lost / crunch = e^2` (problems ask for both).
@@ -78,9 +82,7 @@ impl<N: Scalar> WallReport<N> {
         let has = |x| sections.contains(x);
         let (v, f) = (c.v(), c.fin());
         let b = c.ball();
-        let lost = c.lost();
         let superelastic = c.restitution.is_superelastic();
-        let crunch = c.crunch();
         let energy = |q: &Q| match &sections.energy_scale {
             Some(k) => one(&(q * k)),
             None => one(q),
@@ -89,34 +91,45 @@ impl<N: Scalar> WallReport<N> {
             event: "wall",
             wall: c.wall + 1,
             restitution: one(&c.e()),
-            mass: one(&c.m()),
+            mass: c.m().map(|m| one(&m)),
             v_in: [one(&v[0]), one(&v[1])],
             fin: [one(&f[0]), one(&f[1])],
             approaching: c.approaching(),
-            momentum: has(Section::Momentum).then(|| BallPair {
-                at_in: one(&c.p(&v[b])),
-                fin: one(&c.p(&f[b])),
-            }),
-            energy: has(Section::Energy).then(|| WallEnergy {
-                ke_in: energy(&c.ke(&v[b])),
-                fin: energy(&c.ke(&f[b])),
-                crunch: energy(&crunch),
-                lost: (!superelastic).then(|| energy(&lost)),
-                released: superelastic.then(|| energy(&-lost.clone())),
-            }),
+            momentum: has(Section::Momentum)
+                .then(|| {
+                    Some(BallPair {
+                        at_in: one(&c.p(&v[b])?),
+                        fin: one(&c.p(&f[b])?),
+                    })
+                })
+                .flatten(),
+            energy: has(Section::Energy)
+                .then(|| {
+                    let lost = c.lost()?;
+                    Some(WallEnergy {
+                        ke_in: energy(&c.ke(&v[b])?),
+                        fin: energy(&c.ke(&f[b])?),
+                        crunch: energy(&c.crunch()?),
+                        lost: (!superelastic).then(|| energy(&lost)),
+                        released: superelastic.then(|| energy(&-lost.clone())),
+                    })
+                })
+                .flatten(),
             changes: has(Section::Changes).then(|| {
-                let impulse = c.m() * c.dv();
+                let impulse = c.m().map(|m| m * c.dv());
+                // `lost / crunch = 1 - e^2` and `kept / crunch = e^2`, whatever the mass.
+                let lost = c.lost_fraction().filter(|_| !superelastic);
                 WallChanges {
                     dv: one(&c.dv()),
-                    impulse: one(&impulse),
-                    lost_fraction: (!superelastic && crunch > Q::ZERO)
-                        .then(|| one(&(&lost / &crunch))),
-                    kept_fraction: (!superelastic && crunch > Q::ZERO)
-                        .then(|| one(&((&crunch - &lost) / &crunch))),
-                    average_force: sections.contact_time.as_ref().map(|t| {
-                        let f = &impulse / t;
-                        one(&sections.force_scale.as_ref().map_or(f.clone(), |k| &f * k))
-                    }),
+                    impulse: impulse.as_ref().map(one),
+                    kept_fraction: lost.as_ref().map(|l| one(&(Q::ONE - l))),
+                    lost_fraction: lost.as_ref().map(one),
+                    average_force: impulse.as_ref().zip(sections.contact_time.as_ref()).map(
+                        |(impulse, t)| {
+                            let f = impulse / t;
+                            one(&sections.force_scale.as_ref().map_or(f.clone(), |k| &f * k))
+                        },
+                    ),
                 }
             }),
             heights: sections
@@ -139,7 +152,8 @@ impl<N: Scalar> WallReport<N> {
     /// Text for people.
     pub fn text(&self, c: &WallCase, sections: &Sections) -> String {
         let shown = |x| sections.contains(x);
-        let mut m = [typed(&c.mass), typed(&c.mass)];
+        let ball = c.mass.as_ref().map_or("?".into(), typed);
+        let mut m = [ball.clone(), ball];
         m[c.wall] = "wall".into();
         let mut out = parts(&[
             format!("M = ({}, {})", m[0], m[1]),
@@ -155,11 +169,19 @@ impl<N: Scalar> WallReport<N> {
             ),
         ]);
         out.push_str(&header_units(&c.units));
-        out.push_str(&paragraph(&format!(
-            "Body {} is a wall: immovable (infinite mass), so only the ball's momentum and \
-             energy are shown",
-            c.wall + 1
-        )));
+        out.push_str(&paragraph(&match c.mass {
+            Some(_) => format!(
+                "Body {} is a wall: immovable (infinite mass), so only the ball's momentum and \
+                 energy are shown",
+                c.wall + 1
+            ),
+            None => format!(
+                "Body {} is a wall: immovable (infinite mass). The ball's mass is not given: its \
+                 rebound (e, the velocities) does not depend on it; its momentum, energy and \
+                 impulse do (give it with -m to see them)",
+                c.wall + 1
+            ),
+        }));
         if !self.approaching {
             out.push_str(&approach_note(c.wall));
         }
@@ -209,7 +231,9 @@ impl<N: Scalar> WallReport<N> {
                 c.units.impulse()
             ));
             b.row("dv = f - v", ch.dv.show(), "");
-            b.row("impulse dp = m dv", ch.impulse.show(), "the wall takes -dp");
+            if let Some(dp) = &ch.impulse {
+                b.row("impulse dp = m dv", dp.show(), "the wall takes -dp");
+            }
             if let Some(l) = &ch.lost_fraction {
                 b.row(
                     "lost / crunch",

@@ -289,11 +289,12 @@ pub fn show_of(list: &[Section]) -> Result<Show, String> {
             Section::Forms => s.forms = true,
             Section::Energy => s.energy = true,
             Section::Angles => s.angles = true,
+            Section::Changes => s.changes = true,
             Section::All => s = Show::all(),
             other => {
                 return Err(format!(
                     "{}: in the plane, in space and for N bodies the sections are vectors, \
-                     momentum, forms, energy, angles and all",
+                     momentum, forms, energy, angles, changes and all",
                     clap::ValueEnum::to_possible_value(other)
                         .map(|v| v.get_name().to_string())
                         .unwrap_or_default()

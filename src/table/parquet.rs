@@ -1,7 +1,7 @@
 //! Tables as Apache Parquet files (`--format parquet`, the Cargo feature `parquet`): float64
 //! columns with the CSV header's names (REQUIRED in a two-body table, OPTIONAL where a table of
-//! runs may miss a cell), the `error` text of a table of runs as an OPTIONAL UTF-8 column, zstd,
-//! one row group per chunk.
+//! runs may miss a cell), int64 ones for counts (collisions, steps), the `error` text of a table
+//! of runs as an OPTIONAL UTF-8 column, zstd, one row group per chunk.
 //!
 //! Each row group is encoded (pages, zstd) by the thread that solved its chunk, with the
 //! parquet crate's column writers on an in-memory page writer; the file is then written in
@@ -48,11 +48,13 @@ mod enabled {
     }
 
     impl Schema {
-        /// Float64 columns named `names` (OPTIONAL when `optional`), column `text` a UTF-8 one.
+        /// Float64 columns named `names` (OPTIONAL when `optional`), those `integers` marks
+        /// int64, column `text` a UTF-8 one.
         pub fn new(
             names: &[String],
             optional: bool,
             text: Option<usize>,
+            integers: &[bool],
         ) -> Result<Schema, String> {
             let repetition = if optional {
                 Repetition::OPTIONAL
@@ -67,6 +69,10 @@ mod enabled {
                         Type::primitive_type_builder(name, Physical::BYTE_ARRAY)
                             .with_repetition(Repetition::OPTIONAL)
                             .with_logical_type(Some(LogicalType::String))
+                    } else if integers.get(i) == Some(&true) {
+                        // Plain INT64: a signed 64-bit integer to every reader.
+                        Type::primitive_type_builder(name, Physical::INT64)
+                            .with_repetition(repetition)
                     } else {
                         Type::primitive_type_builder(name, Physical::DOUBLE)
                             .with_repetition(repetition)
@@ -135,6 +141,19 @@ mod enabled {
                     ColumnWriter::DoubleColumnWriter(t) => {
                         t.write_batch(&columns.numbers[i], None, None)
                             .map_err(error)?;
+                    }
+                    // A count: a whole number below 2^53, exact as binary64 and as i64.
+                    ColumnWriter::Int64ColumnWriter(t) => {
+                        let values = &columns.numbers[i];
+                        let counts: Vec<i64> = values
+                            .iter()
+                            .filter(|v| !v.is_nan())
+                            .map(|v| *v as i64)
+                            .collect();
+                        levels.clear();
+                        levels.extend(values.iter().map(|v| i16::from(!v.is_nan())));
+                        let levels = self.optional.then_some(&levels[..]);
+                        t.write_batch(&counts, levels, None).map_err(error)?;
                     }
                     _ => return Err(io::Error::other("Parquet: a column of another type")),
                 }
@@ -218,7 +237,7 @@ mod disabled {
     }
 
     impl Schema {
-        pub fn new(_: &[String], _: bool, _: Option<usize>) -> Result<Schema, String> {
+        pub fn new(_: &[String], _: bool, _: Option<usize>, _: &[bool]) -> Result<Schema, String> {
             Err(super::NOT_BUILT.into())
         }
 

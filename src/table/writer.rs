@@ -74,6 +74,8 @@ pub struct RowWriter {
     text: Option<usize>,
     /// Whether cells may be missing (a table of runs).
     optional: bool,
+    /// Which columns count (collisions, steps): integers in every format (issue 45 §3).
+    integers: Vec<bool>,
     format: RowFormat,
     header: Header,
     parquet: Option<parquet::Schema>,
@@ -101,7 +103,7 @@ impl RowWriter {
         format: RowFormat,
     ) -> RowWriter {
         let parquet = (format == RowFormat::Parquet)
-            .then(|| parquet::Schema::new(&names, optional, text))
+            .then(|| parquet::Schema::new(&names, optional, text, &[]))
             .and_then(Result::ok);
         let keys = names
             .iter()
@@ -117,16 +119,42 @@ impl RowWriter {
             keys,
             text,
             optional,
+            integers: Vec::new(),
             format,
             header: Header::First,
             parquet,
         }
     }
 
+    /// The same writer with the columns `integers` marks written as integers: `3` in CSV and
+    /// JSON Lines rather than `3.0`, an INT64 column in Parquet. Counts only (whole numbers
+    /// below 2^53, exact as binary64).
+    pub fn with_integers(self, integers: Vec<bool>) -> RowWriter {
+        let parquet = self.parquet.as_ref().and_then(|_| {
+            parquet::Schema::new(&self.names, self.optional, self.text, &integers).ok()
+        });
+        RowWriter {
+            integers,
+            parquet,
+            ..self
+        }
+    }
+
+    /// The length of the field `text` (a value of column `i`) as written: an integer column's
+    /// `3.0` is `3`.
+    #[inline(always)]
+    fn cut(&self, i: usize, text: &[u8], len: usize) -> usize {
+        if self.integers.get(i) == Some(&true) && text[..len].ends_with(b".0") {
+            len - 2
+        } else {
+            len
+        }
+    }
+
     /// Whether this writer can write its format: Parquet needs the `parquet` feature.
     pub fn check(&self) -> Result<(), String> {
         match (self.format, &self.parquet) {
-            (RowFormat::Parquet, None) => Err(parquet::Schema::new(&self.names, false, None)
+            (RowFormat::Parquet, None) => Err(parquet::Schema::new(&self.names, false, None, &[])
                 .err()
                 .unwrap_or_else(|| "cannot write Parquet".into())),
             _ => Ok(()),
@@ -261,7 +289,9 @@ impl RowWriter {
                     } else if v.is_nan() {
                         page.fields.push(b'-');
                     } else {
-                        page.fields.extend_from_slice(fields.format(i, *v));
+                        let (slot, len) = fields.slot(i, *v);
+                        page.fields
+                            .extend_from_slice(&slot[..self.cut(i, slot, len)]);
                     }
                     page.ends.push(page.fields.len());
                 }
@@ -292,7 +322,7 @@ impl RowWriter {
             } else {
                 // The whole 32-byte slot, cut back: a fixed-size copy (see `row`).
                 let (slot, len) = fields.slot(i, *v);
-                let at = out.len() + len;
+                let at = out.len() + self.cut(i, slot, len);
                 out.extend_from_slice(slot);
                 out.truncate(at);
             }

@@ -45,6 +45,23 @@ pub enum QuantityError {
         printable(.typed)
     )]
     HeightRange { typed: String, metres: String },
+    #[error("{0}")]
+    Term(Box<BadTerm>),
+    #[error(
+        "'{}': give a unit to every part of a sum or to none ('60 kg + 10 kg', '1 kg + 500 g')",
+        printable(.0)
+    )]
+    SumUnits(String),
+}
+
+/// A bad part of a sum (`'60 kg + 10 kgg': its part '10 kgg': ...`), boxed in
+/// [`QuantityError::Term`] so that the error stays small.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("'{}': its part '{}': {error}", printable(.typed), printable(.part))]
+pub struct BadTerm {
+    pub typed: String,
+    pub part: String,
+    pub error: String,
 }
 
 /// Splits `4 t`, `60mph`, `12 N s` or `1e3` into its number and the rest (a unit name, trimmed;

@@ -60,6 +60,9 @@ pub struct Number {
     text: Option<Box<str>>,
     /// Solved rather than typed (`Number::solved`): headers show its decimal, not its fraction.
     derived: bool,
+    /// A problem's unknown, solved (`Number::answer`), not a unit conversion: `--exact`
+    /// headers show its fraction, as `Solved:` does.
+    answer: bool,
 }
 
 /// Equal value and text (whether typed or solved does not matter).
@@ -254,6 +257,7 @@ impl Number {
                 value,
                 text: None,
                 derived: false,
+                answer: false,
             })
         } else {
             Err(NumberError::Syntax(format!("{value}")))
@@ -282,12 +286,26 @@ impl Number {
         self.derived
     }
 
+    /// The same value marked as the answer to a problem's unknown.
+    pub fn answer(self) -> Number {
+        Number {
+            answer: true,
+            ..self
+        }
+    }
+
+    /// Whether this value answers a problem's unknown (`Number::answer`).
+    pub fn is_answer(&self) -> bool {
+        self.answer
+    }
+
     /// The same binary64 value without its typed text (so a clone allocates nothing).
     pub fn untyped(&self) -> Number {
         Number {
             value: self.value,
             text: None,
             derived: false,
+            answer: false,
         }
     }
 
@@ -368,6 +386,7 @@ impl Number {
             value,
             text: Some(text.into()),
             derived: !typed,
+            answer: false,
         })
     }
 }
@@ -383,11 +402,49 @@ impl fmt::Display for Number {
 
 /// A binary64 as people read it: rounded to the text digits (`--sig`, 15 by default), then its
 /// shortest round-trip digits, plain for `1e-5 <= |x| < 1e16` and in scientific notation outside.
+/// With `--sig N` typed, exactly N digits, trailing zeros kept (`padded`).
 pub fn num(x: f64) -> String {
-    num_full(round_significant(
-        x,
-        TEXT_DIGITS.load(std::sync::atomic::Ordering::Relaxed),
-    ))
+    let digits = TEXT_DIGITS.load(std::sync::atomic::Ordering::Relaxed);
+    let rounded = round_significant(x, digits);
+    if TEXT_PADDED.load(std::sync::atomic::Ordering::Relaxed) {
+        padded(rounded, digits)
+    } else {
+        num_full(rounded)
+    }
+}
+
+/// `x` to exactly `digits` significant digits, trailing zeros kept as a book prints them
+/// (issue 45 §5: 0.15 to 3 digits is `0.150`, 0.087 is `0.0870`, 6 is `6.00`; 7250 to 3 is
+/// `7250`), plain for `1e-5 <= |x| < 1e16` and `d.dde±x` outside, as `num_full`. The digits are
+/// Rust's correctly rounded ones of the binary64 `x`, which for `x` rounded by
+/// `round_significant` to at most 15 digits are that decimal's. 0 and `digits` 0 (`--sig full`)
+/// are `num_full`'s.
+pub fn padded(x: f64, digits: u8) -> String {
+    if digits == 0 || x == 0.0 || !x.is_finite() {
+        return num_full(x);
+    }
+    let sci = format!("{:.*e}", usize::from(digits) - 1, x);
+    let Some((mantissa, exponent)) = sci.split_once('e') else {
+        return num_full(x);
+    };
+    let Ok(exponent) = exponent.parse::<i32>() else {
+        return num_full(x);
+    };
+    if !(1e-5..1e16).contains(&x.abs()) {
+        return sci;
+    }
+    let sign = if x < 0.0 { "-" } else { "" };
+    let all: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    match usize::try_from(exponent) {
+        // 1 <= |x|: the first exponent + 1 digits before the point, zeros if they run out.
+        Ok(e) if all.len() <= e + 1 => format!("{sign}{all}{}", "0".repeat(e + 1 - all.len())),
+        Ok(e) => format!("{sign}{}.{}", &all[..=e], &all[e + 1..]),
+        // |x| < 1: zeros after the point up to the first digit.
+        Err(_) => format!(
+            "{sign}0.{}{all}",
+            "0".repeat(exponent.unsigned_abs() as usize - 1)
+        ),
+    }
 }
 
 /// `num` without rounding: the shortest round-trip digits whatever `--sig` says (a scene check's
@@ -408,9 +465,15 @@ pub fn num_full(x: f64) -> String {
 /// (`--sig full`). JSON and tables always carry the full binary64 value.
 static TEXT_DIGITS: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(15);
 
-/// Sets the significant digits of text output (1..=17; 0 for the shortest round-trip form).
+/// Whether `--sig N` was typed: then text prints exactly N digits, trailing zeros kept
+/// (`padded`); the default 15 digits print the shortest form, `0.15`.
+static TEXT_PADDED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Sets the significant digits of text output, as `--sig` asks (1..=17, printed with trailing
+/// zeros; 0 for the shortest round-trip form).
 pub fn set_text_digits(digits: u8) {
     TEXT_DIGITS.store(digits.min(17), std::sync::atomic::Ordering::Relaxed);
+    TEXT_PADDED.store(digits != 0, std::sync::atomic::Ordering::Relaxed);
 }
 
 /// `x` rounded to `digits` significant decimal digits (0: unchanged), as the nearest binary64

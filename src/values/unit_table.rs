@@ -48,7 +48,8 @@ impl Unit {
     }
 }
 
-/// The units collide knows.
+/// The units collide knows, each with the spellings sources use (`fps`, `ft/sec`, `km/hr`,
+/// `kts`, ...; issue 45 §5): the first name is the one printed.
 pub const UNITS: &[Unit] = &[
     Unit {
         dimension: Dimension::Mass,
@@ -104,37 +105,37 @@ pub const UNITS: &[Unit] = &[
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["m/s"],
+        names: &["m/s", "m/sec"],
         si: "1",
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["km/h", "kph"],
+        names: &["km/h", "kph", "km/hr"],
         si: "1000/3600",
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["km/s"],
+        names: &["km/s", "km/sec"],
         si: "1000",
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["mph", "mi/h"],
+        names: &["mph", "mi/h", "mi/hr"],
         si: "0.44704",
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["ft/s"],
+        names: &["ft/s", "fps", "ft/sec"],
         si: "0.3048",
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["knot", "knots", "kn"],
+        names: &["knot", "knots", "kn", "kts"],
         si: "1852/3600",
     },
     Unit {
         dimension: Dimension::Velocity,
-        names: &["cm/s"],
+        names: &["cm/s", "cm/sec"],
         si: "0.01",
     },
     Unit {

@@ -5,15 +5,17 @@
 //! this file reads a case's values with them (and re-exports them: one path for callers).
 
 use crate::values::number::{FieldsError, Given, Number, NumberError, split_fields};
+use crate::values::rational::{Q, int};
 
 pub use super::case_units::{ENERGY_UNITS, EnergyUnit, EnergyUnitError, Units, energy_unit};
 use super::heights::parse_height;
 pub use super::heights::{HeightScale, STANDARD_GRAVITY};
+use super::measure::BadTerm;
 pub use super::measure::{Quantity, QuantityError, parse_plain, seconds, split_number};
 pub use super::unit_table::{Dimension, UNITS, Unit, UnitError, lookup};
 
 /// Splits `4 t`, `60mph`, `2/3 m/s` or `1e3` into a number and a unit name; a velocity may be
-/// a height or a slide (`height 2 m`).
+/// a height or a slide (`height 2 m`); any may be a sum of like quantities (`60 kg + 10 kg`).
 pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError> {
     let t = text.trim();
     if dimension == Dimension::Velocity
@@ -21,7 +23,67 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<Quantity, QuantityError
     {
         return height;
     }
-    parse_plain(t, dimension)
+    match terms(t).as_slice() {
+        [_] => parse_plain(t, dimension),
+        terms => sum(t, terms, dimension),
+    }
+}
+
+/// `text` cut at each `+` that adds: not a leading sign (`+4`), not an exponent's (`1e+3`).
+fn terms(text: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    for (i, _) in text.match_indices('+') {
+        let before = &text[start..i];
+        let b = before.as_bytes();
+        // `1e+3`, `2.E+3`: a digit or point, an `e`, then the `+` with no space between.
+        let exponent = b.len() >= 2
+            && matches!(b[b.len() - 1], b'e' | b'E')
+            && (b[b.len() - 2].is_ascii_digit() || b[b.len() - 2] == b'.');
+        if before.trim().is_empty() || exponent {
+            continue;
+        }
+        out.push(before);
+        start = i + 1;
+    }
+    out.push(&text[start..]);
+    out
+}
+
+/// A sum of like quantities, exactly, in the first part's unit (issue 45 §5: a rider and a
+/// bike as one body, `60 kg + 10 kg`; `1 kg + 500 g` is 1.5 kg): every part with a unit or
+/// none, each read as a value alone, a bad one named.
+fn sum(text: &str, terms: &[&str], dimension: Dimension) -> Result<Quantity, QuantityError> {
+    let parts = terms
+        .iter()
+        .map(|term| {
+            parse_plain(term, dimension).map_err(|e| {
+                QuantityError::Term(Box::new(BadTerm {
+                    typed: text.to_string(),
+                    part: term.trim().to_string(),
+                    error: e.to_string(),
+                }))
+            })
+        })
+        .collect::<Result<Vec<Quantity>, _>>()?;
+    let unit = parts[0].unit;
+    if parts.iter().any(|q| q.unit.is_some() != unit.is_some()) {
+        return Err(QuantityError::SumUnits(text.to_string()));
+    }
+    let si = |q: &Quantity| q.number.exact() * q.unit.map_or_else(|| int(1), Unit::si);
+    let total = parts.iter().fold(Q::ZERO, |s, q| s + si(q));
+    let total = match unit {
+        Some(u) => total / u.si(),
+        None => total,
+    };
+    // The sum of typed values is as typed (`70`, the same case as `70 kg` bit for bit); a
+    // text too long to type stays a solved value.
+    let solved = crate::values::quantity::number_of(&total)?;
+    Ok(Quantity {
+        number: solved.text().parse().unwrap_or(solved),
+        unit,
+        height: false,
+    })
 }
 
 /// Why a case's units cannot be resolved.

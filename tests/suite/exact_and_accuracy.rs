@@ -226,3 +226,28 @@ fn accuracy_scatter_shows_each_method_on_each_family() {
     assert!(cy("point-impulse-boost") > cy("point-textbook-boost") + 100.0);
     std::fs::remove_file(&file).ok();
 }
+
+/// Issue 45 §5: with `--exact` the header shows a solved value as the fraction that `Solved:`
+/// and FIN show, not as its decimal or `≈` digits.
+#[test]
+fn exact_headers_show_solved_values_as_fractions() {
+    // Case A with f2 = 81.25 given: momentum 4 f1 + 81.25 = 250, so f1 = 168.75 / 4 = 675/16;
+    // e = (f2 - f1) / (V1 - V2) = (1300/16 - 675/16) / 50 = 25/32 (0.78125 as a decimal).
+    let args = ["solve", "-m", "4,1", "-v", "60,10", "--fin", "?,81.25"];
+    let out = stdout(&[&args[..], &["--exact"]].concat());
+    assert!(out.contains("Solved: f1 = 675/16, e = 25/32"), "{out}");
+    assert!(out.contains("e = 25/32 (ka-whump)"), "{out}");
+    assert!(!out.contains("0.78125"), "{out}");
+    // Body 1's mass solved: body 2 (200) at rest, body 1 at 5 leaves at -1 with e = 0.3, so
+    // f2 = f1 + e (V1 - V2) = -1 + 1.5 = 1/2 and m1 (5 - (-1)) = 200 (1/2): m1 = 50/3.
+    let args = [
+        "solve", "-m", "?,200", "-v", "5,0", "--fin", "-1,?", "-e", "0.3",
+    ];
+    let out = stdout(&[&args[..], &["--exact"]].concat());
+    assert!(out.contains("Solved: m1 = 50/3, f2 = 1/2"), "{out}");
+    assert!(out.contains("M = diag(50/3, 200)"), "{out}");
+    // Typed values stay as typed; without --exact the header keeps its ≈ digits.
+    assert!(out.contains("e = 0.3 (ka-whump)"), "{out}");
+    let out = stdout(&args);
+    assert!(out.contains("M = diag(≈16.6666666666667, 200)"), "{out}");
+}

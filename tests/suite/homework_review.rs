@@ -663,3 +663,68 @@ fn long_answers_and_matrices_fit_the_terminal() {
         assert_close(*got, want, 1e-13, "outer product");
     }
 }
+
+/// Issue 45 §5: a final velocity typed as 0 gives exactly 0 for what is derived from it (its
+/// kinetic energy, its slide), in text and JSON: no leftover of the arithmetic.
+#[test]
+fn a_final_velocity_typed_as_0_has_no_energy_and_no_slide() {
+    // m = (2, 3) kg, v1 = 4 m/s, f1 = 0 typed, e = 1/2: momentum 8 + 3 v2 = 3 f2 and
+    // restitution f2 - 0 = (4 - v2) / 2 give v2 = -4/9, f2 = 20/9 m/s. Body 1: KE_FIN =
+    // 1/2 2 0^2 = 0, slide 0^2 / (2 mu g) = 0; body 2: KE_FIN = 1/2 3 (20/9)^2 = 200/27 J,
+    // slide (400/81) / (2 0.3 9.80665) m.
+    let args = [
+        "-m",
+        "2 kg,3 kg",
+        "-v",
+        "4 m/s,?",
+        "--fin",
+        "0,?",
+        "-e",
+        "0.5",
+        "--show",
+        "changes,slides",
+        "--friction",
+        "0.3",
+    ];
+    let (code, j) = solve_json(&args);
+    assert_eq!(code, 0, "{j}");
+    for zero in [
+        &j["changes"]["ke_fin"][0],
+        &j["slides"]["fin"][0],
+        &j["fin"][0],
+    ] {
+        if !zero.is_null() {
+            assert_eq!(f(zero).to_bits(), 0, "+0 exactly: {j}");
+        }
+    }
+    assert_eq!(f(&j["changes"]["dke"][0]), -16.0);
+    assert_close(
+        f(&j["changes"]["ke_fin"][1]),
+        200.0 / 27.0,
+        REL,
+        "KE_FIN of body 2",
+    );
+    let slide = (400.0 / 81.0) / (2.0 * 0.3 * 9.80665);
+    assert_close(f(&j["slides"]["fin"][1]), slide, REL, "slide of body 2");
+    let (_, out, _) = run(&args);
+    assert!(
+        out.contains("KE_FIN 1/2 m f^2        (0, 7.40740740740741)"),
+        "{out}"
+    );
+    assert!(out.contains("(0, 0.839272603274015) m"), "{out}");
+    // The same in other units (1500 kg, 900 kg at 72 km/h and ?): body 1's KE_FIN is 0 exactly.
+    let (code, j) = solve_json(&[
+        "-m",
+        "1500 kg,900 kg",
+        "-v",
+        "72 km/h,?",
+        "--fin",
+        "0,?",
+        "-e",
+        "0.2",
+        "--show",
+        "changes",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(f(&j["changes"]["ke_fin"][0]).to_bits(), 0, "{j}");
+}

@@ -999,3 +999,59 @@ fn radii_and_impact_parameter_take_lengths_with_units() {
         "{err}"
     );
 }
+
+/// Issue 45 §5: `--show changes` for more than two bodies and in the plane, body by body.
+#[test]
+fn changes_body_by_body_for_n_bodies_and_in_the_plane() {
+    // Three bodies on a line that stick: m = (1, 2, 3), v = (6, 0, 0), V_COM = 6/6 = 1.
+    // dv = (1 - 6, 1, 1) = (-5, 1, 1); dp = m dv = (-5, 2, 3), summing to 0; KE_IN =
+    // (1/2 36, 0, 0) = (18, 0, 0); KE_FIN = 1/2 m 1^2 = (1/2, 1, 3/2); dKE = (-35/2, 1, 3/2);
+    // lost = 18 - 3 = 15, lost / KE_IN = 15/18 = 5/6.
+    let (code, j) = common::solve_json(&[
+        "-m", "1,2,3", "-v", "6,0,0", "-e", "0", "--show", "changes", "--exact",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(
+        j["changes"],
+        serde_json::json!({
+            "dv": [["-5"], ["1"], ["1"]],
+            "impulse": [["-5"], ["2"], ["3"]],
+            "ke_in": ["18", "0", "0"],
+            "ke_fin": ["1/2", "1", "3/2"],
+            "dke": ["-35/2", "1", "3/2"],
+            "lost_fraction": "5/6",
+        })
+    );
+    let out = common::stdout(&[
+        "solve", "-m", "1,2,3", "-v", "6,0,0", "-e", "0", "--show", "changes",
+    ]);
+    for needle in [
+        "dv1 = v1' - v1",
+        "dp3 = m3 dv3",
+        "the impulses sum to 0",
+        "dKE1",
+        "-17.5",
+        "= 83.3333333333333 %",
+    ] {
+        assert!(out.contains(needle), "{needle}: {out}");
+    }
+    // Two pucks in the plane, the line of impact along x, elastic: m = (1, 3), v1 = (4, 1),
+    // v2 = 0. Along x as on a rail: f1 = (1 - 3)/4 4 = -2, f2 = 2/4 4 = 2; y unchanged. So
+    // dv = ((-6, 0), (2, 0)), dp = ((-6, 0), (6, 0)), KE_IN = (17/2, 0), KE_FIN = (5/2, 6),
+    // dKE = (-6, 6), nothing lost.
+    let (code, j) = common::solve_json(&[
+        "-m", "1,3", "-v", "(4,1),0", "--normal", "(1,0)", "--show", "changes", "--exact",
+    ]);
+    assert_eq!(code, 0, "{j}");
+    assert_eq!(
+        j["changes"],
+        serde_json::json!({
+            "dv": [["-6", "0"], ["2", "0"]],
+            "impulse": [["-6", "0"], ["6", "0"]],
+            "ke_in": ["17/2", "0"],
+            "ke_fin": ["5/2", "6"],
+            "dke": ["-6", "6"],
+            "lost_fraction": "0",
+        })
+    );
+}

@@ -408,7 +408,20 @@ fn walls_forward_moving_and_refused() {
     assert!(out.contains("do not meet"), "{out}");
     for (args, needle) in [
         (vec!["-m", "wall,wall", "-v", "0,1"], "two walls"),
-        (vec!["-m", "wall,?", "-v", "0,-1", "--fin", "0,1"], "mass"),
+        // An impulse needs the ball's mass (a rebound in speeds does not: below).
+        (
+            vec![
+                "-m",
+                "wall,?",
+                "-v",
+                "0,-1",
+                "--fin",
+                "0,?",
+                "--impulse",
+                "2",
+            ],
+            "an impulse needs it",
+        ),
         (
             vec!["-m", "wall,1", "-v", "0,-1", "--frame", "com"],
             "--frame",
@@ -470,10 +483,10 @@ fn text_rounds_to_15_digits_and_sig_says_otherwise() {
     assert!(out.contains("FIN  V_FIN    (-7.2, -0.24)"), "{out}");
     let (_, out, _) = run(&[&args[..], &["--sig", "full"]].concat());
     assert!(out.contains("FIN  V_FIN    (-7.2, -0.24)"), "{out}");
-    // 2/3 to 3 digits; 1/3 of 35 as 11.7.
+    // 2/3 to 3 digits; 1/3 of 35 as 11.7; 6 to 3 significant figures is 6.00 (issue 45 §5).
     let (_, out, _) = run(&["-m", "6,1", "-v", "3,-4", "-e", "2/3", "--sig", "3"]);
     assert!(
-        out.contains("(1.33, 6)") && out.contains(" 11.7\n"),
+        out.contains("(1.33, 6.00)") && out.contains(" 11.7\n"),
         "{out}"
     );
     for bad in ["0", "18", "many"] {
@@ -810,4 +823,107 @@ fn forces_print_in_newtons_whatever_the_units() {
         "changes",
     ]);
     assert!(out.contains("-4350") && out.contains("in N"), "{out}");
+}
+
+/// Issue 45 §5: `--sig N` prints N significant figures, trailing zeros kept as a book prints
+/// them; JSON keeps the numbers.
+#[test]
+fn sig_keeps_trailing_zeros() {
+    // Equal masses that stick, body 2 at rest: V_COM = v1 / 2, and KE_IN = 1/2 v1^2.
+    //   v1 = 0.3:   V_COM = 0.15 -> 0.150,   KE_IN = 0.045 -> 0.0450
+    //   v1 = 0.174: V_COM = 0.087 -> 0.0870, KE_IN = 0.015138 -> 0.0151
+    //   v1 = 12:    V_COM = 6 -> 6.00,       KE_IN = 72 -> 72.0
+    for (v1, v_com, ke_in) in [
+        ("0.3", "0.150", "0.0450"),
+        ("0.174", "0.0870", "0.0151"),
+        ("12", "6.00", "72.0"),
+    ] {
+        let v = format!("{v1},0");
+        let args = ["-m", "1,1", "-v", &v, "-e", "0", "--show", "vectors,energy"];
+        let (_, out, _) = run(&[&args[..], &["--sig", "3"]].concat());
+        assert!(
+            out.contains(&format!("V_COM = P_total / M_total = {v_com}\n")),
+            "{v1}: {out}"
+        );
+        assert!(
+            out.contains(&format!("  KE_IN  {ke_in}")) || out.contains(&format!(" {ke_in}\n")),
+            "{v1}: {out}"
+        );
+        // The typed values print as typed.
+        assert!(out.contains(&format!("V_IN = ({v1}, 0)")), "{v1}: {out}");
+    }
+    // Without --sig, the shortest form: 0.15.
+    let (_, out, _) = run(&["-m", "1,1", "-v", "0.3,0", "-e", "0"]);
+    assert!(out.contains("= 0.15\n"), "{out}");
+    // JSON carries numbers whatever --sig says.
+    let (_, j) = json("-m 1,1 -v 0.3,0 -e 0 --sig 3");
+    assert_eq!(j["v_com"], serde_json::json!(0.15));
+}
+
+/// Issue 45 §5: a ball against a wall asked only in speeds and e needs no mass, and nothing
+/// that needs one is printed.
+#[test]
+fn a_wall_rebound_in_speeds_needs_no_mass() {
+    // The ball (body 2) comes at -3 toward the wall on the left, at rest, and leaves at 2:
+    // f - w = -e (v - w) gives 2 = 3 e, e = 2/3, whatever the mass. The wall on the right and
+    // the ball at 3 leaving at -2: the same. The changes that need no mass: dv = f - v = 5
+    // (or -5), lost / crunch = 1 - e^2 = 5/9 and kept / crunch = e^2 = 4/9.
+    for (m, v, fin, dv) in [
+        ("wall,?", "0,-3", "0,2", "5"),
+        ("?,wall", "3,0", "-2,0", "-5"),
+    ] {
+        let (code, j) = json(&format!(
+            "-m {m} -v {v} --fin {fin} --exact --show vectors,momentum,energy,changes"
+        ));
+        assert_eq!(code, 0, "{m}: {j}");
+        assert_eq!(j["solved"], serde_json::json!({"e": "2/3"}), "{m}");
+        assert_eq!(j["restitution"], "2/3", "{m}");
+        for key in ["mass", "momentum", "energy"] {
+            assert!(j.get(key).is_none(), "{m}: {key} in {j}");
+        }
+        let changes = &j["changes"];
+        assert!(changes.get("impulse").is_none(), "{m}: {j}");
+        assert_eq!(
+            (
+                &changes["dv"],
+                &changes["lost_fraction"],
+                &changes["kept_fraction"]
+            ),
+            (&Value::from(dv), &Value::from("5/9"), &Value::from("4/9")),
+            "{m}"
+        );
+    }
+    let (code, out, _) = run(&["-m", "wall,?", "-v", "0,-3", "--fin", "0,2", "--exact"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("Solved: e = 2/3"), "{out}");
+    assert!(out.contains("M = (wall, ?)"), "{out}");
+    assert!(out.contains("The ball's mass is not given"), "{out}");
+    assert!(!out.contains("KE_IN"), "{out}");
+}
+
+#[test]
+fn significant_figures_keep_their_trailing_zeros() {
+    // Issue 45 §5, by hand: each value to `d` digits as a book prints it (`--sig d`).
+    for (x, d, want) in [
+        (0.15, 3, "0.150"),
+        (0.087, 3, "0.0870"),
+        (-0.087, 3, "-0.0870"),
+        (6.0, 3, "6.00"),
+        (60.0, 3, "60.0"),
+        (7250.0, 3, "7250"),
+        (711000000.0, 3, "711000000"),
+        (1.33, 3, "1.33"),
+        (10.0, 3, "10.0"),
+        (2.0, 1, "2"),
+        (0.1, 16, "0.1000000000000000"),
+        // 0.1 is 0.1000000000000000055511151231257827 in binary64: 17 digits say so.
+        (0.1, 17, "0.10000000000000001"),
+        (6.8e-20, 3, "6.80e-20"),
+        (1.5e16, 3, "1.50e16"),
+        (1.2e-5, 3, "0.0000120"),
+        (0.0, 3, "0"),
+        (0.25, 0, "0.25"),
+    ] {
+        assert_eq!(collide::values::number::padded(x, d), want, "{x} to {d}");
+    }
 }

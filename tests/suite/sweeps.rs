@@ -183,26 +183,36 @@ fn superball_top_speed_against_the_mass_ratio_is_the_closed_form() {
     assert!(t["error"].iter().all(|e| e.is_nan()), "no run failed");
 }
 
+/// Pi billiards: a block at rest between a wall (at 0) and a block coming at it at 1.
+const PI_BILLIARDS: [&str; 9] = [
+    "track",
+    "-m",
+    "1,1",
+    "-x",
+    "1,2",
+    "-v",
+    "0,-1",
+    "--left-wall",
+    "0",
+];
+
 #[test]
 fn pi_billiards_counts_against_the_mass_ratio() {
     // Mass ratios 100^N count the digits of pi; any ratio counts ceil(pi/theta) - 1 with theta
     // = atan(sqrt(m1/m2)) (Galperin 2003), here in binary64 in the test, away from whole
     // numbers (checked below), against the simulation and the exact `pi` column.
-    let out = stdout(&[
-        "track",
-        "-m",
-        "1,1",
-        "-x",
-        "1,2",
-        "-v",
-        "0,-1",
-        "--left-wall",
-        "0",
-        "--vary",
-        "m2=1,100,10000,1e6,2,7.5,1234.5",
-        "--columns",
-        "m2,collisions,pi",
-    ]);
+    let out = stdout(
+        &[
+            &PI_BILLIARDS[..],
+            &[
+                "--vary",
+                "m2=1,100,10000,1e6,2,7.5,1234.5",
+                "--columns",
+                "m2,collisions,pi",
+            ],
+        ]
+        .concat(),
+    );
     let (_, t) = table(&out);
     let digits = [3.0, 31.0, 314.0, 3141.0];
     for (i, d) in digits.iter().enumerate() {
@@ -313,17 +323,14 @@ fn failed_runs_are_error_rows_skipped_or_stop_never_a_gap() {
     let mut cols = base.to_vec();
     cols.extend(["--columns", "x1,collisions"]);
     let (code, out, err) = run(&cols);
-    assert_eq!((code, out.as_str()), (2, "x1,collisions\n0.0,1.0\n"));
+    assert_eq!((code, out.as_str()), (2, "x1,collisions\n0.0,1\n"));
     assert!(
         err.contains("run 2 (x1=2.5): bodies 1 and 2 overlap"),
         "{err}"
     );
     cols.push("--skip-bad");
     let (code, out, err) = run(&cols);
-    assert_eq!(
-        (code, out.as_str()),
-        (0, "x1,collisions\n0.0,1.0\n2.0,1.0\n")
-    );
+    assert_eq!((code, out.as_str()), (0, "x1,collisions\n0.0,1\n2.0,1\n"));
     assert!(err.contains("skipped run 4 (x1=3.5)"), "{err}");
     assert!(err.contains("2 rows written, 2 bad rows skipped"), "{err}");
     // A value no run can take is bad input, before anything runs.
@@ -409,13 +416,15 @@ fn polars_dump(path: &std::path::Path) -> Option<Result<String, String>> {
 }
 
 /// `repr(float)` in Python is the shortest round trip too, but writes `1e-05` and `1e+16`
-/// where ryu writes `1e-5` and `1e16`: compare values, bit for bit.
+/// where ryu writes `1e-5` and `1e16`: compare values, bit for bit. `dtypes`: the column types
+/// Polars reads (float64, and int64 for counts).
 #[cfg(feature = "parquet")]
-fn same_table(csv_text: &str, dump: &str) {
+fn same_table(csv_text: &str, dump: &str, dtypes: &[&str]) {
     let mut lines = dump.lines();
     let header = lines.next().unwrap();
-    let dtypes = lines.next().unwrap();
-    assert_eq!(dtypes, "Float64", "every column float64");
+    let mut read: Vec<&str> = lines.next().unwrap().split(',').collect();
+    read.sort_unstable();
+    assert_eq!(read, dtypes, "the column types");
     let body: Vec<&str> = lines.collect();
     let mut csv_lines = csv_text.lines();
     assert_eq!(header, csv_lines.next().unwrap());
@@ -505,14 +514,25 @@ fn parquet_reads_back_equal_to_the_csv_bit_for_bit() {
             for (n, field) in row.unwrap().get_column_iter() {
                 let want = t[n.as_str()][i];
                 match field {
-                    parquet::record::Field::Double(x) => assert_eq!(x.to_bits(), want.to_bits()),
+                    parquet::record::Field::Double(x) if n != "collisions" => {
+                        assert_eq!(x.to_bits(), want.to_bits())
+                    }
+                    // A count is an INT64 column (issue 45 §3).
+                    parquet::record::Field::Long(x) if n == "collisions" => {
+                        assert_eq!(*x as f64, want)
+                    }
                     parquet::record::Field::Null => assert!(want.is_nan()),
                     other => panic!("{n}: {other:?}"),
                 }
             }
         }
+        let dtypes: &[&str] = if name == "runs" {
+            &["Float64", "Int64"]
+        } else {
+            &["Float64"]
+        };
         match polars_dump(&path) {
-            Some(Ok(dump)) => same_table(&csv_text, &dump),
+            Some(Ok(dump)) => same_table(&csv_text, &dump, dtypes),
             Some(Err(e)) => panic!("Polars could not read {name}.parquet: {e}"),
             None => {
                 polars_or_skip("Polars reading Parquet");
@@ -694,6 +714,8 @@ fn the_slurm_recipe_shards_read_back_as_the_single_process_table() {
                 let want = t[n.as_str()][i];
                 match field {
                     parquet::record::Field::Double(x) => assert_eq!(x.to_bits(), want.to_bits()),
+                    // Counts (contacts, steps) are INT64 columns (issue 45 §3).
+                    parquet::record::Field::Long(x) => assert_eq!(*x as f64, want, "{n} row {i}"),
                     parquet::record::Field::Null => assert!(want.is_nan(), "{n} row {i}"),
                     other => panic!("{n}: {other:?}"),
                 }
@@ -782,5 +804,121 @@ fn a_varied_restitution_is_the_single_run_with_that_flag() {
             differ, 0,
             "{extra:?} --vary {vary}: rows unlike the single run"
         );
+    }
+}
+
+/// Issue 45 §3: counts (collisions, contacts, the solver's steps) print as integers in CSV,
+/// JSON Lines and text, and are an INT64 column in Parquet; every other number stays a float.
+#[test]
+fn counts_are_integers_in_every_format() {
+    // Pi billiards (docs/physics.md §5): a block at rest between a wall and a block of mass m2
+    // coming at it; m2 = 1 gives 3 collisions, m2 = 100 gives 31. They alternate, block-block
+    // first and last: 2 block-block and 1 with the wall, then 16 and 15.
+    let track = [
+        &PI_BILLIARDS[..],
+        &[
+            "--vary",
+            "m2=1,100",
+            "--columns",
+            "m2,collisions,pair_collisions,wall_collisions,simultaneous",
+        ],
+    ]
+    .concat();
+    assert_eq!(
+        stdout(&track),
+        "m2,collisions,pair_collisions,wall_collisions,simultaneous\n\
+         1.0,3,2,1,0\n\
+         100.0,31,16,15,0\n"
+    );
+    let jsonl = stdout(&[&track[..], &["--format", "jsonl"]].concat());
+    assert_eq!(
+        jsonl,
+        "{\"m2\":1.0,\"collisions\":3,\"pair_collisions\":2,\"wall_collisions\":1,\
+         \"simultaneous\":0}\n\
+         {\"m2\":100.0,\"collisions\":31,\"pair_collisions\":16,\"wall_collisions\":15,\
+         \"simultaneous\":0}\n"
+    );
+    // A contact run: one contact each, the steps whole numbers; e_1 a float.
+    let contact = [
+        &CONTACT_SWEEP[..9],
+        &[
+            "--vary",
+            "zeta=0,0.3",
+            "--columns",
+            "zeta,contacts,steps,rejected,rhs_evals,jacobians,e_1",
+        ],
+    ]
+    .concat();
+    for line in stdout(&[&contact[..], &["--format", "jsonl"]].concat()).lines() {
+        let v: serde_json::Value = serde_json::from_str(line).unwrap();
+        assert_eq!(v["contacts"], 1, "{line}");
+        for n in ["steps", "rejected", "rhs_evals", "jacobians"] {
+            assert!(v[n].is_u64(), "{n}: {line}");
+        }
+        assert!(v["zeta"].is_f64() && v["e_1"].is_f64(), "{line}");
+    }
+    let csv = stdout(&contact);
+    for row in csv.lines().skip(1) {
+        let cells: Vec<&str> = row.split(',').collect();
+        assert_eq!(cells[1], "1", "{row}");
+        for cell in &cells[2..6] {
+            assert!(cell.parse::<u64>().is_ok(), "{cell} in {row}");
+        }
+    }
+    #[cfg(feature = "parquet")]
+    {
+        use parquet::file::reader::{FileReader, SerializedFileReader};
+        use parquet::record::Field;
+        let path =
+            std::env::temp_dir().join(format!("collide-counts-{}.parquet", std::process::id()));
+        let p = path.to_str().unwrap().to_string();
+        let (code, _, err) = run(&[&track[..], &["-o", &p]].concat());
+        assert_eq!(code, 0, "{err}");
+        let reader = SerializedFileReader::new(std::fs::File::open(&path).unwrap()).unwrap();
+        let schema = reader.metadata().file_metadata().schema_descr();
+        let types: Vec<_> = (0..schema.num_columns())
+            .map(|i| schema.column(i).physical_type())
+            .collect();
+        use parquet::basic::Type;
+        assert_eq!(
+            types,
+            [
+                Type::DOUBLE,
+                Type::INT64,
+                Type::INT64,
+                Type::INT64,
+                Type::INT64
+            ]
+        );
+        let rows: Vec<Vec<Field>> = reader
+            .get_row_iter(None)
+            .unwrap()
+            .map(|r| {
+                r.unwrap()
+                    .get_column_iter()
+                    .map(|(_, f)| f.clone())
+                    .collect()
+            })
+            .collect();
+        assert_eq!(
+            rows,
+            [
+                [
+                    Field::Double(1.0),
+                    Field::Long(3),
+                    Field::Long(2),
+                    Field::Long(1),
+                    Field::Long(0)
+                ],
+                [
+                    Field::Double(100.0),
+                    Field::Long(31),
+                    Field::Long(16),
+                    Field::Long(15),
+                    Field::Long(0)
+                ],
+            ]
+        );
+        std::fs::remove_file(&path).ok();
     }
 }

@@ -18,7 +18,7 @@ fn suggestion(typed: &str, d: Dimension) -> Option<&'static str> {
 fn a_mistyped_unit_gets_the_nearest_name() {
     // Edit distance (an insertion, deletion, substitution or swap of neighbours counts 1),
     // at most 2, ties to the first name in byte order; the nearest three, by hand:
-    //   mhp: mph 1 (a swap), kph 2, m/s 2     kks: km/s 2, kn 2, kph 2
+    //   mhp: mph 1 (a swap), kph 2, m/s 2     kks: kts 1, km/s 2, kn 2
     //   h: kn 2, kph 2, mph 2                 kk: kn 1, kph 2, km/h 3
     //   mk/: km/h 2 (a swap, an insertion), km/s 2, kn 2
     //   mk: kn 2, m/s 2, mph 2                knott: knot 1, knots 1
@@ -26,7 +26,7 @@ fn a_mistyped_unit_gets_the_nearest_name() {
     //   kgx: kg 1                             slgu: slug 1 (a swap)
     for (typed, near) in [
         ("mhp", Some("mph")),
-        ("kks", Some("km/s")),
+        ("kks", Some("kts")),
         ("h", Some("kn")),
         ("kk", Some("kn")),
         ("mk/", Some("km/h")),
@@ -40,6 +40,39 @@ fn a_mistyped_unit_gets_the_nearest_name() {
     assert_eq!(suggestion("kgxyz", Dimension::Mass), None);
     assert_eq!(suggestion("kgx", Dimension::Mass), Some("kg"));
     assert_eq!(suggestion("slgu", Dimension::Mass), Some("slug"));
+}
+
+#[test]
+fn the_spellings_sources_use_are_units_with_their_exact_factors() {
+    // Issue 45 §5: each spelling against its exact size in m/s, by the definitions
+    // (1 ft = 0.3048 m, 1 mi = 1609.344 m, 1 nautical mile = 1852 m, 1 h = 3600 s):
+    //   fps = ft/sec = 0.3048 = 381/1250; m/sec = 1; km/hr = kph = 1000/3600 = 5/18;
+    //   km/sec = 1000; mi/h = mi/hr = 1609.344/3600 = 0.44704 = 1397/3125;
+    //   kts = 1852/3600 = 463/900; cm/sec = 1/100.
+    use collide::values::rational::{int, ratio};
+    for (name, si, printed) in [
+        ("fps", ratio(381, 1250), "ft/s"),
+        ("ft/sec", ratio(381, 1250), "ft/s"),
+        ("m/sec", int(1), "m/s"),
+        ("kph", ratio(5, 18), "km/h"),
+        ("km/hr", ratio(5, 18), "km/h"),
+        ("km/sec", int(1000), "km/s"),
+        ("mi/h", ratio(1397, 3125), "mph"),
+        ("mi/hr", ratio(1397, 3125), "mph"),
+        ("kts", ratio(463, 900), "knot"),
+        ("cm/sec", ratio(1, 100), "cm/s"),
+    ] {
+        let unit = lookup(name, Dimension::Velocity).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(unit.si(), si, "{name}");
+        assert_eq!(unit.name(), printed, "{name}");
+    }
+    // Typed on the command line: a 2 kg ball at 15 fps (= 15 ft/s) stopping a 1 kg one at rest,
+    // elastic: v1' = (2 - 1)/3 * 15 = 5 ft/s, v2' = 2*2/3 * 15 = 20 ft/s, printed in ft/s.
+    let out = common::stdout(&["solve", "-m", "2 kg,1 kg", "-v", "15 fps,0", "--exact"]);
+    assert!(
+        out.starts_with("FIN: v1' = 5 ft/s, v2' = 20 ft/s\n"),
+        "{out}"
+    );
 }
 
 #[test]
@@ -222,4 +255,71 @@ fn converting_needs_units_on_both_sides() {
         assert!(out.stdout.is_empty(), "{args:?}");
         assert!(err.contains(want), "{args:?}: {err}");
     }
+}
+
+/// Issue 45 §5: a value may be a sum of like quantities (a rider and a bike as one body),
+/// with or without spaces, in mixed units, exactly; `1e+3` keeps its meaning; a bad part is
+/// named.
+#[test]
+fn sums_of_like_quantities_are_one_value() {
+    use collide::values::rational::{int, ratio};
+    use collide::values::units::parse;
+    // A 60 kg rider on a 10 kg bike at 5 m/s sticks to a 5 kg cart at rest: the same case as
+    // 70 kg, bit for bit, however the sum is written.
+    let json = |m: &str, v: &str| {
+        common::stdout(&["solve", "-m", m, "-v", v, "-e", "0", "--format", "json"])
+    };
+    let want = json("70 kg,5 kg", "5 m/s,0");
+    for m in [
+        "60 kg+10 kg,5 kg",
+        "60 kg + 10 kg,5 kg",
+        "60kg+10kg,5kg",
+        "50 kg + 10 kg + 10 kg,5 kg",
+    ] {
+        assert_eq!(json(m, "5 m/s,0"), want, "{m}");
+    }
+    // Velocities too: 3 m/s + 2 m/s is 5 m/s.
+    assert_eq!(json("70 kg,5 kg", "3 m/s + 2 m/s,0"), want);
+    // Exact: 0.1 + 0.2 is 3/10 (binary64 would give 0.30000000000000004), and mixed units are
+    // converted exactly to the first part's: 1 kg + 500 g = 3/2 kg; 1 m + 50 cm = 3/2 m.
+    let exact = |text: &str, d: Dimension| {
+        let q = parse(text, d).unwrap_or_else(|e| panic!("{text}: {e}"));
+        (q.number.exact(), q.unit.map(|u| u.name()))
+    };
+    assert_eq!(
+        exact("0.1 kg + 0.2 kg", Dimension::Mass),
+        (ratio(3, 10), Some("kg"))
+    );
+    assert_eq!(exact("0.1+0.2", Dimension::Mass), (ratio(3, 10), None));
+    assert_eq!(
+        exact("1 kg + 500 g", Dimension::Mass),
+        (ratio(3, 2), Some("kg"))
+    );
+    assert_eq!(
+        exact("1 m + 50 cm", Dimension::Length),
+        (ratio(3, 2), Some("m"))
+    );
+    // An exponent's + is an exponent: 1e+3 g + 1 kg = 1000 g + 1000 g = 2000 g; +4 is 4.
+    assert_eq!(
+        exact("1e+3 g + 1 kg", Dimension::Mass),
+        (int(2000), Some("g"))
+    );
+    assert_eq!(exact("1e+3", Dimension::Mass), (int(1000), None));
+    assert_eq!(exact("+4", Dimension::Mass), (int(4), None));
+    // A bad part is named; units on every part or none; a sum has no heights.
+    for (text, needles) in [
+        ("60 kg + 10 kgg", &["'10 kgg'", "did you mean 'kg'"][..]),
+        ("60 kg + abc", &["'abc'"][..]),
+        ("60 kg + 10", &["every part of a sum or to none"][..]),
+        ("60 kg +", &["its part ''"][..]),
+        ("60 kg + 2 m/s", &["'2 m/s'", "velocity"][..]),
+    ] {
+        let e = parse(text, Dimension::Mass).unwrap_err().to_string();
+        for n in needles {
+            assert!(e.contains(n), "{text}: {n} in {e}");
+        }
+    }
+    let (code, _, err) = common::run(&["solve", "-m", "60 kg+abc,5 kg", "-v", "5 m/s,0"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("'abc'"), "{err}");
 }

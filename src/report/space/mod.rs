@@ -26,6 +26,7 @@ use crate::values::units::Units;
 
 use super::text::Block;
 
+pub mod changes;
 pub mod frames;
 pub mod solved;
 
@@ -37,6 +38,8 @@ pub struct Show {
     pub forms: bool,
     pub energy: bool,
     pub angles: bool,
+    /// Each body's dv, impulse and kinetic energy (`changes`).
+    pub changes: bool,
 }
 
 impl Show {
@@ -48,6 +51,7 @@ impl Show {
             forms: false,
             energy: false,
             angles: false,
+            changes: false,
         }
     }
 
@@ -59,6 +63,7 @@ impl Show {
             forms: true,
             energy: true,
             angles: true,
+            changes: true,
         }
     }
 }
@@ -71,6 +76,7 @@ impl Default for Show {
             forms: false,
             energy: true,
             angles: true,
+            changes: false,
         }
     }
 }
@@ -421,6 +427,9 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
             b.render(&mut out);
         }
     }
+    if show.changes {
+        changes::text(o, style, units).render(&mut out);
+    }
     style.checked(out)
 }
 
@@ -576,6 +585,9 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
             .map(|i| angle_between(&o.v_in[i], &o.fin[i]).unwrap_or(0.0))
             .collect();
         m.insert("turned_deg".into(), json!(turned));
+    }
+    if show.changes {
+        m.insert("changes".into(), changes::json(o, style));
     }
     style.checked(Value::Object(m))
 }

@@ -300,7 +300,11 @@ fn mass_text(posed: &Posed, slot: usize) -> String {
             case.inertia().entries()[slot][slot].clone(),
             case.units.mass,
         ),
-        Posed::Wall(w, _) => (w.mass.clone(), w.units.mass),
+        // A ball whose mass is not given: `?` as typed.
+        Posed::Wall(w, _) => match &w.mass {
+            Some(m) => (m.clone(), w.units.mass),
+            None => return "?".into(),
+        },
         Posed::Separation(s, _) => (s.masses[slot].clone(), s.units.mass),
         Posed::Separations(pair) => (pair[0].0.masses[slot].clone(), pair[0].0.units.mass),
     };
@@ -317,7 +321,7 @@ fn mass_of(posed: &Posed, slot: usize) -> Option<(bool, Q)> {
             case.inertia().entries()[slot][slot].exact(),
             case.units.mass,
         ),
-        Posed::Wall(w, _) if w.ball() == slot => (w.m(), w.units.mass),
+        Posed::Wall(w, _) if w.ball() == slot => (w.m()?, w.units.mass),
         Posed::Wall(..) => return None,
         Posed::Separation(s, _) => (s.masses[slot].exact(), s.units.mass),
         Posed::Separations(pair) => (pair[0].0.masses[slot].exact(), pair[0].0.units.mass),

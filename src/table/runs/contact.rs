@@ -228,6 +228,14 @@ impl Kind for ContactSweep {
         )
     }
 
+    /// The contacts and the solver's work: steps, rejected steps, right-hand sides, Jacobians.
+    fn counts(&self, col: Col) -> bool {
+        matches!(
+            col,
+            Col::Contacts | Col::Steps | Col::Rejected | Col::RhsEvals | Col::Jacobians
+        )
+    }
+
     fn value(&self, col: Col, o: &Outcome) -> Option<f64> {
         let run = &o.run;
         let contact = |k: usize| run.contacts.get(k - 1);

@@ -80,6 +80,10 @@ pub trait Kind: Sync {
     fn column_forms(&self) -> String;
     /// A column's value for a run: `None` where it has none (a contact that did not happen).
     fn value(&self, col: Self::Col, out: &Self::Out) -> Option<f64>;
+    /// Whether a column counts (collisions, steps): written as an integer in every format.
+    fn counts(&self, _col: Self::Col) -> bool {
+        false
+    }
     /// Runs of microseconds (an impact, not an integration): solved and formatted in chunks
     /// in parallel, as `collide sweep` on a line, rather than in batches sized to a second.
     fn cheap(&self) -> bool {
@@ -442,6 +446,15 @@ pub fn cells<K: Kind>(
         cells.push(cell);
     }
     Ok((cells, names))
+}
+
+/// Which columns count (collisions, steps; `Kind::counts`), for
+/// [`RowWriter::with_integers`].
+pub fn counts<K: Kind>(kind: &K, cells: &[Cell<K::Col>]) -> Vec<bool> {
+    cells
+        .iter()
+        .map(|c| matches!(c, Cell::Of(col) if kind.counts(*col)))
+        .collect()
 }
 
 /// Where the `error` column is.

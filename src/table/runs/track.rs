@@ -160,6 +160,15 @@ impl Kind for TrackSweep {
         )
     }
 
+    /// The counts of collisions. Not `pi`: a count of pi billiards for any mass ratio,
+    /// beyond 2^53 (and i64) for a ratio past about 1e32, so a float like `time`.
+    fn counts(&self, col: Col) -> bool {
+        matches!(
+            col,
+            Col::Collisions | Col::PairCollisions | Col::WallCollisions | Col::Simultaneous
+        )
+    }
+
     fn value(&self, col: Col, (track, run): &(Track, Run)) -> Option<f64> {
         Some(match col {
             Col::Collisions => run.collisions as f64,

@@ -1,0 +1,117 @@
+//! `--show changes` in the plane, in space and for N bodies on a line (issue 45 §5): each body's
+//! change of velocity `dv_i = v_i' - v_i`, impulse `dp_i = m_i dv_i` (they sum to zero, momentum
+//! kept), kinetic energy before and after, `1/2 m_i |v_i|^2` and `1/2 m_i |v_i'|^2`, its change,
+//! and the share of the energy lost, `(KE_IN - KE_FIN) / KE_IN`: the two-body rail's section
+//! (`report::changes`), body by body. Exact, rounded once.
+
+use serde_json::{Map, Value};
+
+use super::{Style, vector};
+use crate::report::text::Block;
+use crate::space::outcome::{Outcome, dot, sub};
+use crate::values::rational::{Q, half};
+use crate::values::units::Units;
+
+/// One body's change of velocity, impulse, and kinetic energy before and after.
+struct Change {
+    dv: Vec<Q>,
+    dp: Vec<Q>,
+    ke_in: Q,
+    ke_fin: Q,
+}
+
+/// Body `i`'s change.
+fn body(o: &Outcome, i: usize) -> Change {
+    let m = &o.masses[i];
+    let ke = |v: &[Q]| half() * m * dot(v, v);
+    Change {
+        dv: sub(&o.fin[i], &o.v_in[i]),
+        dp: o.impulse(i),
+        ke_in: ke(&o.v_in[i]),
+        ke_fin: ke(&o.fin[i]),
+    }
+}
+
+/// `lost / KE_IN`, when anything moved before.
+fn lost_fraction(o: &Outcome) -> Option<Q> {
+    let ke = o.ke_in();
+    (ke != Q::ZERO).then(|| o.lost() / ke)
+}
+
+/// The section as text: a row per body and quantity.
+pub fn text(o: &Outcome, style: &Style, units: &Units) -> Block {
+    let a = o.approx;
+    let e = |q: &Q| style.show(&style.energy(q), a);
+    let impulse = match (units.mass, units.velocity) {
+        (Some(_), Some(_)) => format!("impulse in {}, ", units.impulse()),
+        _ => String::new(),
+    };
+    let mut b = Block::new(format!(
+        "Changes (each body; {impulse}energies in {})",
+        units.energy()
+    ));
+    let n = o.bodies();
+    let all: Vec<_> = (0..n).map(|i| body(o, i)).collect();
+    for (i, c) in all.iter().enumerate() {
+        let k = i + 1;
+        b.row(format!("dv{k} = v{k}' - v{k}"), vector(style, &c.dv, a), "");
+    }
+    for (i, c) in all.iter().enumerate() {
+        let k = i + 1;
+        let note = if k == n { "the impulses sum to 0" } else { "" };
+        b.row(format!("dp{k} = m{k} dv{k}"), vector(style, &c.dp, a), note);
+    }
+    for (i, c) in all.iter().enumerate() {
+        let k = i + 1;
+        b.row(
+            format!("KE{k}: IN, FIN"),
+            format!("{}, {}", e(&c.ke_in), e(&c.ke_fin)),
+            format!("1/2 m{k} |v{k}|^2, 1/2 m{k} |v{k}'|^2"),
+        );
+    }
+    for (i, c) in all.iter().enumerate() {
+        let k = i + 1;
+        b.row(format!("dKE{k}"), e(&(&c.ke_fin - &c.ke_in)), "");
+    }
+    if let Some(f) = lost_fraction(o) {
+        // As a percentage too, of the exact share (`--exact` prints the fraction alone).
+        let percent = if style.exact {
+            String::new()
+        } else {
+            format!("= {} %", style.show(&(&f * Q::from(100)), a))
+        };
+        b.row("lost / KE_IN", style.show(&f, a), percent);
+    }
+    b
+}
+
+/// The section as JSON: `dv`, `impulse` (per-body vectors), `ke_in`, `ke_fin`, `dke` (per
+/// body) and `lost_fraction`.
+pub fn json(o: &Outcome, style: &Style) -> Value {
+    let a = o.approx;
+    let all: Vec<_> = (0..o.bodies()).map(|i| body(o, i)).collect();
+    let vecs = |pick: fn(&Change) -> &Vec<Q>| {
+        Value::Array(
+            all.iter()
+                .map(|c| Value::Array(pick(c).iter().map(|x| style.json(x, a)).collect()))
+                .collect(),
+        )
+    };
+    let energies = |pick: fn(&Change) -> Q| {
+        Value::Array(
+            all.iter()
+                .map(|c| style.json(&style.energy(&pick(c)), a))
+                .collect(),
+        )
+    };
+    let mut m = Map::new();
+    m.insert("dv".into(), vecs(|c| &c.dv));
+    m.insert("impulse".into(), vecs(|c| &c.dp));
+    m.insert("ke_in".into(), energies(|c| c.ke_in.clone()));
+    m.insert("ke_fin".into(), energies(|c| c.ke_fin.clone()));
+    m.insert("dke".into(), energies(|c| &c.ke_fin - &c.ke_in));
+    if let Some(f) = lost_fraction(o) {
+        m.insert("lost_fraction".into(), style.json(&f, a));
+    }
+    Value::Object(m)
+}
