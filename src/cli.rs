@@ -642,6 +642,11 @@ pub struct RigidArgs {
         help_heading = "Rigid bodies"
     )]
     pub tangential_restitution: Option<Number>,
+
+    /// The bodies join: the ball lodges at the contact point and the pair moves on as one rigid
+    /// body (e = 0 and no slip); prints the combined mass, centre and inertia
+    #[arg(long, help_heading = "Rigid bodies")]
+    pub join: bool,
 }
 
 impl RigidArgs {
@@ -660,6 +665,7 @@ impl RigidArgs {
             || self.spin.is_some()
             || self.law.is_some()
             || self.tangential_restitution.is_some()
+            || self.join
     }
 }
 
