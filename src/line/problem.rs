@@ -14,7 +14,7 @@ use crate::line::unknowns::{Solved, UnknownError, Var};
 use crate::line::wall::{WallCase, WallProblem};
 use crate::values::derived::Derived;
 use crate::values::number::{Given, Number, NumberError};
-use crate::values::units::{Pair, Quantity, ResolveError, Units, resolve};
+use crate::values::units::{Pair, Quantity, ResolveError, Unit, Units, resolve};
 
 /// The typed values of a problem.
 #[derive(Clone, Debug)]
@@ -37,6 +37,9 @@ pub struct Problem {
     pub exact: bool,
     /// What the problem gives beyond masses, velocities and restitution (`line::knowns`).
     pub knowns: Knowns,
+    /// The unit speeds are printed in (`--velocity-unit`): every velocity is converted to it
+    /// exactly before the problem is solved, so every output renders the one solution in it.
+    pub velocity_unit: Option<&'static Unit>,
 }
 
 /// Knowns a problem may give beyond masses, velocities and restitution, as typed.
@@ -130,6 +133,11 @@ pub enum ProblemError {
         "--total-mass gives m1 + m2: mark exactly one mass '?' (-m '?,5.9 kg'), the one it fixes"
     )]
     TotalMass,
+    #[error(
+        "--velocity-unit {0}: the velocity {1} has no unit to convert from: give every velocity \
+         its unit ('35 mph')"
+    )]
+    VelocityUnit(&'static str, String),
     #[error("--separation-speed: {0}")]
     SeparationSpeed(&'static str),
     #[error("two walls: at most one body can be immovable")]
@@ -240,6 +248,9 @@ impl Problem {
         let separation_typed = self.knowns.separation_speed.clone().map(Given::Known);
         let has_separation = separation_typed.is_some();
         velocities.extend(separation_typed);
+        if let Some(unit) = self.velocity_unit {
+            velocities = in_unit(velocities, unit)?;
+        }
         // The total mass is resolved with the masses, in their unit; one of them must be `?`.
         let total_typed = self.knowns.total_mass.clone().map(Given::Known);
         if total_typed.is_some() && masses.iter().filter(|m| m.is_unknown()).count() != 1 {
@@ -260,6 +271,10 @@ impl Problem {
         };
         let units = match self.energy_unit {
             Some(u) => units.with_energy_unit(u)?,
+            // Speeds in another unit keep energies in J when the masses have a unit.
+            None if self.velocity_unit.is_some() && units.mass.is_some() => {
+                units.with_energy_unit(crate::values::units::energy_unit("J")?)?
+            }
             None => units,
         };
         if let Some(wall) = m.iter().position(Given::is_wall) {
@@ -587,6 +602,42 @@ fn solved_number(var: Var, q: &Q) -> Result<Number, ProblemError> {
         text: crate::values::quantity::fraction(q),
         error,
     })
+}
+
+/// Velocities converted exactly to `unit` (`--velocity-unit`); each needs a unit of its own
+/// (a bare 0 is 0 in any).
+fn in_unit(
+    velocities: Vec<Given<Quantity>>,
+    unit: &'static Unit,
+) -> Result<Vec<Given<Quantity>>, ProblemError> {
+    velocities
+        .into_iter()
+        .map(|v| match v {
+            Given::Known(q) if q.number.value() == 0.0 && q.unit.is_none() => Ok(Given::Known(q)),
+            Given::Known(q) => {
+                let Some(from) = q.unit else {
+                    return Err(ProblemError::VelocityUnit(
+                        unit.name(),
+                        q.number.to_string(),
+                    ));
+                };
+                let value = q.number.exact() * from.si() / unit.si();
+                let number = crate::values::quantity::number_of(&value).map_err(|error| {
+                    ProblemError::Solved {
+                        var: Var::V1,
+                        text: crate::values::quantity::fraction(&value),
+                        error,
+                    }
+                })?;
+                Ok(Given::Known(Quantity {
+                    number,
+                    unit: Some(unit),
+                    height: false,
+                }))
+            }
+            other => Ok(other),
+        })
+        .collect()
 }
 
 /// `e = |S| / |v1 - v2|` from the relative speed of separation `S` (issue 42 section 5): both
