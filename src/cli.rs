@@ -531,6 +531,11 @@ pub struct SolveArgs {
     #[command(flatten)]
     pub case: CaseArgs,
 
+    /// Print speeds in this unit on a rail: m/s, km/h, mph (mi/h), ft/s, knot... (the velocities
+    /// need units; energies then in J unless --energy-unit says otherwise)
+    #[arg(long, value_name = "UNIT", value_parser = |s: &str| collide::values::units::lookup(s.trim(), collide::values::units::Dimension::Velocity).map_err(|e| e.to_string()))]
+    pub velocity_unit: Option<&'static collide::values::units::Unit>,
+
     /// Sections to print, comma-separated [default: vectors,forms,energy; in the plane, in
     /// space and for N bodies: vectors,energy,angles]
     #[arg(long, value_enum, value_delimiter = ',', value_name = "SECTIONS")]
@@ -642,6 +647,11 @@ pub struct RigidArgs {
         help_heading = "Rigid bodies"
     )]
     pub tangential_restitution: Option<Number>,
+
+    /// The bodies join: the ball lodges at the contact point and the pair moves on as one rigid
+    /// body (e = 0 and no slip); prints the combined mass, centre and inertia
+    #[arg(long, help_heading = "Rigid bodies")]
+    pub join: bool,
 }
 
 impl RigidArgs {
@@ -660,6 +670,7 @@ impl RigidArgs {
             || self.spin.is_some()
             || self.law.is_some()
             || self.tangential_restitution.is_some()
+            || self.join
     }
 }
 

@@ -37,6 +37,19 @@ pub struct KnownArgs {
     #[arg(long, value_name = "L", help_heading = "Homework knowns", allow_hyphen_values = true,
           value_parser = |s: &str| collide::values::derived::length(s, "--length"))]
     pub length: Option<(collide::values::rational::Q, String)>,
+
+    /// The total mass m1 + m2 with one mass given as '?', e.g. '12 kg' (in the masses' units):
+    /// fixes that mass
+    #[arg(long, value_name = "M", help_heading = "Homework knowns",
+          value_parser = |s: &str| collide::values::units::parse(s, collide::values::units::Dimension::Mass))]
+    pub total_mass: Option<collide::values::units::Quantity>,
+
+    /// The relative speed of separation |f1 - f2|, e.g. '1.5 m/s' (in the velocities' units):
+    /// e = |S| / |v1 - v2| (a separation from rest has no e)
+    #[arg(long, value_name = "S", help_heading = "Homework knowns", allow_hyphen_values = true,
+          conflicts_with = "restitution",
+          value_parser = |s: &str| collide::values::units::parse_plain(s, collide::values::units::Dimension::Velocity))]
+    pub separation_speed: Option<collide::values::units::Quantity>,
 }
 
 impl KnownArgs {
@@ -70,6 +83,8 @@ impl KnownArgs {
             pass_through: self.pass_through,
             impulse: self.impulse.clone(),
             released: self.released.clone(),
+            total_mass: self.total_mass.clone(),
+            separation_speed: self.separation_speed.clone(),
         }
     }
 }

@@ -115,6 +115,7 @@ impl CaseArgs {
             energy_unit: self.energy_unit,
             exact,
             knowns: Default::default(),
+            velocity_unit: None,
         })
     }
 

@@ -93,6 +93,11 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
             .transpose()
             .map_err(Into::into)
     };
+    if rigid.join && case.restitution.is_some() {
+        anyhow::bail!(
+            "--join makes the bodies one rigid body, which is e = 0 with no slip: leave out -e"
+        );
+    }
     let restitution = match &case.restitution {
         None => Number::from_f64(1.0)?,
         Some(collide::values::number::Given::Known(r)) => r.number().clone(),
@@ -113,6 +118,7 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
             friction: rigid.friction.clone(),
             law: rigid.law,
             tangential_restitution: rigid.tangential_restitution.clone(),
+            join: rigid.join,
         },
         exact,
         // The homework shapes are in the plane: no ODE (a scene's `tol` sets it in space).

@@ -45,6 +45,13 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              two bodies)"
         );
     }
+    let plane = args.case.spatial() || args.fin.as_ref().is_some_and(|f| f.pair.is_none());
+    if args.velocity_unit.is_some() && (rigid || plane) {
+        anyhow::bail!(
+            "--velocity-unit is for two bodies on a rail (not rigid bodies, the plane, space or \
+             more than two bodies)"
+        );
+    }
     if rigid {
         return super::rigid_solve::run(&args);
     }
@@ -56,6 +63,7 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     args.frame.on_line()?;
     let mut problem = args.case.problem(args.fin.as_ref(), args.exact)?;
     problem.knowns = args.knowns.knowns();
+    problem.velocity_unit = args.velocity_unit;
     let posed = problem.solve(args.case.inertia.clone())?;
     let mut sections = Sections::new(if args.show.is_empty() {
         collide::report::Section::DEFAULT.to_vec()

@@ -9,6 +9,8 @@
 //!   momentum `-J = m1 (f1 - v1)` (`impulse1`). With it these two laws replace momentum (their
 //!   sum), so one more value can be unknown.
 //!
+//! - `--total-mass M`: `m1 + m2 = M` (law `total mass`) fixes one mass given as `?`.
+//!
 //! Every law is linear in each single value, so the unknowns are found one law at a time (a law
 //! with one unknown left gives it), then, for what remains, two laws in two unknowns by Cramer's
 //! rule; laws left over are checked.
@@ -29,6 +31,8 @@ pub struct Laws {
     pub pass_through: bool,
     /// The impulse on body 2, `J = m2 (f2 - v2) = -m1 (f1 - v1)`, in the case's units.
     pub impulse: Option<Q>,
+    /// The total mass `m1 + m2`, in the case's units (`--total-mass`).
+    pub total_mass: Option<Q>,
 }
 
 /// A law with its name and the values it holds.
@@ -47,6 +51,8 @@ pub fn solve(known: [Option<Q>; 7], laws: &Laws) -> Result<Solved, UnknownError>
     let j = laws.impulse.clone().unwrap_or_default();
     let impulse_1 = |x: &[Q; 7]| &x[0] * (&x[4] - &x[2]) + &j;
     let impulse_2 = |x: &[Q; 7]| &x[1] * (&x[5] - &x[3]) - &j;
+    let total = laws.total_mass.clone().unwrap_or_default();
+    let total_mass = |x: &[Q; 7]| &x[0] + &x[1] - &total;
     // Bodies that start together: restitution says nothing (e undefined, a separation).
     let together = known[Var::V1 as usize].is_some()
         && known[Var::V1 as usize] == known[Var::V2 as usize]
@@ -68,6 +74,13 @@ pub fn solve(known: [Option<Q>; 7], laws: &Laws) -> Result<Solved, UnknownError>
             name: "momentum",
             vars: &[Var::M1, Var::M2, Var::V1, Var::V2, Var::F1, Var::F2],
             law: &momentum,
+        });
+    }
+    if laws.total_mass.is_some() {
+        named.push(Named {
+            name: "total mass",
+            vars: &[Var::M1, Var::M2],
+            law: &total_mass,
         });
     }
     if !laws.pass_through && !together {
@@ -249,6 +262,7 @@ mod tests {
         let through = Laws {
             pass_through: true,
             impulse: None,
+            total_mass: None,
         };
         let s = run(["0.005", "1", "400", "0", "?", "1.5", "?"], &through).unwrap();
         assert_eq!(show(&s, Var::F1), "100");
@@ -275,6 +289,7 @@ mod tests {
         let j = Laws {
             pass_through: false,
             impulse: q("12/5"),
+            total_mass: None,
         };
         let s = run(["3", "1", "2", "-1", "?", "?", "?"], &j).unwrap();
         assert_eq!(
@@ -293,6 +308,7 @@ mod tests {
         let big = Laws {
             pass_through: false,
             impulse: q("-1"),
+            total_mass: None,
         };
         let e = run(["3", "1", "2", "-1", "?", "?", "?"], &big).unwrap_err();
         assert!(e.to_string().contains("e = -13/9 < 0"), "{e}");

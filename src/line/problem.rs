@@ -14,7 +14,7 @@ use crate::line::unknowns::{Solved, UnknownError, Var};
 use crate::line::wall::{WallCase, WallProblem};
 use crate::values::derived::Derived;
 use crate::values::number::{Given, Number, NumberError};
-use crate::values::units::{Pair, ResolveError, Units, resolve};
+use crate::values::units::{Pair, Quantity, ResolveError, Unit, Units, resolve};
 
 /// The typed values of a problem.
 #[derive(Clone, Debug)]
@@ -37,6 +37,9 @@ pub struct Problem {
     pub exact: bool,
     /// What the problem gives beyond masses, velocities and restitution (`line::knowns`).
     pub knowns: Knowns,
+    /// The unit speeds are printed in (`--velocity-unit`): every velocity is converted to it
+    /// exactly before the problem is solved, so every output renders the one solution in it.
+    pub velocity_unit: Option<&'static Unit>,
 }
 
 /// Knowns a problem may give beyond masses, velocities and restitution, as typed.
@@ -48,6 +51,11 @@ pub struct Knowns {
     pub impulse: Option<Derived>,
     /// The energy released in a separation (`--released`).
     pub released: Option<Derived>,
+    /// The total mass `m1 + m2`, with one mass `?` (`--total-mass`).
+    pub total_mass: Option<Quantity>,
+    /// The relative speed of separation `|f1 - f2|`: `e = |S| / |v1 - v2|`
+    /// (`--separation-speed`).
+    pub separation_speed: Option<Quantity>,
 }
 
 impl Knowns {
@@ -57,6 +65,8 @@ impl Knowns {
         (self.pass_through.then_some("--pass-through"))
             .or(flag(&self.impulse))
             .or(flag(&self.released))
+            .or(self.total_mass.as_ref().map(|_| "--total-mass"))
+            .or(self.separation_speed.as_ref().map(|_| "--separation-speed"))
     }
 }
 
@@ -119,6 +129,17 @@ pub enum ProblemError {
          only: compute in binary64 (within an ulp), or choose E with 2 E / mu a square"
     )]
     IrrationalRelease { text: String, square: String },
+    #[error(
+        "--total-mass gives m1 + m2: mark exactly one mass '?' (-m '?,5.9 kg'), the one it fixes"
+    )]
+    TotalMass,
+    #[error(
+        "--velocity-unit {0}: the velocity {1} has no unit to convert from: give every velocity \
+         its unit ('35 mph')"
+    )]
+    VelocityUnit(&'static str, String),
+    #[error("--separation-speed: {0}")]
+    SeparationSpeed(&'static str),
     #[error("two walls: at most one body can be immovable")]
     TwoWalls,
     #[error("a wall needs --masses M1,wall (not --inertia)")]
@@ -222,10 +243,38 @@ impl Problem {
                 other => other,
             });
         }
-        let velocities = speeds;
-        let (m, v, units) = resolve(&masses, &velocities, self.si)?;
+        let mut velocities = speeds;
+        // The speed of separation is resolved with the velocities, in their unit.
+        let separation_typed = self.knowns.separation_speed.clone().map(Given::Known);
+        let has_separation = separation_typed.is_some();
+        velocities.extend(separation_typed);
+        if let Some(unit) = self.velocity_unit {
+            velocities = in_unit(velocities, unit)?;
+        }
+        // The total mass is resolved with the masses, in their unit; one of them must be `?`.
+        let total_typed = self.knowns.total_mass.clone().map(Given::Known);
+        if total_typed.is_some() && masses.iter().filter(|m| m.is_unknown()).count() != 1 {
+            return Err(ProblemError::TotalMass);
+        }
+        let (mut m, mut v, units) = resolve(
+            &[masses.clone(), total_typed.into_iter().collect()].concat(),
+            &velocities,
+            self.si,
+        )?;
+        let separation = match has_separation {
+            true => v.pop().and_then(|s| s.known().map(Number::exact)),
+            false => None,
+        };
+        let total = match self.knowns.total_mass {
+            Some(_) => m.pop().and_then(|t| t.known().map(Number::exact)),
+            None => None,
+        };
         let units = match self.energy_unit {
             Some(u) => units.with_energy_unit(u)?,
+            // Speeds in another unit keep energies in J when the masses have a unit.
+            None if self.velocity_unit.is_some() && units.mass.is_some() => {
+                units.with_energy_unit(crate::values::units::energy_unit("J")?)?
+            }
             None => units,
         };
         if let Some(wall) = m.iter().position(Given::is_wall) {
@@ -242,11 +291,25 @@ impl Problem {
             }
             return self.solve_wall(wall, &m, &v, units);
         }
-        let laws = self.laws(&units)?;
+        let laws = Laws {
+            total_mass: total,
+            ..self.laws(&units)?
+        };
         // Any known beyond masses and velocities (--released too, which no linear law carries)
-        // makes the final velocities unknowns: `--released E` alone is `--fin '?,?'`.
-        let knowns = self.knowns.first_flag().is_some();
-        let e = match &self.restitution {
+        // makes the final velocities unknowns: `--released E` alone is `--fin '?,?'`. The total
+        // mass is a known of the masses: it leaves e as given (elastic by default).
+        let knowns = Knowns {
+            total_mass: None,
+            separation_speed: None,
+            ..self.knowns.clone()
+        }
+        .first_flag()
+        .is_some();
+        let restitution = match separation {
+            Some(s) => Some(Given::Known(restitution_of_separation(&s, &v)?)),
+            None => self.restitution.clone(),
+        };
+        let e = match &restitution {
             Some(r) => r.clone().map(|r| r.number().clone()),
             None if self.fin.is_some() || knowns => Given::Unknown,
             None => Given::Known(Restitution::elastic().number().clone()),
@@ -312,6 +375,7 @@ impl Problem {
         Ok(Laws {
             pass_through: self.knowns.pass_through,
             impulse,
+            total_mass: None,
         })
     }
 
@@ -549,6 +613,62 @@ fn solved_number(var: Var, q: &Q) -> Result<Number, ProblemError> {
             text: crate::values::quantity::fraction(q),
             error,
         })
+}
+
+/// Velocities converted exactly to `unit` (`--velocity-unit`); each needs a unit of its own
+/// (a bare 0 is 0 in any).
+fn in_unit(
+    velocities: Vec<Given<Quantity>>,
+    unit: &'static Unit,
+) -> Result<Vec<Given<Quantity>>, ProblemError> {
+    velocities
+        .into_iter()
+        .map(|v| match v {
+            Given::Known(q) if q.number.value() == 0.0 && q.unit.is_none() => Ok(Given::Known(q)),
+            Given::Known(q) => {
+                let Some(from) = q.unit else {
+                    return Err(ProblemError::VelocityUnit(
+                        unit.name(),
+                        q.number.to_string(),
+                    ));
+                };
+                let value = q.number.exact() * from.si() / unit.si();
+                let number = crate::values::quantity::number_of(&value).map_err(|error| {
+                    ProblemError::Solved {
+                        var: Var::V1,
+                        text: crate::values::quantity::fraction(&value),
+                        error,
+                    }
+                })?;
+                Ok(Given::Known(Quantity {
+                    number,
+                    unit: Some(unit),
+                    height: false,
+                }))
+            }
+            other => Ok(other),
+        })
+        .collect()
+}
+
+/// `e = |S| / |v1 - v2|` from the relative speed of separation `S` (issue 42 section 5): both
+/// initial velocities must be given and differ (bodies that start together have no e).
+fn restitution_of_separation(s: &Q, v: &[Given<Number>]) -> Result<Restitution, ProblemError> {
+    use num_traits::Signed;
+    let (Some(v1), Some(v2)) = (v[0].known(), v[1].known()) else {
+        return Err(ProblemError::SeparationSpeed(
+            "give both initial velocities (e = |S| / |v1 - v2|)",
+        ));
+    };
+    let approach = (v1.exact() - v2.exact()).abs();
+    if approach.is_zero() {
+        return Err(ProblemError::SeparationSpeed(
+            "the bodies start together (v1 = v2), so e is undefined: a separation from rest is \
+             fixed by --fin or --released, not by e",
+        ));
+    }
+    let e = solved_number(Var::E, &(s.abs() / approach))?;
+    Ok(Restitution::new(e)?)
 }
 
 /// The case of resolved values, none of them unknown.

@@ -99,6 +99,7 @@ pub fn svg(o: &Outcome) -> String {
             o.impact.mode.name()
         ),
         Tangential::Smooth => format!("e = {}, no friction", short(x(&p.e))),
+        Tangential::Join => "joined: e = 0, no slip".into(),
     };
     svg.heading(
         LEFTS[0],
@@ -339,7 +340,9 @@ fn impulse_plane(svg: &mut Svg, o: &Outcome) {
             let tt = o.tangential_impulse();
             let end = ((pn, x(&tt[0])), Event::End);
             match o.problem.tangential {
-                Tangential::Rough { .. } => vec![((0.0, 0.0), Event::Start), end],
+                Tangential::Rough { .. } | Tangential::Join => {
+                    vec![((0.0, 0.0), Event::Start), end]
+                }
                 _ => vec![
                     ((0.0, 0.0), Event::Start),
                     ((x(&o.compression_impulse()), 0.0), Event::Compression),

@@ -12,6 +12,7 @@ use std::fmt::Write;
 
 use crate::rigid::algebra::Mat;
 use crate::rigid::body::{Body, Mobility};
+use crate::rigid::join::Joined;
 use crate::rigid::laws::{Mode, Tangential};
 use crate::rigid::outcome::{Energy, Outcome};
 use crate::rigid::units::rpm;
@@ -182,6 +183,9 @@ pub fn header(o: &Outcome, style: &Style, u: &RigidUnits) -> String {
                 .map(|m| format!(", friction limit mu = {}", style.show(m, a)))
                 .unwrap_or_default()
         ),
+        Tangential::Join => {
+            "The bodies join: the ball stays at the contact point (e = 0, no slip: w' = 0)".into()
+        }
     };
     out.push_str(&wrap(&laws, width(), "  "));
     if u.si {
@@ -236,6 +240,9 @@ pub fn text(
     }
     impulse_block(o, style, u).render(&mut out);
     along_block(o, style, u).render(&mut out);
+    if let Some(j) = Joined::of(o) {
+        joined_block(o, &j, style, u).render(&mut out);
+    }
     if show.contains(Section::Vectors) {
         let mut b = Block::new("Velocities and spins (IN, then FIN)");
         for (fin, ms) in [(false, o.v_in()), (true, &o.fin)] {
@@ -331,7 +338,10 @@ fn impulse_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
             },
         );
     }
-    if !matches!(o.problem.tangential, Tangential::Rough { .. }) {
+    if !matches!(
+        o.problem.tangential,
+        Tangential::Rough { .. } | Tangential::Join
+    ) {
         b.row(
             "P_c",
             format!("{}{ns}", style.show(&o.compression_impulse(), a)),
@@ -402,13 +412,59 @@ fn along_block(o: &Outcome, style: &Style, u: &RigidUnits) -> Block {
         format!("{}{}", style.show(&e, o.approx()), energy_unit(u)),
         "1/2 m_eff (v1n - v2n)^2",
     );
-    if o.impact.mode != Mode::Smooth {
+    if !matches!(o.impact.mode, Mode::Smooth | Mode::Joined) {
         b.row(
             "e along n",
             style.show(&o.restitution_along(), a),
             "-(v1n' - v2n') / (v1n - v2n)",
         );
     }
+    b
+}
+
+/// The one body two joined bodies make, and the energy the joining took.
+fn joined_block(o: &Outcome, j: &Joined, style: &Style, u: &RigidUnits) -> Block {
+    let a = o.approx();
+    let mut b = Block::new("The joined body (one rigid body after the impact)");
+    b.row(
+        "M",
+        format!("{}{}", style.show(&j.mass, a), u.suffix("kg")),
+        "m1 + m2",
+    );
+    b.row(
+        "centre",
+        format!("{}{}", vector(style, &j.centre, a), u.suffix("m")),
+        "(m1 x1 + m2 x2)/M",
+    );
+    let (name, about) = match &j.pivot {
+        Some(p) => ("I_p", format!("about the pivot {}", vector(style, p, a))),
+        None => ("I_cm", "about the new centre".to_string()),
+    };
+    b.row(
+        name,
+        format!(
+            "{}{}",
+            matrix_or_scalar(style, &j.inertia, a),
+            u.suffix("kg m^2")
+        ),
+        about,
+    );
+    b.row(
+        "v_cm",
+        format!("{}{}", vector(style, &j.v, a), u.suffix("m/s")),
+        "P / M",
+    );
+    let (value, note) = spin(style, &j.omega, a, u);
+    b.row("omega", value, note);
+    let lost = match o.energy() {
+        Energy::Lost(q) => q,
+        _ => Q::ZERO,
+    };
+    b.row(
+        "lost",
+        format!("{}{}", style.show(&style.energy(&lost), a), energy_unit(u)),
+        "KE_IN - KE_FIN",
+    );
     b
 }
 

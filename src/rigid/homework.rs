@@ -113,6 +113,13 @@ pub enum HomeworkError {
     #[error("a pivoted target: give --hit-at (the distance from the pivot along the target)")]
     HitNeeded,
     #[error(
+        "--join: the striking body lodges at the contact point as a point particle: leave out \
+         --ball"
+    )]
+    JoinBall,
+    #[error("--join makes two bodies one; a {0} does not move: give the body hit with --target")]
+    JoinWall(&'static str),
+    #[error(
         "a target spins with the second value of --spin, and a pivoted one does not slide: give it no velocity"
     )]
     PivotVelocity,
@@ -150,6 +157,14 @@ impl Homework {
             .any(|e| matches!(e, Either::Vector(v) if v.dim() != 2))
         {
             return Err(HomeworkError::Space);
+        }
+        if self.laws.join {
+            if self.ball.is_some() {
+                return Err(HomeworkError::JoinBall);
+            }
+            if let MassTyped::Immovable(word) = &self.masses[1] {
+                return Err(HomeworkError::JoinWall(word));
+            }
         }
         let r = Resolver::new(self.has_unit(), self.exact);
         let spin = |i: usize| -> Result<Vec<Q>, PoseError> {

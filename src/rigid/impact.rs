@@ -94,10 +94,11 @@ impl Problem {
         let n = &self.pair.contact.normal;
         let w = self.w();
         let along = dot(n, &w);
+        if matches!(self.tangential, Tangential::Join) {
+            return self.join(&w, &along);
+        }
         if !along.is_positive() {
-            return Err(ImpactError::NotApproaching(
-                to_f64(&along).map_or_else(|| along.to_string(), crate::values::number::num),
-            ));
+            return Err(not_approaching(&along));
         }
         let k = self.pair.collision_matrix();
         let knn = dot(n, &apply(&k, n));
@@ -110,6 +111,7 @@ impl Problem {
             Tangential::Coulomb(mu) if mu.is_zero() => Ok(self.solve_smooth(lc)),
             Tangential::Coulomb(mu) => self.coulomb(&k, &w, mu, lc),
             Tangential::Rough { beta, mu } => self.rough(&k, &w, beta, mu.as_ref(), lc),
+            Tangential::Join => self.join(&w, &along),
         }
     }
 
@@ -187,6 +189,29 @@ impl Problem {
             compression: from_f64(est.run.compression / len),
             ode: Some(est),
             approx: true,
+            note: None,
+        })
+    }
+
+    /// The bodies join (physics.md section 8): the contact points move together after,
+    /// `w' = w - K P = 0`, so `P = K^-1 w`, exactly. A grazing contact (`n.w = 0`: a bullet
+    /// along a tangent into a rim) joins too; bodies that separate (`n.w < 0`) or do not move
+    /// relative to each other (`w = 0`) do not meet. The normal impulse is all compression.
+    fn join(&self, w: &[Q], along: &Q) -> Result<Impact, ImpactError> {
+        if along.is_negative() || algebra::is_zero(w) {
+            return Err(not_approaching(along));
+        }
+        let k = self.pair.collision_matrix();
+        let kinv = algebra::inverse(&k).ok_or(ImpactError::Held)?;
+        let impulse = apply(&kinv, w);
+        let n = &self.pair.contact.normal;
+        Ok(Impact {
+            compression: dot(&impulse, n) / dot(n, n),
+            impulse,
+            mode: Mode::Joined,
+            path: None,
+            ode: None,
+            approx: self.approx,
             note: None,
         })
     }
@@ -274,6 +299,13 @@ impl Problem {
         let a = (Q::ONE + &self.e) * dot(n, w) / d;
         Some(scale(&algebra::add(n, &scale(q, &rho)), &a))
     }
+}
+
+/// The bodies do not approach: `n.w <= 0`.
+fn not_approaching(along: &Q) -> ImpactError {
+    ImpactError::NotApproaching(
+        to_f64(along).map_or_else(|| along.to_string(), crate::values::number::num),
+    )
 }
 
 /// A unit vector perpendicular to `n`: along `slip` when it has a part across `n`, else any.

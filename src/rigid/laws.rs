@@ -60,6 +60,12 @@ pub enum Tangential {
     /// reverses to `-beta` times itself (`beta = 1`: the ideal superball), `v_n' = -e v_n`,
     /// within a friction limit `mu` when one is given.
     Rough { beta: Q, mu: Option<Q> },
+    /// The bodies join (physics.md section 8): the striking particle lodges at the contact
+    /// point and moves with the body it hit, so the relative velocity of the contact points
+    /// after is zero, `w' = 0` (normal and tangential: `e = 0` and no slip), and
+    /// `P = K^-1 w`. Linear momentum (free) and angular momentum about the pivot (pivoted)
+    /// are kept by construction; it is the rail's `e = 0` along a normal through the centres.
+    Join,
 }
 
 /// How the contact slid during the impact.
@@ -74,6 +80,8 @@ pub enum Mode {
     Slip,
     /// Slip stopped and resumed the other way (in space: in another direction).
     Reverse,
+    /// The bodies joined: one rigid body after (`--join`).
+    Joined,
 }
 
 impl Mode {
@@ -83,6 +91,7 @@ impl Mode {
             Mode::Stick => "stick",
             Mode::Slip => "slip",
             Mode::Reverse => "reverse",
+            Mode::Joined => "joined",
         }
     }
 
@@ -92,6 +101,7 @@ impl Mode {
             Mode::Stick => "the slip stopped and the contact held",
             Mode::Slip => "it slid throughout, one way",
             Mode::Reverse => "the slip stopped, then reversed",
+            Mode::Joined => "one rigid body after: w' = 0",
         }
     }
 }

@@ -11,7 +11,8 @@
 //!   Jacobians; `jacobian`: the contact, `J_n`, `K`, the effective mass;
 //! - `laws`: Newton, Poisson, Stronge; `routh`: friction in the plane (piecewise linear);
 //!   `slip`: friction in space (an ODE in the normal impulse, diffsol); `impact`: one impact by
-//!   the law asked; `outcome`: what follows from it;
+//!   the law asked; `outcome`: what follows from it; `join`: the one body two joined bodies
+//!   make (`--join`);
 //! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem.
 
 pub mod algebra;
@@ -19,6 +20,7 @@ pub mod body;
 pub mod homework;
 pub mod impact;
 pub mod jacobian;
+pub mod join;
 pub mod laws;
 pub mod outcome;
 pub mod pose;

@@ -138,6 +138,8 @@ pub struct LawsTyped {
     pub friction: Option<Number>,
     pub law: Option<Law>,
     pub tangential_restitution: Option<Number>,
+    /// The bodies join (`--join`): `e = 0` and no slip, one rigid body after.
+    pub join: bool,
 }
 
 /// A rigid impact as typed.
@@ -188,6 +190,11 @@ pub enum PoseError {
          newton (leave it out)"
     )]
     RoughLaw,
+    #[error(
+        "--join makes the bodies one rigid body (e = 0 and no slip at the contact): leave out \
+         {0}"
+    )]
+    JoinLaws(&'static str),
     #[error("two immovable bodies: at least one body must move")]
     TwoWalls,
     #[error(
@@ -288,6 +295,20 @@ impl Resolver {
 
 /// The mass, restitution, friction and law of a contact, checked.
 pub fn contact_laws(r: &Resolver, c: &LawsTyped) -> Result<(Q, Law, Tangential), PoseError> {
+    if c.join {
+        let other = [
+            (c.friction.is_some(), "--friction"),
+            (
+                c.tangential_restitution.is_some(),
+                "--tangential-restitution",
+            ),
+            (c.law.is_some(), "--law"),
+        ];
+        if let Some((_, flag)) = other.iter().find(|(on, _)| *on) {
+            return Err(PoseError::JoinLaws(flag));
+        }
+        return Ok((Q::ZERO, Law::default(), Tangential::Join));
+    }
     let e = r.plain(&c.restitution);
     if e.is_negative() || e > Q::ONE {
         return Err(PoseError::Restitution(c.restitution.to_string()));

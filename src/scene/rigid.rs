@@ -183,7 +183,7 @@ fn optional<T>(
 }
 
 /// Top-level keys of a rigid report, for `[expect]`.
-pub const RIGID_KEYS: [&str; 23] = crate::report::rigid::KEYS;
+pub const RIGID_KEYS: [&str; 24] = crate::report::rigid::KEYS;
 
 impl RigidScene {
     pub fn parse(path: &Path, text: &str) -> Result<RigidScene, SceneError> {
@@ -281,6 +281,7 @@ impl RigidScene {
                     friction: one_number(&c.friction),
                     law: c.law,
                     tangential_restitution: one_number(&c.tangential_restitution),
+                    join: false,
                 },
             },
             exact: file.exact.unwrap_or(false),

@@ -255,6 +255,7 @@ impl Scene {
             },
             exact: file.exact.unwrap_or(false),
             knowns: Default::default(),
+            velocity_unit: None,
         };
         let span = file
             .masses

@@ -144,6 +144,7 @@ impl CaseInput {
             energy_unit: None,
             exact: self.exact,
             knowns: Default::default(),
+            velocity_unit: None,
         };
         if problem.has_unknowns() {
             return Err(InputError::new(

@@ -529,3 +529,152 @@ mod released {
         );
     }
 }
+
+/// `--total-mass M` with one `?` mass (issue 42 section 5).
+mod total_mass {
+    use super::*;
+
+    #[test]
+    fn a_piece_of_an_explosion_from_the_total_mass() {
+        // A 12 kg shell at rest splits in two; one piece is 5.9 kg and flies off at 4 m/s: the
+        // other is m1 = 12 - 5.9 = 6.1 kg = 61/10, and by momentum 6.1 f1 + 5.9 4 = 0 gives
+        // f1 = -23.6/6.1 = -236/61 m/s. Bodies that start together: e is undefined.
+        let args = [
+            "-m",
+            "?,5.9 kg",
+            "--total-mass",
+            "12 kg",
+            "-v",
+            "0,0",
+            "--fin",
+            "?,4 m/s",
+        ];
+        let (code, j) = solve_json(&[&args[..], &["--exact"]].concat());
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["event"], "separation");
+        assert_eq!(j["solved"], json!({"m1": "61/10", "f1": "-236/61"}));
+        let (code, j) = solve_json(&args);
+        assert_eq!(code, 0);
+        assert_close(f(&j["solved"]["m1"]), 6.1, REL, "m1");
+        assert_close(f(&j["fin"][0]), -236.0 / 61.0, REL, "f1");
+        let (_, text, _) = run(&args);
+        assert!(
+            text.contains("Solved: m1 = 6.1 kg, f1 = -3.86885245901639 m/s"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_mass_of_a_collision_from_the_total() {
+        // m2 = 2 kg, total 5 kg: m1 = 3 kg; at 4 m/s onto the 2 kg at rest, sticking (e = 0):
+        // 3 4 / 5 = 12/5 m/s. e stays as given (a total mass fixes a mass, not the FIN).
+        let (code, j) = solve_json(&[
+            "-m",
+            "?,2 kg",
+            "--total-mass",
+            "5 kg",
+            "-v",
+            "4 m/s,0",
+            "-e",
+            "0",
+            "--exact",
+        ]);
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["solved"]["m1"], "3");
+        assert_eq!(j["fin"], json!(["12/5", "12/5"]));
+        // Elastic by default: f1 = (3 - 2)/5 4 = 4/5, f2 = 2 3/5 4 = 24/5.
+        let (_, j) = solve_json(&["-m", "?,2", "--total-mass", "5", "-v", "4,0", "--exact"]);
+        assert_eq!(j["fin"], json!(["4/5", "24/5"]));
+    }
+
+    #[test]
+    fn the_total_mass_needs_one_unknown_mass() {
+        refused(
+            &["-m", "3,2", "--total-mass", "5", "-v", "4,0"],
+            &["--total-mass", "exactly one mass '?'"],
+        );
+        refused(
+            &["-m", "?,?", "--total-mass", "5", "-v", "4,0"],
+            &["--total-mass", "exactly one mass '?'"],
+        );
+        // A total below the other mass: m1 = 1 - 2 = -1 is no mass.
+        refused(
+            &["-m", "?,2", "--total-mass", "1", "-v", "4,0"],
+            &["m1 = -1"],
+        );
+        refused(
+            &["-m", "?,2", "--total-mass", "5", "-v", "(4,0),0"],
+            &["--total-mass"],
+        );
+    }
+}
+
+/// `--separation-speed S` (issue 42 section 5): `e = |S| / |v1 - v2|`.
+mod separation_speed {
+    use super::*;
+
+    #[test]
+    fn the_speed_of_separation_gives_e() {
+        // 2 kg at 5 m/s onto 3 kg at rest; they separate at 2 m/s: e = 2/5. V_COM = 10/5 = 2,
+        // f1 = (1 + e) 2 - e 5 = 14/5 - 2 = 4/5, f2 = 14/5 - 0 = 14/5: f2 - f1 = 2 (the given S).
+        let args = [
+            "-m",
+            "2 kg,3 kg",
+            "-v",
+            "5 m/s,0",
+            "--separation-speed",
+            "2 m/s",
+        ];
+        let (code, j) = solve_json(&[&args[..], &["--exact"]].concat());
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["restitution"], "2/5");
+        assert_eq!(j["fin"], json!(["4/5", "14/5"]));
+        let (_, j) = solve_json(&args);
+        assert_eq!(f(&j["restitution"]), 0.4);
+        // In another unit: 2 km/h = 5/9 m/s, e = (5/9)/5 = 1/9.
+        let (_, j) = solve_json(&[
+            "-m",
+            "2 kg,3 kg",
+            "-v",
+            "5 m/s,0",
+            "--separation-speed",
+            "2 km/h",
+            "--exact",
+        ]);
+        assert_eq!(j["restitution"], "1/9");
+    }
+
+    #[test]
+    fn a_separation_from_rest_has_no_e() {
+        refused(
+            &["-m", "2,3", "-v", "0,0", "--separation-speed", "2"],
+            &["--separation-speed", "e is", "undefined"],
+        );
+        refused(
+            &[
+                "-m",
+                "2,3",
+                "-v",
+                "?,0",
+                "--fin",
+                "?,3",
+                "--separation-speed",
+                "2",
+            ],
+            &["--separation-speed", "both initial velocities"],
+        );
+        refused(
+            &[
+                "-m",
+                "2,3",
+                "-v",
+                "5,0",
+                "--separation-speed",
+                "2",
+                "-e",
+                "1",
+            ],
+            &["--separation-speed", "--restitution"],
+        );
+    }
+}

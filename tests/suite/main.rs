@@ -29,6 +29,7 @@ mod readme;
 mod resources;
 mod rigid;
 mod rigid_friction;
+mod rigid_join;
 mod rigid_symmetry;
 mod shell;
 mod stages;

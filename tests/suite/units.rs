@@ -323,3 +323,99 @@ fn sums_of_like_quantities_are_one_value() {
     assert_eq!(code, 2);
     assert!(err.contains("'abc'"), "{err}");
 }
+
+/// `--velocity-unit` (issue 42 section 5): the case is converted exactly to the asked unit
+/// before it is solved, so every speed of the report (text, JSON, solved values) is the one
+/// solution in that unit.
+mod velocity_unit {
+    use crate::common::{assert_ulps, run_solve, solve_json, solve_refused};
+    use serde_json::json;
+
+    #[test]
+    fn a_car_crash_read_in_mi_per_h() {
+        // 1500 kg at 72 km/h = 20 m/s onto 900 kg at rest, they stick: 20 1500/2400 = 12.5 m/s.
+        // 1 mph = 0.44704 m/s exactly, so 12.5 m/s = 12.5/0.44704 = 78125/2794 mph (=
+        // 27.9617036506800...) and 20 m/s = 62500/1397 mph. Energies stay in J: 1/2 1500 20^2
+        // = 300000 J before, 1/2 2400 12.5^2 = 187500 J after.
+        let args = [
+            "-m",
+            "1500 kg,900 kg",
+            "-v",
+            "72 km/h,0",
+            "-e",
+            "0",
+            "--velocity-unit",
+            "mi/h",
+        ];
+        let (code, j) = solve_json(&[&args[..], &["--exact"]].concat());
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(j["fin"], json!(["78125/2794", "78125/2794"]));
+        assert_eq!(j["in"], json!(["62500/1397", "0"]));
+        assert_eq!(j["energy"]["in"], "300000");
+        assert_eq!(j["energy"]["fin"], "187500");
+        assert_eq!(j["units"]["velocity"], "mph");
+        let (_, j) = solve_json(&args);
+        assert_ulps(
+            j["fin"][0].as_f64().unwrap(),
+            78125.0 / 2794.0,
+            1.0,
+            "v' in mph",
+        );
+        let (_, text, _) = run_solve(&args);
+        assert!(
+            text.contains("FIN: v1' = v2' = 27.96170365068 mph (the bodies stick)"),
+            "{text}"
+        );
+        assert!(text.contains("velocities in mph, energies in J"), "{text}");
+    }
+
+    #[test]
+    fn a_solved_speed_is_in_the_asked_unit() {
+        // They stick at 20 mph = 32.18688 km/h: v1 = 32.18688 2400/1500 = 51.499008 km/h.
+        let (code, j) = solve_json(&[
+            "-m",
+            "1500 kg,900 kg",
+            "-v",
+            "?,0",
+            "--fin",
+            "20 mph,20 mph",
+            "--velocity-unit",
+            "km/h",
+            "--exact",
+        ]);
+        assert_eq!(code, 0, "{j}");
+        // As fractions: 32.18688 = 100584/3125, 51.499008 = 804672/15625.
+        assert_eq!(j["solved"]["v1"], "804672/15625");
+        assert_eq!(j["fin"], json!(["100584/3125", "100584/3125"]));
+    }
+
+    #[test]
+    fn speeds_without_units_or_beyond_the_rail_are_refused() {
+        solve_refused(
+            &["-m", "1500,900", "-v", "72,0", "--velocity-unit", "mph"],
+            &["--velocity-unit mph", "72", "no unit"],
+        );
+        solve_refused(
+            &[
+                "-m",
+                "1 kg,wall",
+                "-v",
+                "(3,1) m/s,0",
+                "--velocity-unit",
+                "mph",
+            ],
+            &["--velocity-unit", "rail"],
+        );
+        solve_refused(
+            &[
+                "-m",
+                "1 kg,1 kg",
+                "-v",
+                "3 m/s,0",
+                "--velocity-unit",
+                "furlong",
+            ],
+            &["furlong"],
+        );
+    }
+}

@@ -6,6 +6,7 @@ use serde_json::{Map, Value, json};
 
 use crate::rigid::algebra::Mat;
 use crate::rigid::body::{Mobility, Motion};
+use crate::rigid::join::Joined;
 use crate::rigid::laws::Tangential;
 use crate::rigid::outcome::{Energy, Outcome};
 use crate::values::rational::Q;
@@ -85,6 +86,7 @@ pub fn json(
                 m.insert("friction".into(), style.json(mu, a));
             }
         }
+        Tangential::Join => {}
     }
     m.insert("law".into(), json!(p.law.name()));
     m.insert("contact".into(), json!(o.impact.mode.name()));
@@ -143,6 +145,23 @@ pub fn json(
             "restitution": style.json(&o.restitution_along(), an),
         }),
     );
+    if let Some(j) = Joined::of(o) {
+        let omega = if j.omega.len() == 1 {
+            style.json(&j.omega[0], a)
+        } else {
+            vec1(&j.omega, a)
+        };
+        let mut joined = Map::new();
+        joined.insert("mass".into(), style.json(&j.mass, a));
+        joined.insert("centre".into(), vec1(&j.centre, a));
+        joined.insert("inertia".into(), mat_json(style, &j.inertia, a));
+        if let Some(p) = &j.pivot {
+            joined.insert("pivot".into(), vec1(p, a));
+        }
+        joined.insert("v".into(), vec1(&j.v, a));
+        joined.insert("omega".into(), omega);
+        m.insert("joined".into(), Value::Object(joined));
+    }
     if show.contains(Section::Energy) {
         let e = |q: &Q| style.json(&style.energy(q), a);
         let parts = |ms: &[Motion; 2]| -> Value {
@@ -247,7 +266,7 @@ fn mat_json(style: &Style, m: &Mat, a: bool) -> Value {
 }
 
 /// The top-level keys of the JSON report (for a scene's `[expect]`).
-pub const KEYS: [&str; 23] = [
+pub const KEYS: [&str; 24] = [
     "dim",
     "bodies",
     "point",
@@ -263,6 +282,7 @@ pub const KEYS: [&str; 23] = [
     "m_eff",
     "pivot_impulse",
     "along_normal",
+    "joined",
     "energy",
     "momentum",
     "tensor",

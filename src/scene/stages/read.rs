@@ -398,6 +398,7 @@ impl Reader<'_> {
             energy_unit,
             exact: false,
             knowns: Default::default(),
+            velocity_unit: None,
         };
         self.stages.push(Stage {
             name,
