@@ -88,6 +88,9 @@ pub enum Unknown {
 pub enum Law {
     Momentum(usize),
     Restitution,
+    /// Restitution along the impulse, where no line of impact is given: `J.(v1' - v2') = -e
+    /// J.(v1 - v2)` with `J = v1' - v1` (body 1's change, along the impulse).
+    ImpulseRestitution,
     Tangential(usize),
     /// Body i ends with body 1's velocity, component k (`e = 0`).
     Stick(usize, usize),
@@ -102,6 +105,7 @@ impl Law {
         match self {
             Law::Momentum(k) => format!("momentum ({})", axis(k)),
             Law::Restitution => "restitution along the line of impact".into(),
+            Law::ImpulseRestitution => "restitution along the impulse".into(),
             Law::Tangential(_) => "tangential velocity kept (smooth contact)".into(),
             Law::Stick(i, _) => format!("body {} moves with body 1 (e = 0)", i + 1),
             Law::Energy => "energy kept (elastic)".into(),
@@ -233,6 +237,11 @@ impl Builder {
                 .collect(),
         }
     }
+}
+
+/// `a - b` of polynomial vectors.
+fn sub_vec(a: &[Poly], b: &[Poly]) -> Vec<Poly> {
+    a.iter().zip(b).map(|(a, b)| a.sub(b)).collect()
 }
 
 /// `a.b` of polynomial vectors.
@@ -369,10 +378,23 @@ fn solve_with(given: &Statement, closed_forms: bool) -> Result<Solved, SolveErro
             p.add_assign(&masses[i].mul(&ke)?);
         }
         eqs.push((Law::Energy, p));
-    } else if let Some(q) = e_value {
-        return Err(SolveError::NeedsNormal(crate::values::quantity::fraction(
-            &q,
-        )));
+    } else if let Some(q) = &e_value {
+        if !fin_given || n != 2 {
+            return Err(SolveError::NeedsNormal(crate::values::quantity::fraction(
+                q,
+            )));
+        }
+        // A final velocity given in part fixes the line of impact: it is the impulse's, along
+        // body 1's change of velocity `J = v1' - v1`, and Newton's law holds along it (times
+        // |J|): `J.(v1' - v2') + e J.(v1 - v2) = 0`. (The tangential parts are kept by
+        // momentum: both changes lie along J.) A quadratic law, solved with the others; J = 0
+        // (the bodies pass) satisfies it and is judged as no impulse.
+        let e = e.as_ref().expect("e is known here");
+        let j = sub_vec(&fin[0], &v_in[0]);
+        let rel_fin = sub_vec(&fin[0], &fin[1]);
+        let rel_in = sub_vec(&v_in[0], &v_in[1]);
+        let law = dot(&j, &rel_fin)?.add(&e.mul(&dot(&j, &rel_in)?)?);
+        eqs.push((Law::ImpulseRestitution, law));
     }
     // Otherwise e is unknown without a line of impact: the final velocities fix it.
     for (i, v) in given.v_in.iter().chain(&given.fin).enumerate() {
@@ -406,9 +428,11 @@ fn solve_with(given: &Statement, closed_forms: bool) -> Result<Solved, SolveErro
     let solutions = xs
         .into_iter()
         .map(|(x, approx)| {
+            // A value that involves no unknown (a typed velocity, a given e) is exact whatever
+            // the roots are: `≈4` beside a typed 4, or `e = ≈1 (elastic)`, would contradict it.
             let value = |p: &Poly| {
                 let q = p.eval(&x);
-                if approx {
+                if approx && p.vars().next().is_some() {
                     Exact::Approx(q)
                 } else {
                     Exact::Rational(q)

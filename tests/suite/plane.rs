@@ -134,6 +134,52 @@ fn an_unknown_direction_has_two_mirror_solutions() {
     );
 }
 
+/// With e other than 0 and 1 and no line of impact, a final speed given with its direction
+/// unknown fixes the line: it is the impulse's. Equal masses, v1 = (4, 0) on body 2 at rest,
+/// e = 1/2, body 1 leaves at speed 3: v1' = 3u, v2' = (4, 0) - 3u (momentum), J = 3u - (4, 0).
+/// Newton's law along J: J.(v1' - v2') + e J.(v1 - v2) = (3u - 4x).(6u - 4x) + 2 (3u - 4x).x
+/// = (3u - 4x).(6u - 2x) = 18 - 30 u_x + 8 = 0, so u_x = 13/15, u_y = +-2 sqrt(14)/15:
+/// v1' = (13/5, +-2 sqrt(14)/5), v2' = (7/5, -+2 sqrt(14)/5), a mirror pair; the line of impact
+/// (body 2's impulse, -J = (7/5, -+2 sqrt(14)/5)) at -+46.9 degrees. KE_FIN = 1/2 (9 + 49/25
+/// + 56/25) = 33/5 of KE_IN = 8: lost 7/5. (The restitution along the impulse is 1/2.)
+#[test]
+fn e_with_a_final_speed_and_no_normal_has_a_mirror_pair() {
+    let j = json(&[
+        "-m", "1,1", "-v", "(4,0),0", "--fin", "3 @ ?,?", "-e", "0.5",
+    ]);
+    let sols = j["solutions"].as_array().unwrap();
+    assert_eq!(sols.len(), 2, "{j}");
+    let y = 2.0 * 14f64.sqrt() / 5.0;
+    for s in sols {
+        let fin = vecs(&s["fin"]);
+        let close = |got: f64, want: f64| (got - want).abs() <= 4.0 * f64::EPSILON * want.abs();
+        assert!(
+            close(fin[0][0], 2.6) && close(fin[0][1].abs(), y),
+            "{fin:?}"
+        );
+        assert!(
+            close(fin[1][0], 1.4) && close(fin[1][1].abs(), y),
+            "{fin:?}"
+        );
+        assert_eq!(fin[0][1].signum(), -fin[1][1].signum());
+        assert!(close(f(&s["energy"]["lost"]), 1.4), "{s}");
+        assert!(close(f(&s["restitution"]), 0.5), "{s}");
+    }
+    assert_eq!(
+        f(&sols[0]["fin"][0][1]).signum(),
+        -f(&sols[1]["fin"][0][1]).signum()
+    );
+    // Under --exact the roots are irrational: the outcome is marked approximate (40 digits).
+    let text = stdout(&[
+        "solve", "-m", "1,1", "-v", "(4,0),0", "--fin", "3 @ ?,?", "-e", "1/2", "--exact",
+    ]);
+    assert!(text.contains("Solution 1 of 2 (physical)"), "{text}");
+    assert!(
+        text.contains("v1' = (≈2.6, ≈-1.4966629547095765542)"),
+        "{text}"
+    );
+}
+
 #[test]
 fn a_three_piece_explosion() {
     // Pieces of 1, 2 and 3 kg from rest; two fly off at (2, 0) and (0, 1) m/s: the third has
