@@ -21,6 +21,7 @@ mod one_answer;
 mod order;
 mod plane;
 mod plane_edges;
+mod plane_exact;
 mod plane_sweeps;
 mod plot;
 mod problems;
