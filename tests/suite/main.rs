@@ -39,5 +39,6 @@ mod track;
 mod units;
 mod view;
 mod view_hostile;
+mod view_node;
 mod view_plane;
 mod width;
