@@ -8,7 +8,9 @@
 //! - `has_browser`: Chromium (`COLLIDE_CHROMIUM`, default /usr/bin/chromium) and Playwright for
 //!   Python;
 //! - `has_wasm_target`: the wasm32-unknown-unknown target of the toolchain building this;
-//! - `has_polars`: Polars for Python (reads Parquet back).
+//! - `has_polars`: Polars for Python (reads Parquet back);
+//! - `has_avx2_fma`: a processor with AVX2 and FMA, building for itself (the x86-64-v3 row loop
+//!   of the table engine; hardware, so not forced under CI).
 //!
 //! Cargo reruns this when `CI`, `PATH` or `COLLIDE_CHROMIUM` changes; a tool installed since the
 //! last build is seen after `touch build.rs`.
@@ -37,6 +39,22 @@ fn wasm_target() -> bool {
         .is_some_and(|root| root.join("lib/rustlib/wasm32-unknown-unknown").exists())
 }
 
+/// Whether this processor has AVX2 and FMA and the build is for it (the host).
+fn avx2_fma() -> bool {
+    let native = std::env::var("HOST").ok() == std::env::var("TARGET").ok();
+    #[cfg(target_arch = "x86_64")]
+    {
+        native
+            && std::arch::is_x86_feature_detected!("avx2")
+            && std::arch::is_x86_feature_detected!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = native;
+        false
+    }
+}
+
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
     for var in ["CI", "PATH", "COLLIDE_CHROMIUM"] {
@@ -58,6 +76,10 @@ fn main() {
         ("has_wasm_target", wasm_target()),
         ("has_polars", runs("python3", &["-c", "import polars"])),
     ];
+    println!("cargo::rustc-check-cfg=cfg(has_avx2_fma)");
+    if avx2_fma() {
+        println!("cargo::rustc-cfg=has_avx2_fma");
+    }
     for (cfg, found) in tools {
         println!("cargo::rustc-check-cfg=cfg({cfg})");
         if ci || found {

@@ -19,6 +19,7 @@ mod lecture;
 mod metamorphic;
 mod one_answer;
 mod order;
+mod parquet_errors;
 mod plane;
 mod plane_edges;
 mod plane_exact;
