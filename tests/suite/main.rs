@@ -31,6 +31,7 @@ mod readme;
 mod resources;
 mod rigid;
 mod rigid_friction;
+mod rigid_ode;
 mod rigid_symmetry;
 mod shell;
 mod stages;

@@ -479,11 +479,11 @@ fn the_ode_in_space_agrees_with_routh_in_the_plane() {
             .hypot(f(&a["impulse"]["vector"][1]) - f(&b["impulse"]["vector"][1]))
             / size;
         let estimate = f(&b["ode"]["error_estimate"]);
+        // The bound docs/rigid.md states (measured in rigid_ode.rs): 2 estimate + 1e-13.
         assert!(
-            err <= estimate.max(1e-13) * 10.0,
+            err <= 2.0 * estimate + 1e-13,
             "mu {mu} {law}: error {err}, estimate {estimate}"
         );
-        assert!(err < 1e-9, "mu {mu}: {err}");
         assert!(f(&b["ode"]["seconds"]) > 0.0);
         assert_eq!(f(&b["impulse"]["vector"][2]), 0.0);
     }
@@ -520,7 +520,9 @@ fn a_scene_in_space_turns_with_its_axes() {
     for mu in ["0", "0.4"] {
         let (_, a) = scene("axes", &scene_of(false, mu));
         let (_, b) = scene("axes-cycled", &scene_of(true, mu));
-        let tol = if mu == "0" { 0.0 } else { 1e-9 };
+        // Each run is within 2 estimate + 1e-13 of the truth (relative, docs/rigid.md), and the
+        // values here are of size 1 to 10.
+        let tol = if mu == "0" { 0.0 } else { 1e-11 };
         for body in 0..2 {
             for key in ["v", "omega"] {
                 let x = &a["fin"][body][key];
