@@ -8,6 +8,8 @@
 #   cargo install cargo-mutants --locked     # once (27.x)
 #   benches/mutants.sh                       # every area below, one after the other
 #   benches/mutants.sh motion columns        # some of them
+#   benches/mutants.sh impact solve          # one file each: rigid/impact.rs, space/solve.rs
+#                                            # (areas rigid and space: every file of the folder)
 #   MUTANTS_SHARD=3/8 benches/mutants.sh contact   # one eighth of an area (to pause between)
 #   MUTANTS_SHARD=0/12 MUTANTS_SHARDING=round-robin benches/mutants.sh contact
 #                                            # every twelfth mutant: a sample of the whole area
@@ -35,12 +37,20 @@ declare -A FILES=(
     [units]="src/values/units.rs"
     [motion]="src/track/motion.rs"
     [columns]="src/table/columns.rs"
+    [rigid]="src/rigid/*.rs"
+    [impact]="src/rigid/impact.rs"
+    [space]="src/space/*.rs"
+    [solve]="src/space/solve.rs"
 )
 declare -A TESTS=(
     [contact]="contact::"
     [units]="units homework:: problems:: cli:: properties::hostile properties::parsers --skip view_"
     [motion]="track::"
     [columns]="tables:: table::"
+    [rigid]="rigid homework"
+    [impact]="rigid"
+    [space]="space:: plane frames:: metamorphic:: one_answer:: knowns::"
+    [solve]="space:: plane knowns:: asked::"
 )
 areas=("$@")
 [ ${#areas[@]} -eq 0 ] && areas=(motion columns units contact)

@@ -52,8 +52,10 @@ pub struct Run {
 pub struct Estimated {
     pub run: Run,
     pub rtol: f64,
-    /// `|P(rtol) - P(rtol/100)| / |P|`: the error of the coarser run, a bound for the finer one
-    /// (whose answer is `run`).
+    /// `|P(rtol) - P(rtol/100)| / |P|`: the error of the coarser run, an estimate of the finer
+    /// one's (whose answer is `run`) but not a bound: it misses the rounding floor. Against
+    /// Routh's exact answer (tests/suite/rigid_ode.rs, 300 planar cases) the error exceeded it
+    /// in 193, and was always below `2 error + 1e-13`.
     pub error: f64,
     /// Wall time of both runs, in seconds.
     pub seconds: f64,

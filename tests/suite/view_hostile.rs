@@ -35,6 +35,10 @@ fn typed_pair(text: &str) -> [f64; 2] {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_an_input_error_greys_out_and_labels_the_last_valid_case() {
     let Some(b) = browser() else { return };
     // m1 = -1 in the plane panel: the pucks, the numbers, the momentum triangle and the normal
@@ -70,6 +74,10 @@ fn browser_an_input_error_greys_out_and_labels_the_last_valid_case() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_the_reverse_of_a_sticking_collision_says_why_e_is_undefined() {
     let Some(b) = browser() else { return };
     // m = 1, 1, v1 = (4,0), n at 30 degrees, e = 0, time reverse: 1/e has no value; the page
@@ -83,6 +91,10 @@ fn browser_the_reverse_of_a_sticking_collision_says_why_e_is_undefined() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_the_impulse_is_listed_under_a_momentum_unit() {
     let Some(b) = browser() else { return };
     // The car and the van (kg, m/s): J = m2 (v2' - v2) = 2500 ((9.375, 12.5) - (0, 20)) =
@@ -104,6 +116,10 @@ fn browser_the_impulse_is_listed_under_a_momentum_unit() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_mass_sliders_hold_masses_with_units() {
     let Some(b) = browser() else { return };
     // The car and the van: m1 = 1500 kg, m2 = 2500 kg; the sliders are log10 of the mass, step
@@ -121,6 +137,10 @@ fn browser_mass_sliders_hold_masses_with_units() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_tiny_velocities_move_by_keys_and_drags_without_errors() {
     let Some(b) = browser() else { return };
     // v1 = (1e-99, 0), v2 = 0: the pucks' scale is 180 / 1e-99 units per velocity unit, so the
@@ -139,6 +159,10 @@ fn browser_tiny_velocities_move_by_keys_and_drags_without_errors() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_arrow_keys_go_past_a_refused_value() {
     let Some(b) = browser() else { return };
     // Disks, v1 = (1, 0), v2 = (0.98, 0), step 0.01: ArrowRight on v2 four times gives 0.99,
@@ -149,6 +173,10 @@ fn browser_arrow_keys_go_past_a_refused_value() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_drags_in_a_moving_frame_put_the_arrow_under_the_mouse() {
     let Some(b) = browser() else { return };
     // m = 1, 1, v1 = (4, 0), v2 = 0, COM frame: w = (2, 0), v1 drawn as u1 = (2, 0). Dragged
@@ -189,6 +217,10 @@ fn browser_drags_in_a_moving_frame_put_the_arrow_under_the_mouse() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_disk_fields_take_lengths_with_units() {
     let Some(b) = browser() else { return };
     // Disks, v1 = (1, 0), v2 = 0, R1 = R2 = 2.5 cm, b = 1 in: sin phi = 2.54 / 5 = 0.508, phi
@@ -230,6 +262,10 @@ fn overlaps(boxes: &Value) -> Vec<(String, String)> {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_a_body_at_rest_before_is_not_said_to_turn() {
     let Some(b) = browser() else { return };
     // Disks: v1 = (1, 0), v2 = 0, b = 1 = (R1 + R2) / 2: phi = 30 degrees, v1' = v1 - (v1.n) n
@@ -241,6 +277,10 @@ fn browser_a_body_at_rest_before_is_not_said_to_turn() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_momentum_labels_do_not_cover_each_other() {
     let Some(b) = browser() else { return };
     // v1 = (4, 0), v2 = 0 (m = 1, 1, n at 30 degrees): p2 = 0 ends on P; its label would
@@ -260,6 +300,10 @@ fn browser_momentum_labels_do_not_cover_each_other() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_the_time_reverse_is_drawn_in_the_plane_pictures() {
     let Some(b) = browser() else { return };
     // m = 1, 1, v1 = (4, 0), v2 = 0, n at 30 degrees, elastic: the normal parts (v1.n, v2.n)
@@ -281,6 +325,10 @@ fn browser_the_time_reverse_is_drawn_in_the_plane_pictures() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_arrows_moved_by_keys_stay_in_the_picture() {
     let Some(b) = browser() else { return };
     // e = 3 (superelastic), v1 pushed up by Shift+ArrowUp six times: FIN grows past the scale
@@ -296,6 +344,10 @@ fn browser_arrows_moved_by_keys_stay_in_the_picture() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_the_normal_parts_zoom_in_and_keep_their_axis_names() {
     let Some(b) = browser() else { return };
     // m = 1e6, 1, n at 30 degrees, elastic, v2 = 0: along n, IN = (a, 0), COM = 1e6 a / (1e6 +
@@ -352,6 +404,10 @@ fn without_javascript_the_page_says_where_its_numbers_are() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_with_javascript_the_status_says_ready() {
     let Some(b) = browser() else { return };
     let status = read(b, "status").as_str().unwrap();
@@ -359,6 +415,10 @@ fn browser_with_javascript_the_status_says_ready() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_the_pucks_title_keeps_the_mass_unit_and_edits_leave_the_preset() {
     let Some(b) = browser() else { return };
     // The car and the van: m1 = 1500 kg, m2 = 2500 kg, e = 0, as typed (units included).
@@ -372,6 +432,10 @@ fn browser_the_pucks_title_keeps_the_mass_unit_and_edits_leave_the_preset() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_an_input_during_a_frame_shift_is_what_the_page_shows() {
     let Some(b) = browser() else { return };
     // Case A (M = diag(4, 1), V_IN = (60, 10)): "COM" is clicked, and e = 0.5 typed while the
@@ -393,6 +457,10 @@ fn browser_an_input_during_a_frame_shift_is_what_the_page_shows() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_a_refused_stack_greys_the_last_run_and_stops_play() {
     let Some(b) = browser() else { return };
     // Masses "1,-1": the tower, the world lines and the numbers are the last valid run's, so

@@ -525,6 +525,10 @@ pub fn browser_plan(dir: &std::path::Path) -> Value {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_plane_state_equals_solve_json() {
     let Some(b) = browser() else { return };
     let cases: Vec<Value> = plane_cases()
@@ -539,6 +543,10 @@ fn browser_plane_state_equals_solve_json() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_plane_drag_moves_the_arrow_and_fin_follows_the_impulse() {
     let Some(b) = browser() else { return };
     let d = &b["plane"]["drag"];
@@ -587,6 +595,10 @@ fn browser_plane_drag_moves_the_arrow_and_fin_follows_the_impulse() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_plane_keys_move_the_chosen_arrow_by_the_step() {
     let Some(b) = browser() else { return };
     // After the drag: '2' chooses body 2's arrow, then two steps up and one right.
@@ -600,6 +612,10 @@ fn browser_plane_keys_move_the_chosen_arrow_by_the_step() {
 }
 
 #[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_plane_screenshot_shows_the_pucks_and_arrows() {
     let Some(b) = browser() else { return };
     let s = &b["plane"]["screenshot"];
