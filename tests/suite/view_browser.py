@@ -150,7 +150,7 @@ def drive_plane(page, plan):
 def run_steps(page, steps, errors):
     """Scripted checks in one page session: each step one action (`fill`, `select`, `check`,
     `uncheck`, `press` [selector, key, times], `drag_tip` {body, by (picture units), steps},
-    `hover` selector, `wait` milliseconds) and optionally `read` [name, JS function]: what the function returns, with
+    `drag_in` {by, steps} (IN on the velocity plane), `hover` selector, `wait` milliseconds) and optionally `read` [name, JS function]: what the function returns, with
     the page errors seen so far, under `name` in the result."""
     out = {}
     for step in steps:
@@ -180,6 +180,21 @@ def run_steps(page, steps, errors):
             at = page.eval_on_selector("#pucks-svg", """(s, i) => { const r = s.getBoundingClientRect(), t = s.querySelector('#tip-' + i)
                 || s.querySelector('#in-' + i + ' polygon'), k = r.width / s.viewBox.baseVal.width;
                 const b = t.getBBox(); return [r.left + (b.x + b.width / 2) * k, r.top + (b.y + b.height / 2) * k, k]; }""", d["body"])
+            page.mouse.move(at[0], at[1])
+            page.mouse.down()
+            n = d.get("steps", 10)
+            for k in range(1, n + 1):
+                page.mouse.move(at[0] + d["by"][0] * at[2] * k / n, at[1] + d["by"][1] * at[2] * k / n)
+                page.wait_for_timeout(20)
+            page.mouse.up()
+        if "drag_in" in step:
+            # IN on the velocity plane dragged by `by` picture units, in `steps` moves.
+            d = step["drag_in"]
+            page.eval_on_selector("#plane-svg", "s => s.scrollIntoView({block: 'center', behavior: 'instant'})")
+            page.wait_for_timeout(100)
+            at = page.eval_on_selector("#plane-svg", """s => { const r = s.getBoundingClientRect(),
+                c = s.querySelector('#point-in'), k = r.width / s.viewBox.baseVal.width;
+                return [r.left + +c.getAttribute('cx') * k, r.top + +c.getAttribute('cy') * k, k]; }""")
             page.mouse.move(at[0], at[1])
             page.mouse.down()
             n = d.get("steps", 10)

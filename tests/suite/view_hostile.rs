@@ -477,3 +477,76 @@ fn browser_a_refused_stack_greys_the_last_run_and_stops_play() {
     );
     assert_eq!(good["play"], false, "{good}");
 }
+
+/// The velocity plane's map as the drag steps read it: origin, scale, step, the frame's w; the
+/// typed velocities; the case's JSON.
+fn plane_read(r: &Value) -> (f64, f64, f64, [f64; 2], Value) {
+    let m = &r["map"];
+    let (s, step, w) = (
+        m[2].as_f64().unwrap(),
+        m[3].as_f64().unwrap(),
+        m[4].as_f64().unwrap(),
+    );
+    let v = [
+        r["v"][0].as_str().unwrap().parse::<f64>().unwrap(),
+        r["v"][1].as_str().unwrap().parse::<f64>().unwrap(),
+    ];
+    (s, step, w, v, r["state"].clone())
+}
+
+#[test]
+fn browser_dragging_in_puts_it_under_the_pointer_in_the_lab_and_com_frames() {
+    let Some(b) = browser() else { return };
+    // Case A, M = diag(4, 1), V = (60, 10), lab: IN dragged 30 picture units right and 20 down
+    // at s units per velocity unit goes to the pointer, (60 + 30/s, 10 - 20/s), to the step
+    // (half a step, and a picture unit for the mouse's whole pixels).
+    let (s, step, w, _, _) = plane_read(read(b, "c_drag_lab_map"));
+    assert_eq!(w, 0.0);
+    let (_, _, _, v, state) = plane_read(read(b, "c_drag_lab"));
+    let tol = step / 2.0 + 1.0 / s;
+    assert!((v[0] - (60.0 + 30.0 / s)).abs() <= tol, "{v:?} s = {s}");
+    assert!((v[1] - (10.0 - 20.0 / s)).abs() <= tol, "{v:?} s = {s}");
+    assert_eq!(pair(&state["in"]), v);
+    // COM (w = V_COM = (4 60 + 10) / 5 = 50): IN = (10, -40), on the zero-momentum line
+    // 4 u1 + u2 = 0. Dragged along that line, 10 right and 40 down (picture units), the pointer
+    // is over (10 + 10/s, -40 - 40/s); the case keeps w = 50 and the relative velocity
+    // d = u1 - u2 = 50 + 50/s, so V = (50 + d/5, 50 - 4d/5) = (60 + 10/s, 10 - 40/s) (was: w
+    // added again at every move, IN running off: a 50 px drag gave V = (184, 107)).
+    let (s, step, w, _, state) = plane_read(read(b, "c_drag_com_map"));
+    assert_eq!(w, 50.0);
+    assert_eq!(pair(&state["in"]), [10.0, -40.0]);
+    let (_, _, w2, v, state) = plane_read(read(b, "c_drag_com"));
+    let tol = step / 2.0 + 1.0 / s;
+    assert_eq!(state["frame"]["name"], "com", "{state}");
+    assert!((v[0] - (60.0 + 10.0 / s)).abs() <= tol, "{v:?} s = {s}");
+    assert!((v[1] - (10.0 - 40.0 / s)).abs() <= tol, "{v:?} s = {s}");
+    // The frame's velocity stays where it was, to the step: (4 V1 + V2) / 5.
+    assert!((w2 - 50.0).abs() <= tol, "w = {w2}");
+    // IN on screen, from the typed values: (d/5, -4d/5) with d = V1 - V2 (exact: short
+    // decimals times 1/5 and 4/5 round once each, as the core's does; 2 ulps allowed).
+    let d = v[0] - v[1];
+    let u = pair(&state["in"]);
+    for (got, want) in u.iter().zip([d / 5.0, -4.0 * d / 5.0]) {
+        assert!(
+            (got - want).abs() <= 2.0 * f64::EPSILON * want.abs(),
+            "{u:?} d = {d}"
+        );
+    }
+    // Under the pointer: (10 + 10/s, -40 - 40/s), within the step's reach on screen.
+    assert!((u[0] - (10.0 + 10.0 / s)).abs() <= tol, "{u:?}");
+    assert!((u[1] - (-40.0 - 40.0 / s)).abs() <= 4.0 * tol, "{u:?}");
+    // A drag off the line (50 right) moves d by 50/s, along the 45-degree line to the line:
+    // IN moves (10/s, -40/s), not away from the pointer.
+    let (_, _, w3, v3, state3) = plane_read(read(b, "c_drag_com_off"));
+    let d3 = v3[0] - v3[1];
+    assert!(
+        (d3 - (d + 50.0 / s)).abs() <= 2.0 * tol,
+        "d = {d} -> {d3}, s = {s}"
+    );
+    assert!((w3 - 50.0).abs() <= 2.0 * tol, "w = {w3}");
+    let u3 = pair(&state3["in"]);
+    assert!(
+        (u3[0] - (u[0] + 10.0 / s)).abs() <= 2.0 * tol,
+        "{u:?} -> {u3:?}"
+    );
+}

@@ -2,7 +2,7 @@
   const caseFields = ["m1", "m2", "v1", "v2", "e"];
   let caseAnswer = data.answers.solve; // the last good answer
   let caseState = null; // its JSON, parsed
-  const plane = { map: null, keep: false, dragging: null, animation: 0 };
+  const plane = { map: null, keep: false, dragging: null, dragW: null, animation: 0 };
 
   function caseRequest(frame) {
     const r = { op: "solve" };
@@ -205,14 +205,32 @@
     plane.animation = requestAnimationFrame(step);
   }
 
+  // The lab velocities (V1, V2) the frame on screen shows at the point (x, y), the frame's
+  // velocity w kept. The lab and an observer do not move with the case: V = (x, y) + w. The
+  // other frames do (COM, a body at rest before or after): there the case on screen depends
+  // only on the relative velocity d = V1 - V2, the same in every frame, as IN = d c, where the
+  // core gives c as IN for V = (1, 0) (COM: c = (M2, -M1) / M for masses M1, M2). The pointer
+  // is taken along the 45-degree line (a change of frame) to that line: d = x - y, V = d c + w;
+  // on the line, IN lands under the pointer. A drag keeps the w it began with (the typed values
+  // snap to the step, and w would drift a little at every move).
+  function labIn(x, y) {
+    const f = currentFrame();
+    const w = plane.dragging && plane.dragW !== null ? plane.dragW : caseAnswer.picture.w;
+    if (f === "lab" || Number.isFinite(Number(f))) return [x + w, y + w];
+    const unit = core(Object.assign(caseRequest(), { v1: "1", v2: "0", reverse: false }));
+    if (!unit.ok) return [x + w, y + w];
+    const c = unit.picture.in, d = x - y;
+    return [c[0] * d + w, c[1] * d + w];
+  }
+
   // Moves IN to a point of the plane (in the frame on screen), snapped to the step.
   function moveIn(x, y) {
     const t0 = performance.now();
     const map = plane.map;
     const step = snapStep(map);
-    const w = caseAnswer.picture.w;
-    $("v1").value = snapText(x + w, step);
-    $("v2").value = snapText(y + w, step);
+    const v = labIn(x, y);
+    $("v1").value = snapText(v[0], step);
+    $("v2").value = snapText(v[1], step);
     const answer = solveCase(true);
     const ms = performance.now() - t0;
     view.lastUpdateMs = ms;
@@ -240,6 +258,7 @@
       if (!core || ev.button !== 0) return;
       cancelAnimationFrame(plane.animation);
       plane.dragging = true;
+      plane.dragW = caseAnswer.picture.w;
       svg.setPointerCapture(ev.pointerId);
       svg.classList.add("dragging");
       svg.focus({ preventScroll: true });
