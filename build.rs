@@ -12,8 +12,9 @@
 //! - `has_avx2_fma`: a processor with AVX2 and FMA, building for itself (the x86-64-v3 row loop
 //!   of the table engine; hardware, so not forced under CI).
 //!
-//! Cargo reruns this when `CI`, `PATH` or `COLLIDE_CHROMIUM` changes; a tool installed since the
-//! last build is seen after `touch build.rs`.
+//! Cargo reruns this when `CI` or `COLLIDE_CHROMIUM` changes (not `PATH`: maturin runs Cargo with
+//! its own, and the library would build twice in CI); a tool installed since the last build is
+//! seen after `touch build.rs`.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -57,7 +58,7 @@ fn avx2_fma() -> bool {
 
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
-    for var in ["CI", "PATH", "COLLIDE_CHROMIUM"] {
+    for var in ["CI", "COLLIDE_CHROMIUM"] {
         println!("cargo::rerun-if-env-changed={var}");
     }
     // Only the tests read these: the WebAssembly module (wasm/build.sh) is built without them,

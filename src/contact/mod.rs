@@ -281,29 +281,30 @@ fn integrate(
         let sys = system(&active, &x);
         let mut y0 = vec![0.0; 2 * n];
         y0[n..].copy_from_slice(&v);
-        // The stretch steps in its own time, from 0: steps stay exact however late it starts
-        // (at t = 6e15 a step of 0.01 would be lost in the time's rounding).
-        ledger.origin = t;
+        // A stretch that starts so late that the time's rounding is no longer small beside the
+        // shortest contact (at t = 6e15, ulp(t) = 1: a step of 0.01 would be lost) steps in its
+        // own time, from 0; any other in the run's time, as it always has (the event search's
+        // tolerances are relative to the time).
+        let origin = if ulp(t) > scales.t_min * 1e-10 {
+            t
+        } else {
+            0.0
+        };
+        ledger.origin = origin;
         let end = match (method, dt, tolerances) {
             (Method::Fixed(f), Some(h), _) => {
-                run::fixed_stretch((f, h), &sys, (0.0, &y0), until - t, &mut ledger)
+                run::fixed_stretch((f, h), &sys, (t - origin, &y0), until - origin, &mut ledger)
             }
-            (Method::Adaptive(a), _, Some(tol)) => {
-                adaptive::stretch((a, tol), &sys, (0.0, &y0), until - t, &mut ledger)
-            }
+            (Method::Adaptive(a), _, Some(tol)) => adaptive::stretch(
+                (a, tol),
+                &sys,
+                (t - origin, &y0),
+                until - origin,
+                &mut ledger,
+            ),
             _ => unreachable!("steps_for gives a step to fixed methods and a tolerance otherwise"),
         }
-        .map(|end| run::End {
-            // A stretch that ran to its stop ends at --until itself (`t + (until - t)` may
-            // round beside it).
-            t: if end.event.is_none() && until.is_finite() {
-                until
-            } else {
-                t + end.t
-            },
-            ..end
-        })
-        .map_err(|failure| failure.shifted(t))
+        .map_err(|failure| failure.shifted(origin))
         .map_err(|failure| match failure {
             Failure::Through { t, slot, y } => {
                 // Positions in the lab frame: the stretch's start moved by y's displacements,
@@ -317,7 +318,14 @@ fn integrate(
             *xi += u;
         }
         v.copy_from_slice(&end.y[n..]);
-        t = end.t;
+        // The stretch's end in its own time; in the run's: a stretch that ran to its stop ends
+        // at --until itself (`origin + (until - origin)` may round beside it).
+        let tau = end.t;
+        t = if end.event.is_none() && until.is_finite() {
+            until
+        } else {
+            origin + tau
+        };
         let Some(s) = end.event else {
             stop = "until";
             break;
@@ -337,7 +345,9 @@ fn integrate(
                 records.push(ContactRecord {
                     between: between(slots[p].who, n),
                     start: o.start,
-                    duration: Some(t - o.start),
+                    // As `t - start`, with the part in this stretch in its own time (exact
+                    // where the time's rounding is coarse).
+                    duration: Some((origin - o.start) + tau),
                     max_overlap: ledger.peaks[p],
                     speed: o.speed,
                     // A contact that began without an impact (pressed by another) has no
@@ -498,4 +508,9 @@ fn impulse_model(
         v: run.v,
         collisions: run.collisions,
     }))
+}
+
+/// The spacing of binary64 numbers at `t` (`t >= 0`).
+fn ulp(t: f64) -> f64 {
+    f64::from_bits(t.abs().to_bits() + 1) - t.abs()
 }

@@ -1890,3 +1890,24 @@ fn a_fixed_step_run_stops_on_until_inside_a_contact() {
         rel(x[0] + x[1], 1.0 + t, 1e-15, method);
     }
 }
+
+/// A contact that starts late steps in its own time: after the exchanges, a residue of the
+/// arithmetic's (1e-16) brings body 2 back to the wall at t = 6.1e15, where ulp(t) = 1 and a
+/// step of 0.0123 would be lost in the time's rounding (the run stalled, or printed a duration
+/// of 1). The wall contact of k = 16 on a unit mass lasts half a period, pi / 4, as the
+/// first one did (Verlet at omega h = 0.049: within 1e-3 of it).
+#[test]
+fn a_contact_that_starts_late_is_stepped_in_its_own_time() {
+    let j = run(&args(
+        "-m 1,1 -x 0,1 --sizes 1,1 -v 1,0 --right-wall 5 --wall-stiffness 16 --method verlet",
+    ));
+    let late: Vec<&Value> = j["contacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| f(&c["start"]) > 1e15)
+        .collect();
+    assert_eq!(late.len(), 1, "{j}");
+    let quarter = std::f64::consts::FRAC_PI_4;
+    assert!((f(&late[0]["duration"]) - quarter).abs() < 1e-3, "{j}");
+}
