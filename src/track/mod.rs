@@ -19,6 +19,7 @@
 //!   in a relative time span of 1e-12, and the run stops there and reports the accumulation time,
 //!   extrapolated geometrically. Elastic runs without gravity never stop for it.
 
+mod budget;
 mod engine;
 pub mod motion;
 pub mod pi;
@@ -31,7 +32,7 @@ use crate::line::inertia::{Mass, MassError};
 use crate::line::restitution::{Restitution, RestitutionError};
 use crate::values::number::Number;
 
-pub use engine::{ENERGY_PER_COLLISION, ENERGY_TOLERANCE, energy_tolerance};
+pub use budget::{ENERGY_PER_COLLISION, ENERGY_TOLERANCE, energy_tolerance};
 pub use pi::{PiTheory, TrackReport};
 
 /// A body: mass (exact as typed), centre position, velocity, size (length along the track; 0
@@ -419,7 +420,7 @@ impl Track {
     ) -> Result<Run, TrackError> {
         self.jammed()?;
         let run = engine::Sim::new(self).run(limits, log)?;
-        engine::budgets_hold(self, &run)?;
+        budget::budgets_hold(self, &run)?;
         Ok(run)
     }
 

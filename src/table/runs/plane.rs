@@ -497,7 +497,9 @@ mod tests {
             let power = ((x >> 3) % (2 * scale as u64 + 1)) as i32 - scale;
             (u - 0.5) * 10f64.powi(power)
         };
-        let points: Vec<Vec<(Knob, f64)>> = (0..20_000)
+        // 4,000 points: a row the double-double cannot decide is solved in exact rationals,
+        // about 0.6 ms (20,000 took 49 s of the suite's time).
+        let points: Vec<Vec<(Knob, f64)>> = (0..4_000)
             .map(|i| {
                 // Small integers a quarter of the time (exact ties, zero components), exponents
                 // to 300 a quarter (overflows, the exact fallback), else to 20.
@@ -545,7 +547,7 @@ mod tests {
             let (v3, failed_v3) = run(true);
             // The cases reach what they should: failures, and mostly rows.
             // About half do not approach along their line; the widest overflow.
-            assert!(failed > 2_000 && failed < 15_000, "{failed} rows failed");
+            assert!(failed > 400 && failed < 3_000, "{failed} rows failed");
             assert_eq!(failed, failed_v3);
             assert!(
                 portable == v3,
