@@ -384,18 +384,23 @@ mod tests {
         }
     }
 
-    /// A fixed step lost in the time's rounding (`1e20 + 1e-3 = 1e20`) stops the stretch with
-    /// `Stalled` at once (it used to repeat until the step budget was spent); one that moves
-    /// the time on from the same state runs to the stop time in its count of steps.
-    #[test]
-    fn a_step_below_the_time_rounding_stalls() {
+    /// Two free bodies (masses 1 and 2, no contact slots) and a state of theirs.
+    fn free_pair() -> (System, [f64; 4]) {
         let sys = System {
             m: vec![1.0, 2.0],
             slots: Vec::new(),
             active: Vec::new(),
             d0: Vec::new(),
         };
-        let y0 = [0.0, 5.0, 3.0, -1.0];
+        (sys, [0.0, 5.0, 3.0, -1.0])
+    }
+
+    /// A fixed step lost in the time's rounding (`1e20 + 1e-3 = 1e20`) stops the stretch with
+    /// `Stalled` at once (it used to repeat until the step budget was spent); one that moves
+    /// the time on from the same state runs to the stop time in its count of steps.
+    #[test]
+    fn a_step_below_the_time_rounding_stalls() {
+        let (sys, y0) = free_pair();
         let ledger = || Ledger {
             steps_left: 1000,
             energy_cap: f64::INFINITY,
@@ -416,13 +421,7 @@ mod tests {
     /// reads the state; a finite step goes on.
     #[test]
     fn a_state_or_time_not_finite_stops_the_stretch() {
-        let sys = System {
-            m: vec![1.0, 2.0],
-            slots: Vec::new(),
-            active: Vec::new(),
-            d0: Vec::new(),
-        };
-        let y0 = [0.0, 5.0, 3.0, -1.0];
+        let (sys, y0) = free_pair();
         for (t, y, bad) in [
             (0.5, [0.0, f64::NAN, 3.0, -1.0], true),
             (0.5, [0.0, 5.0, f64::INFINITY, -1.0], true),
