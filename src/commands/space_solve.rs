@@ -96,15 +96,16 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
         list.extend((1..=n).map(Frame::RestFin));
     }
     list.extend(args.frame.iter().cloned());
-    let seen: Vec<(String, Vec<collide::values::rational::Q>, Event)> = list
+    let seen: Vec<(String, Vec<collide::values::rational::Q>, bool, Event)> = list
         .iter()
         .map(|f| {
             let w = lab.observer(f, posed.typed_values)?;
-            Ok((f.describe(), w.clone(), lab.boost(&w)))
+            let approx = lab.observer_approx(f);
+            Ok((f.describe(), w.clone(), approx, lab.boost(&w, approx)))
         })
         .collect::<Result<_>>()?;
     // The invariants hold exactly in every frame (exact arithmetic): check, never assume.
-    for (name, _, o) in &seen {
+    for (name, _, _, o) in &seen {
         if o.crunch() != lab.crunch() || o.lost() != lab.lost() {
             anyhow::bail!(
                 "internal check failed: the crunch or lost energy differs in the {name} frame; \
@@ -114,9 +115,10 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
     }
     let views: Vec<report::frames::FrameView> = seen
         .iter()
-        .map(|(name, w, o)| report::frames::FrameView {
+        .map(|(name, w, approx, o)| report::frames::FrameView {
             name: name.clone(),
             w: w.clone(),
+            w_approx: *approx,
             seen: o,
         })
         .collect();

@@ -112,6 +112,21 @@ pub enum ContactError {
         limit: f64,
         safe: f64,
     },
+    #[error(
+        "contact {who} begins at x = {} with its bodies' positions known only to +-{:.3e} \
+         (binary64's rounding of the positions and of the free flight before it), too coarse \
+         for an overlap of about {:.3e}: measure the positions from a nearer origin, or start \
+         the bodies nearer each other (only differences matter)",
+        num(*.at),
+        .slack,
+        .overlap
+    )]
+    Resolution {
+        who: String,
+        at: f64,
+        slack: f64,
+        overlap: f64,
+    },
     #[error("{method} failed: {failure}")]
     Failed {
         method: &'static str,

@@ -199,6 +199,34 @@ fn integrate(
     for vi in v.iter_mut() {
         *vi -= w;
     }
+    // Positions far from the origin are resolved coarsely (at 5e19 to 8192): where that is not
+    // small beside the contacts' overlap, the run is integrated with its origin at the centre
+    // of mass (without walls, where it is at rest), so that two bodies meet near 0 whatever
+    // their lab positions; results are moved back at the end.
+    let far = x.iter().fold(0.0f64, |a, b| a.max(b.abs()));
+    let shift = if setup.left_wall.is_none()
+        && setup.right_wall.is_none()
+        && ulp(far) > scales.overlap * RESOLUTION_SHIFT
+    {
+        // X_COM = x1 + sum (m_i / M) (x_i - x1): differences, so no product overflows.
+        let total: f64 = m.iter().sum();
+        x[0] + m
+            .iter()
+            .zip(&x)
+            .map(|(mi, xi)| (mi / total) * (xi - x[0]))
+            .sum::<f64>()
+    } else {
+        0.0
+    };
+    // How far each position may be from its exact value: the rounding errors so far, each
+    // taken exactly (an error-free transformation) where it happens: the shift, each free
+    // flight's product and sum, each stretch's sum. Typed positions are exact.
+    let mut slack: Vec<f64> = vec![0.0; n];
+    for (xi, si) in x.iter_mut().zip(slack.iter_mut()) {
+        let moved = *xi - shift;
+        *si += sum_error(*xi, -shift, moved).abs();
+        *xi = moved;
+    }
     let e_rel_start = kinetic(&v);
     let mut ledger = run::Ledger {
         counts: Counts::default(),
@@ -262,10 +290,17 @@ fn integrate(
                 break;
             };
             for i in 0..n {
-                x[i] += v[i] * wait;
+                let dx = v[i] * wait;
+                let moved = x[i] + dx;
+                slack[i] += v[i].mul_add(wait, -dx).abs() + sum_error(x[i], dx, moved).abs();
+                x[i] = moved;
             }
             t += wait;
-            let (_, rate) = system(&active, &x).overlap(s, &y);
+            let (d, rate) = system(&active, &x).overlap(s, &y);
+            // The flight ends where the overlap is 0; what the positions say instead is the
+            // rounding of the flight's time and products (a flight of 1e20 at 1e10 lands the
+            // centres on each other).
+            slack[first_body(slots[s].who, n)] += d.abs();
             active[s] = true;
             ledger.peaks[s] = 0.0;
             open[s] = Some(Open {
@@ -277,6 +312,20 @@ fn integrate(
         if t >= until {
             stop = "until";
             break;
+        }
+        // A contact whose bodies' positions are known more coarsely than a thousandth of its
+        // overlap cannot be followed (its overlap would be rounding): said, never integrated.
+        if let Some((s, known)) = (0..slots.len())
+            .filter(|&s| active[s])
+            .map(|s| (s, slack_of(slots[s].who, &slack)))
+            .find(|&(_, known)| known > scales.overlap * RESOLUTION_REFUSE)
+        {
+            return Err(ContactError::Resolution {
+                who: slots[s].who.describe(n),
+                at: shift + reach_of(slots[s].who, &x),
+                slack: known,
+                overlap: scales.overlap,
+            });
         }
         let sys = system(&active, &x);
         let mut y0 = vec![0.0; 2 * n];
@@ -309,13 +358,19 @@ fn integrate(
             Failure::Through { t, slot, y } => {
                 // Positions in the lab frame: the stretch's start moved by y's displacements,
                 // and the frame's own motion.
-                let at: Vec<f64> = x.iter().zip(&y[..n]).map(|(x, u)| x + u + w * t).collect();
+                let at: Vec<f64> = x
+                    .iter()
+                    .zip(&y[..n])
+                    .map(|(x, u)| shift + (x + u + w * t))
+                    .collect();
                 passed_through(setup, &slots[slot], t, &at, sys.overlap(slot, &y).0)
             }
             other => fail(other),
         })?;
-        for (xi, u) in x.iter_mut().zip(&end.y[..n]) {
-            *xi += u;
+        for ((xi, u), si) in x.iter_mut().zip(&end.y[..n]).zip(slack.iter_mut()) {
+            let moved = *xi + u;
+            *si += sum_error(*xi, *u, moved).abs();
+            *xi = moved;
         }
         v.copy_from_slice(&end.y[n..]);
         // The stretch's end in its own time; in the run's: a stretch that ran to its stop ends
@@ -386,7 +441,7 @@ fn integrate(
     let e_rel_end = sys.energy(&y);
     // Back to the lab frame.
     for (xi, vi) in x.iter_mut().zip(v.iter_mut()) {
-        *xi += w * t;
+        *xi = shift + (*xi + w * t);
         *vi += w;
     }
     y[n..].copy_from_slice(&v);
@@ -508,6 +563,50 @@ fn impulse_model(
         v: run.v,
         collisions: run.collisions,
     }))
+}
+
+/// Where a contact is: the position of its body farther from the origin.
+fn reach_of(who: Contact, x: &[f64]) -> f64 {
+    let n = x.len();
+    match who {
+        Contact::LeftWall => x[0],
+        Contact::Pair(i) if x[i].abs() >= x[i + 1].abs() => x[i],
+        Contact::Pair(i) => x[i + 1],
+        Contact::RightWall => x[n - 1],
+    }
+}
+
+/// The first body a contact touches (the wall's body for a wall).
+fn first_body(who: Contact, n: usize) -> usize {
+    match who {
+        Contact::LeftWall => 0,
+        Contact::Pair(i) => i,
+        Contact::RightWall => n - 1,
+    }
+}
+
+/// How well a contact's overlap is known: the rounding bounds of its bodies' positions.
+fn slack_of(who: Contact, slack: &[f64]) -> f64 {
+    let n = slack.len();
+    match who {
+        Contact::LeftWall => slack[0],
+        Contact::Pair(i) => slack[i] + slack[i + 1],
+        Contact::RightWall => slack[n - 1],
+    }
+}
+
+/// The origin moves to the centre of mass where the positions' spacing exceeds this fraction of
+/// the contacts' overlap (positions of 1e3 and overlaps of 1e-3 stay as they are: 1e-13).
+const RESOLUTION_SHIFT: f64 = 1e-10;
+
+/// A contact whose bodies' positions are known more coarsely than this fraction of its overlap
+/// is refused: its starting overlap would be rounding.
+const RESOLUTION_REFUSE: f64 = 1e-3;
+
+/// The rounding error of `s = a + b` (Knuth's TwoSum: `a + b = s + error` exactly).
+fn sum_error(a: f64, b: f64, s: f64) -> f64 {
+    let bb = s - a;
+    (a - (s - bb)) + (b - bb)
 }
 
 /// The spacing of binary64 numbers at `t` (`t >= 0`).

@@ -357,7 +357,7 @@ mod tests {
             fin: vec![v(&[2, -2]), v(&[2, 2])],
             normal: Some(v(&[1, 1])),
             e: Some(int(1)),
-            approx: false,
+            approx: crate::space::outcome::Marks::default(),
         };
         let s = svg(&o, "test");
         let doc = roxmltree_free_parse(&s);

@@ -329,7 +329,7 @@ pub fn exact_outcome(
         fin,
         normal: Some(nq),
         e: Some(q(e)),
-        approx: false,
+        approx: crate::space::outcome::Marks::default(),
     })
 }
 

@@ -9,7 +9,6 @@
 use num_traits::{Signed, Zero};
 
 use crate::line::frame::Frame;
-use crate::values::quantity::Exact;
 use crate::values::rational::{Q, direction, half, scaled, to_f64};
 
 /// N bodies, before and after, in `dim` dimensions.
@@ -23,9 +22,123 @@ pub struct Outcome {
     pub normal: Option<Vec<Q>>,
     /// Restitution, where it means something (two bodies).
     pub e: Option<Q>,
-    /// Some value is irrational, held to [`crate::space::algebra::ROOT_DIGITS`] digits or
-    /// rounded (an angle of 30 degrees): exact output marks it `≈`.
-    pub approx: bool,
+    /// Which values are irrational, held to [`crate::space::algebra::ROOT_DIGITS`] digits or
+    /// rounded (an angle of 30 degrees): exact output marks those, and what is computed from
+    /// them, `≈`; typed values stay exact.
+    pub approx: Marks,
+}
+
+/// Which of an outcome's values are approximations. Empty lists mean none: an exact outcome is
+/// `Marks::default()`. A value computed from several (an energy, `V_COM`, an impulse) is
+/// approximate when any of them is.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Marks {
+    /// Every value (a typed value was rounded: an angle of 30 degrees in binary64 mode).
+    pub all: bool,
+    pub masses: Vec<bool>,
+    /// Per body, per component.
+    pub v_in: Vec<Vec<bool>>,
+    pub fin: Vec<Vec<bool>>,
+    pub e: bool,
+}
+
+impl Marks {
+    /// Every value approximate (`all`), or none.
+    pub fn uniform(all: bool) -> Marks {
+        Marks {
+            all,
+            ..Marks::default()
+        }
+    }
+
+    fn get(list: &[bool], i: usize) -> bool {
+        list.get(i).copied().unwrap_or(false)
+    }
+
+    fn body(list: &[Vec<bool>], i: usize) -> bool {
+        list.get(i).is_some_and(|v| v.iter().any(|x| *x))
+    }
+
+    /// Whether any value is approximate.
+    pub fn any(&self) -> bool {
+        self.all
+            || self.e
+            || self.masses.iter().any(|x| *x)
+            || (0..self.v_in.len()).any(|i| Marks::body(&self.v_in, i))
+            || (0..self.fin.len()).any(|i| Marks::body(&self.fin, i))
+    }
+
+    /// Body `i`'s mass.
+    pub fn mass(&self, i: usize) -> bool {
+        self.all || Marks::get(&self.masses, i)
+    }
+
+    /// The restitution.
+    pub fn e(&self) -> bool {
+        self.all || self.e
+    }
+
+    /// Component `k` of body `i`'s velocity before.
+    pub fn v_in(&self, i: usize, k: usize) -> bool {
+        self.all || self.v_in.get(i).is_some_and(|v| Marks::get(v, k))
+    }
+
+    /// Component `k` of body `i`'s velocity after.
+    pub fn fin(&self, i: usize, k: usize) -> bool {
+        self.all || self.fin.get(i).is_some_and(|v| Marks::get(v, k))
+    }
+
+    /// What the state before determines (`V_COM`, `KE_IN`, `KE_COM`, the crunch, `P`): the
+    /// masses and the velocities before.
+    pub fn before(&self) -> bool {
+        self.all
+            || self.masses.iter().any(|x| *x)
+            || (0..self.v_in.len()).any(|i| Marks::body(&self.v_in, i))
+    }
+
+    /// What the state after determines (`KE_FIN`, `P'`): the masses and the velocities after.
+    pub fn after(&self) -> bool {
+        self.all
+            || self.masses.iter().any(|x| *x)
+            || (0..self.fin.len()).any(|i| Marks::body(&self.fin, i))
+    }
+
+    /// Body `i`'s state before (its velocity, its energy): its mass and its velocity.
+    pub fn body_in(&self, i: usize) -> bool {
+        self.all || self.mass(i) || Marks::body(&self.v_in, i)
+    }
+
+    /// Body `i`'s state after.
+    pub fn body_fin(&self, i: usize) -> bool {
+        self.all || self.mass(i) || Marks::body(&self.fin, i)
+    }
+
+    /// Body `i`'s change (its impulse, `dv`): its mass and both its velocities.
+    pub fn change(&self, i: usize) -> bool {
+        self.all || self.mass(i) || Marks::body(&self.v_in, i) || Marks::body(&self.fin, i)
+    }
+
+    /// Before and after swapped (the event reversed in time).
+    fn reversed(&self) -> Marks {
+        Marks {
+            v_in: self.fin.clone(),
+            fin: self.v_in.clone(),
+            ..self.clone()
+        }
+    }
+
+    /// Every velocity of `bodies` bodies in `dim` dimensions less an observer's velocity,
+    /// approximate or not.
+    fn boosted(&self, w: bool, bodies: usize, dim: usize) -> Marks {
+        if !w {
+            return self.clone();
+        }
+        Marks {
+            v_in: vec![vec![true; dim]; bodies],
+            fin: vec![vec![true; dim]; bodies],
+            ..self.clone()
+        }
+    }
 }
 
 /// `a.b`.
@@ -116,7 +229,9 @@ impl Outcome {
     pub fn lost(&self) -> Q {
         let (ki, kf) = (self.ke_in(), self.ke_fin());
         let d = &ki - &kf;
-        if self.approx && d.clone().abs() * Q::from(crate::values::rational::pow10(30)) <= ki + kf {
+        if self.approx.any()
+            && d.clone().abs() * Q::from(crate::values::rational::pow10(30)) <= ki + kf
+        {
             return Q::ZERO;
         }
         d
@@ -149,12 +264,29 @@ impl Outcome {
     }
 
     /// The same event seen from a frame moving at `w`: every velocity less `w`.
-    pub fn boost(&self, w: &[Q]) -> Outcome {
+    /// `w_approx` marks an observer velocity that is itself approximate
+    /// ([`Outcome::observer_approx`]).
+    pub fn boost(&self, w: &[Q], w_approx: bool) -> Outcome {
         let shift = |vs: &[Vec<Q>]| vs.iter().map(|v| sub(v, w)).collect();
         Outcome {
             v_in: shift(&self.v_in),
             fin: shift(&self.fin),
+            approx: self.approx.boosted(w_approx, self.bodies(), self.dim),
             ..self.clone()
+        }
+    }
+
+    /// Whether the observer velocity of `frame` is approximate: `V_COM` as the state before
+    /// is, a body's velocity as it is; a typed one never.
+    pub fn observer_approx(&self, frame: &Frame) -> bool {
+        let body = |list: &dyn Fn(usize, usize) -> bool, i: usize| {
+            (0..self.dim).any(|k| list(i.saturating_sub(1), k))
+        };
+        match frame {
+            Frame::Com => self.approx.before(),
+            Frame::RestIn(i) => body(&|b, k| self.approx.v_in(b, k), *i),
+            Frame::RestFin(i) => body(&|b, k| self.approx.fin(b, k), *i),
+            _ => false,
         }
     }
 
@@ -201,6 +333,7 @@ impl Outcome {
         Outcome {
             v_in: neg(&self.fin),
             fin: neg(&self.v_in),
+            approx: self.approx.reversed(),
             e: self
                 .e
                 .as_ref()
@@ -259,15 +392,6 @@ impl Outcome {
         }
         let j = self.impulse(1);
         (!j.iter().all(Zero::is_zero)).then_some(j)
-    }
-
-    /// A value of this outcome, exact or marked approximate.
-    pub fn value(&self, q: Q) -> Exact {
-        if self.approx {
-            Exact::Approx(q)
-        } else {
-            Exact::Rational(q)
-        }
     }
 }
 
@@ -356,7 +480,7 @@ mod tests {
             fin: vec![v(&[2, -2]), v(&[2, 2])],
             normal: Some(v(&[1, 1])),
             e: Some(int(1)),
-            approx: false,
+            approx: Marks::default(),
         }
     }
 
@@ -380,7 +504,7 @@ mod tests {
     #[test]
     fn frames_keep_the_crunch_and_reversal_swaps() {
         let o = pucks();
-        let b = o.boost(&[ratio(7, 3), int(-5)]);
+        let b = o.boost(&[ratio(7, 3), int(-5)], false);
         assert_eq!(b.crunch(), o.crunch());
         assert_eq!(b.lost(), o.lost());
         assert_ne!(b.ke_in(), o.ke_in());

@@ -14,7 +14,7 @@ use crate::values::rational::{Q, from_f64};
 use crate::values::units::{Quantity, ResolveError, Units, resolve};
 
 use super::angle::Angle;
-use super::outcome::Outcome;
+use super::outcome::{Marks, Outcome};
 use super::solve::{self, SolveError, Statement, Velocity};
 use super::typed::{Typed, TypedError, dimension};
 
@@ -465,12 +465,19 @@ pub fn outcomes(posed: &Posed, solved: &solve::Solved) -> Vec<(Outcome, Vec<solv
         .solutions
         .iter()
         .map(|s| {
-            let approx = st.inexact
-                || s.masses
-                    .iter()
-                    .chain(s.v_in.iter().flatten())
-                    .chain(s.fin.iter().flatten())
-                    .any(|x| matches!(x, crate::values::quantity::Exact::Approx(_)));
+            let is = |x: &crate::values::quantity::Exact| {
+                matches!(x, crate::values::quantity::Exact::Approx(_))
+            };
+            let each = |vs: &[Vec<crate::values::quantity::Exact>]| -> Vec<Vec<bool>> {
+                vs.iter().map(|v| v.iter().map(is).collect()).collect()
+            };
+            let approx = Marks {
+                all: st.inexact,
+                masses: s.masses.iter().map(is).collect(),
+                v_in: each(&s.v_in),
+                fin: each(&s.fin),
+                e: s.e.as_ref().is_some_and(is),
+            };
             let q = |e: &crate::values::quantity::Exact| e.rational().clone();
             let outcome = Outcome {
                 dim: st.dim,

@@ -133,7 +133,7 @@ impl Serialize for Exact {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self {
             Exact::Rational(q) => s.serialize_str(&fraction(q)),
-            Exact::Approx(q) => s.serialize_str(&significant(q, APPROX_DIGITS)),
+            Exact::Approx(q) => s.serialize_str(&nearest(q, APPROX_DIGITS)),
         }
     }
 }
@@ -153,7 +153,7 @@ impl Scalar for Exact {
                     .or_else(|| short_scientific(q))
                     .unwrap_or_else(|| format!("≈{}", significant(q, APPROX_DIGITS))),
             },
-            Exact::Approx(q) => format!("≈{}", significant(q, APPROX_DIGITS)),
+            Exact::Approx(q) => format!("≈{}", nearest(q, APPROX_DIGITS)),
         }
     }
     fn is_representable(&self) -> bool {
@@ -294,7 +294,20 @@ fn power_of_five(d: &UBig) -> Option<usize> {
 }
 
 /// `q` to `n` significant digits (truncated), plain for moderate exponents, else `d.ddde±x`.
+/// Truncation keeps the side: an exact energy just below 35 prints `34.999...`, never `35`
+/// beside a loss of `4.2e-22`.
 pub fn significant(q: &Q, n: usize) -> String {
+    digits(q, n, false)
+}
+
+/// `q` to `n` significant digits, rounded half away from zero: for an irrational value held to
+/// more digits than shown, whose side the digits held do not know (an approximation of 8 from
+/// below prints `8`, never `7.9999999999999999999` beside an elastic label).
+pub fn nearest(q: &Q, n: usize) -> String {
+    digits(q, n, true)
+}
+
+fn digits(q: &Q, n: usize, round: bool) -> String {
     if q.is_zero() {
         return "0".to_string();
     }
@@ -319,7 +332,18 @@ pub fn significant(q: &Q, n: usize) -> String {
     while !scaled(-e - 1).is_zero() {
         e += 1;
     }
-    let digits = scaled(n as i64 - 1 - e).to_string();
+    // Rounded: one digit more, then half away from zero.
+    let mut rounded = if round {
+        (scaled(n as i64 - e) + UBig::from(5u8)) / UBig::from(10u8)
+    } else {
+        scaled(n as i64 - 1 - e)
+    };
+    if rounded >= pow10(n) {
+        // 9.99... carried to 10.0...: one more integer digit, one fewer after the point.
+        rounded /= UBig::from(10u8);
+        e += 1;
+    }
+    let digits = rounded.to_string();
     if (-5..21).contains(&e) {
         if e >= 0 {
             let e = e as usize;
@@ -451,6 +475,15 @@ mod tests {
     fn significant_digits() {
         assert_eq!(significant(&q(1, 3), 5), "0.33333");
         assert_eq!(significant(&q(200, 3), 5), "66.666");
+        assert_eq!(nearest(&q(200, 3), 5), "66.667");
+        // An approximation of 8 from below prints 8; the exact value truncated keeps its side.
+        let below = q(8, 1) - Q::from_parts(IBig::ONE, pow10(38));
+        assert_eq!(nearest(&below, 20), "8");
+        assert_eq!(significant(&below, 20), "7.9999999999999999999");
+        assert_eq!(nearest(&q(-99999, 10000), 3), "-10");
+        assert_eq!(nearest(&q(99999, 1), 3), "100000");
+        assert_eq!(nearest(&q(-12345, 10000), 3), "-1.23");
+        assert_eq!(nearest(&q(-1235, 1000), 3), "-1.24");
         assert_eq!(significant(&q(7, 1), 20), "7");
         assert_eq!(significant(&q(-1, 1000000), 3), "-1e-6");
         let big = Q::from(pow10(400) * UBig::from(3u8));
@@ -463,12 +496,14 @@ mod tests {
         // lecture Fig. 1.3's IN ellipse radius a. Trailing zeros are not printed.
         let r = sqrt(&q(14500, 4), 30);
         assert_eq!(significant(&r, 20), "60.2079728939614774");
+        assert_eq!(nearest(&r, 20), "60.207972893961477401");
         assert_eq!(
             significant(&sqrt(&q(2, 1), 25), 20),
             "1.4142135623730950488"
         );
         assert_eq!(sqrt(&q(9, 4), 10), q(3, 2));
-        // Long and huge operands: only the digits asked for are computed, truncated.
+        // Long and huge operands: only the digits asked for are computed, truncated (sqrt(10) =
+        // 3.16227766016837933199889...; rounded, the twentieth digit goes up).
         let big = Q::from(pow10(4000) * UBig::from(2u8));
         assert_eq!(
             significant(&sqrt(&big, 25), 20),
@@ -481,5 +516,6 @@ mod tests {
         );
         let long = Q::from_parts(IBig::from(pow10(3001)) + IBig::ONE, pow10(3000));
         assert_eq!(significant(&sqrt(&long, 25), 20), "3.1622776601683793319");
+        assert_eq!(nearest(&sqrt(&long, 25), 20), "3.162277660168379332");
     }
 }

@@ -352,7 +352,7 @@ impl PlaneInput {
         // FIN = IN for a "finally at rest" frame.
         let judged = judge(posed, solved, false, false).map_err(|e| InputError::new("m1", e))?;
         let (lab, collides) = match judged {
-            Judged::Receding { o, .. } => (o, false),
+            Judged::Receding { o, .. } => (*o, false),
             Judged::Solutions { kept, .. } => {
                 let (o, _, v) = kept
                     .into_iter()
@@ -369,7 +369,7 @@ impl PlaneInput {
         let w = seen
             .observer(frame, posed.typed_values)
             .map_err(|e| InputError::new("frame", e))?;
-        let o = lab.boost(&w);
+        let o = lab.boost(&w, seen.observer_approx(frame));
         let approaching = match &o.normal {
             Some(n) => dot(n, &crate::space::outcome::sub(&o.v_in[0], &o.v_in[1])) > Q::ZERO,
             None => true,

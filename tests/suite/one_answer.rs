@@ -421,3 +421,57 @@ fn a_solved_problem_prints_the_typed_and_the_solved_values_in_every_section() {
     assert!(text.contains("v1' = 0.0717509184423218 m/s"), "{text}");
     assert!(!text.contains("0.0717509184423214"), "{text}");
 }
+
+/// Under `--exact` a solution with an irrational root marks `≈` only what hangs on the root: the
+/// typed values and what follows from them alone stay exact (before, every value of the
+/// outcome was marked, `v1 = (≈4, 0)` and `e = ≈1 (elastic)`, and KE_FIN of an elastic solution
+/// read `≈7.9999999999999999999` beside KE_IN = 8).
+///
+/// By hand: m = (1, 2), v1 = (4, 0), v2 = 0, v1' = (x, 1) given in part, elastic. Momentum:
+/// x + 2 y = 4 and 1 + 2 v2y = 0, so v2' = (y, -1/2); energy: x^2 + 1 + 2 (y^2 + 1/4) = 16, so
+/// 3 x^2 - 8 x - 13 = 0, x = (4 + sqrt 55) / 3 = 3.80539949569855431... (or (4 - sqrt 55) / 3).
+/// V_COM = (4/3, 0), KE_IN = 8 = KE_FIN exactly, KE_COM = 8/3, crunch = 16/3.
+#[test]
+fn exact_output_marks_only_what_hangs_on_an_irrational_root() {
+    let case = [
+        "-m", "1,2", "-v", "(4,0),0", "--fin", "(?,1),?", "-e", "1", "--exact",
+    ];
+    let out = text_of("solve", &case);
+    let x = (4.0 + 55f64.sqrt()) / 3.0;
+    for want in [
+        "e = 1 (elastic",
+        "v1     (4, 0)",
+        "V_COM  (4/3, 0)",
+        "KE_IN                           8\n",
+        "KE_FIN                          ≈8\n",
+        "KE_COM = 1/2 M_total |V_COM|^2  8/3\n",
+        "crunch = KE_IN - KE_COM         16/3\n",
+    ] {
+        assert!(out.contains(want), "{want:?} not in\n{out}");
+    }
+    // The solved component to 20 digits (the first 15 checked against binary64's root, which
+    // is within an ulp), the typed 1 beside it exact.
+    let line = out.lines().find(|l| l.starts_with("  v1'    (≈")).unwrap();
+    let digits: String = line["  v1'    (≈".len()..].chars().take(16).collect();
+    assert_eq!(&digits[..15], &format!("{x:.14}")[..15], "{line}");
+    assert!(line.contains(", 1)"), "{line}");
+    for wrong in ["(≈4", "≈1 (", "≈7.99", "≈4/3", "≈8/3", "≈16/3"] {
+        assert!(!out.contains(wrong), "{wrong:?} in\n{out}");
+    }
+    let j = json_of("solve", &case);
+    let first = &j["solutions"][0];
+    assert_eq!(first["approx"], true);
+    assert_eq!(first["restitution"], "1");
+    assert_eq!(first["in"][0], serde_json::json!(["4", "0"]));
+    assert_eq!(first["v_com"], serde_json::json!(["4/3", "0"]));
+    assert_eq!(first["energy"]["in"], "8");
+    assert_eq!(first["energy"]["fin"], "8");
+    assert_eq!(first["energy"]["lost"], "0");
+    assert_eq!(first["solved"]["v1'"][1], "1");
+    // A case with no root carries no mark at all.
+    let plain = json_of(
+        "solve",
+        &["-m", "1,1", "-v", "(4,0),0", "--normal", "(1,1)", "--exact"],
+    );
+    assert!(plain.get("approx").is_none(), "{plain}");
+}

@@ -40,8 +40,8 @@ fn lost_fraction(o: &Outcome) -> Option<Q> {
 
 /// The section as text: a row per body and quantity.
 pub fn text(o: &Outcome, style: &Style, units: &Units) -> Block {
-    let a = o.approx;
-    let e = |q: &Q| style.show(&style.energy(q), a);
+    let m = &o.approx;
+    let e = |q: &Q, a: bool| style.show(&style.energy(q), a);
     let impulse = match (units.mass, units.velocity) {
         (Some(_), Some(_)) => format!("impulse in {}, ", units.impulse()),
         _ => String::new(),
@@ -54,25 +54,42 @@ pub fn text(o: &Outcome, style: &Style, units: &Units) -> Block {
     let all: Vec<_> = (0..n).map(|i| body(o, i)).collect();
     for (i, c) in all.iter().enumerate() {
         let k = i + 1;
-        b.row(format!("dv{k} = v{k}' - v{k}"), vector(style, &c.dv, a), "");
+        b.row(
+            format!("dv{k} = v{k}' - v{k}"),
+            vector(style, &c.dv, m.change(i)),
+            "",
+        );
     }
     for (i, c) in all.iter().enumerate() {
         let k = i + 1;
         let note = if k == n { "the impulses sum to 0" } else { "" };
-        b.row(format!("dp{k} = m{k} dv{k}"), vector(style, &c.dp, a), note);
+        b.row(
+            format!("dp{k} = m{k} dv{k}"),
+            vector(style, &c.dp, m.change(i)),
+            note,
+        );
     }
     for (i, c) in all.iter().enumerate() {
         let k = i + 1;
         b.row(
             format!("KE{k}: IN, FIN"),
-            format!("{}, {}", e(&c.ke_in), e(&c.ke_fin)),
+            format!(
+                "{}, {}",
+                e(&c.ke_in, m.body_in(i)),
+                e(&c.ke_fin, m.body_fin(i))
+            ),
             format!("1/2 m{k} |v{k}|^2, 1/2 m{k} |v{k}'|^2"),
         );
     }
     for (i, c) in all.iter().enumerate() {
         let k = i + 1;
-        b.row(format!("dKE{k}"), e(&(&c.ke_fin - &c.ke_in)), "");
+        b.row(
+            format!("dKE{k}"),
+            e(&(&c.ke_fin - &c.ke_in), m.change(i)),
+            "",
+        );
     }
+    let a = m.any();
     if let Some(f) = lost_fraction(o) {
         // As a percentage too, of the exact share (`--exact` prints the fraction alone).
         let percent = if style.exact {
@@ -88,30 +105,44 @@ pub fn text(o: &Outcome, style: &Style, units: &Units) -> Block {
 /// The section as JSON: `dv`, `impulse` (per-body vectors), `ke_in`, `ke_fin`, `dke` (per
 /// body) and `lost_fraction`.
 pub fn json(o: &Outcome, style: &Style) -> Value {
-    let a = o.approx;
+    let marks = &o.approx;
     let all: Vec<_> = (0..o.bodies()).map(|i| body(o, i)).collect();
     let vecs = |pick: fn(&Change) -> &Vec<Q>| {
         Value::Array(
             all.iter()
-                .map(|c| Value::Array(pick(c).iter().map(|x| style.json(x, a)).collect()))
+                .enumerate()
+                .map(|(i, c)| {
+                    let a = marks.change(i);
+                    Value::Array(pick(c).iter().map(|x| style.json(x, a)).collect())
+                })
                 .collect(),
         )
     };
-    let energies = |pick: fn(&Change) -> Q| {
+    let energies = |pick: fn(&Change) -> Q, approx: &dyn Fn(usize) -> bool| {
         Value::Array(
             all.iter()
-                .map(|c| style.json(&style.energy(&pick(c)), a))
+                .enumerate()
+                .map(|(i, c)| style.json(&style.energy(&pick(c)), approx(i)))
                 .collect(),
         )
     };
     let mut m = Map::new();
     m.insert("dv".into(), vecs(|c| &c.dv));
     m.insert("impulse".into(), vecs(|c| &c.dp));
-    m.insert("ke_in".into(), energies(|c| c.ke_in.clone()));
-    m.insert("ke_fin".into(), energies(|c| c.ke_fin.clone()));
-    m.insert("dke".into(), energies(|c| &c.ke_fin - &c.ke_in));
+    m.insert(
+        "ke_in".into(),
+        energies(|c| c.ke_in.clone(), &|i| marks.body_in(i)),
+    );
+    m.insert(
+        "ke_fin".into(),
+        energies(|c| c.ke_fin.clone(), &|i| marks.body_fin(i)),
+    );
+    m.insert(
+        "dke".into(),
+        energies(|c| &c.ke_fin - &c.ke_in, &|i| marks.change(i)),
+    );
     if let Some(f) = lost_fraction(o) {
-        m.insert("lost_fraction".into(), style.json(&f, a));
+        m.insert("lost_fraction".into(), style.json(&f, marks.any()));
     }
     Value::Object(m)
 }

@@ -7,7 +7,7 @@ use std::fmt::Write;
 use num_traits::Signed;
 use serde_json::{Map, Value, json};
 
-use super::{Overflow, Style, name, vector};
+use super::{Overflow, Style, name, vector, vector_each, velocities};
 use crate::space::outcome::{Outcome, sub};
 use crate::values::rational::Q;
 use crate::values::units::Units;
@@ -18,6 +18,8 @@ use super::super::text::Block;
 pub struct FrameView<'a> {
     pub name: String,
     pub w: Vec<Q>,
+    /// Whether `w` is approximate (`V_COM` of an irrational solution).
+    pub w_approx: bool,
     pub seen: &'a Outcome,
 }
 
@@ -33,8 +35,9 @@ pub fn text(
     let Some(first) = frames.first() else {
         return Ok(out);
     };
-    let a = first.seen.approx;
-    let e = |q: Q| style.show(&style.energy(&q), a);
+    let marks = &first.seen.approx;
+    let a = marks.any();
+    let e = |q: Q, a: bool| style.show(&style.energy(&q), a);
     out.push('\n');
     out.push_str(&super::super::text::wrap(
         &format!(
@@ -48,7 +51,12 @@ pub fn text(
         if k > 0 {
             out.push('\n');
         }
-        let _ = writeln!(out, "  {}   w = {}", f.name, vector(style, &f.w, a));
+        let _ = writeln!(
+            out,
+            "  {}   w = {}",
+            f.name,
+            vector(style, &f.w, f.w_approx)
+        );
         // Body by body: before and after side by side where they fit, else one to a line.
         let cells: Vec<(String, String)> = (0..f.seen.bodies())
             .map(|i| {
@@ -56,9 +64,13 @@ pub fn text(
                     format!(
                         "{:<4} {}",
                         name(i, false),
-                        vector(style, &f.seen.v_in[i], a)
+                        vector_each(style, &f.seen.v_in[i], |k| f.seen.approx.v_in(i, k))
                     ),
-                    format!("{:<4} {}", name(i, true), vector(style, &f.seen.fin[i], a)),
+                    format!(
+                        "{:<4} {}",
+                        name(i, true),
+                        vector_each(style, &f.seen.fin[i], |k| f.seen.approx.fin(i, k))
+                    ),
                 )
             })
             .collect();
@@ -73,8 +85,8 @@ pub fn text(
         }
         let mut energies = format!(
             "KE_IN {}   KE_FIN {}",
-            e(f.seen.ke_in()),
-            e(f.seen.ke_fin())
+            e(f.seen.ke_in(), f.seen.approx.before()),
+            e(f.seen.ke_fin(), f.seen.approx.after())
         );
         if reverse {
             let same = f.seen.reversed() == *f.seen;
@@ -87,7 +99,7 @@ pub fn text(
         let _ = writeln!(out, "    {energies}");
     }
     let mut inv = Block::new("Invariants (the same in every frame)");
-    inv.row("crunch", e(first.seen.crunch()), "");
+    inv.row("crunch", e(first.seen.crunch(), marks.before()), "");
     let lost = first.seen.lost();
     if !lost.is_zero() {
         inv.row(
@@ -96,15 +108,16 @@ pub fn text(
             } else {
                 "lost"
             },
-            e(lost.abs()),
+            e(lost.abs(), a),
             "",
         );
     }
     if let Some(r) = &first.seen.e {
-        inv.row("e", style.show(r, a), "");
+        inv.row("e", style.show(r, marks.e()), "");
     }
     if first.seen.bodies() == 2 {
         let rel = sub(&first.seen.v_in[0], &first.seen.v_in[1]);
+        let a = marks.body_in(0) || marks.body_in(1);
         inv.row("v1 - v2", vector(style, &rel, a), "");
     }
     inv.render(&mut out);
@@ -115,28 +128,27 @@ pub fn text(
 pub fn json(frames: &[FrameView], reverse: bool, style: &Style) -> Result<Value, Overflow> {
     let mut list = Vec::new();
     for f in frames {
-        let a = f.seen.approx;
-        let vecs = |vs: &[Vec<Q>]| -> Value {
-            vs.iter()
-                .map(|v| v.iter().map(|x| style.json(x, a)).collect::<Vec<_>>())
-                .collect::<Vec<_>>()
-                .into()
-        };
-        let e = |q: Q| style.json(&style.energy(&q), a);
+        let marks = &f.seen.approx;
+        let e = |q: Q, a: bool| style.json(&style.energy(&q), a);
         let mut m = Map::new();
         m.insert("name".into(), f.name.clone().into());
         m.insert(
             "w".into(),
             f.w.iter()
-                .map(|x| style.json(x, a))
+                .map(|x| style.json(x, f.w_approx))
                 .collect::<Vec<_>>()
                 .into(),
         );
-        m.insert("in".into(), vecs(&f.seen.v_in));
-        m.insert("fin".into(), vecs(&f.seen.fin));
+        m.insert("in".into(), velocities(style, f.seen, false));
+        m.insert("fin".into(), velocities(style, f.seen, true));
+        let before = marks.before();
         m.insert(
             "energy".into(),
-            json!({"in": e(f.seen.ke_in()), "fin": e(f.seen.ke_fin()), "com": e(f.seen.ke_com())}),
+            json!({
+                "in": e(f.seen.ke_in(), before),
+                "fin": e(f.seen.ke_fin(), marks.after()),
+                "com": e(f.seen.ke_com(), before),
+            }),
         );
         if reverse {
             m.insert(
@@ -148,13 +160,14 @@ pub fn json(frames: &[FrameView], reverse: bool, style: &Style) -> Result<Value,
     }
     let mut inv = Map::new();
     if let Some(first) = frames.first() {
-        let a = first.seen.approx;
-        let e = |q: Q| style.json(&style.energy(&q), a);
-        inv.insert("crunch".into(), e(first.seen.crunch()));
-        inv.insert("lost".into(), e(first.seen.lost()));
+        let marks = &first.seen.approx;
+        let e = |q: Q, a: bool| style.json(&style.energy(&q), a);
+        inv.insert("crunch".into(), e(first.seen.crunch(), marks.before()));
+        inv.insert("lost".into(), e(first.seen.lost(), marks.any()));
         if let Some(r) = &first.seen.e {
-            inv.insert("restitution".into(), style.json(r, a));
+            inv.insert("restitution".into(), style.json(r, marks.e()));
         }
+        let a = marks.body_in(0) || marks.body_in(1);
         if first.seen.bodies() == 2 {
             let rel = sub(&first.seen.v_in[0], &first.seen.v_in[1]);
             inv.insert(

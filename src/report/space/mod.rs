@@ -196,7 +196,17 @@ impl Style {
 
 /// `(a, b)`, or `a` on a line.
 pub(crate) fn vector(style: &Style, v: &[Q], approx: bool) -> String {
-    let parts: Vec<String> = v.iter().map(|x| style.show(x, approx)).collect();
+    vector_each(style, v, |_| approx)
+}
+
+/// `(a, b)` with component `k` marked approximate where `approx(k)`: a typed component beside
+/// a solved irrational one stays exact.
+pub(crate) fn vector_each(style: &Style, v: &[Q], approx: impl Fn(usize) -> bool) -> String {
+    let parts: Vec<String> = v
+        .iter()
+        .enumerate()
+        .map(|(k, x)| style.show(x, approx(k)))
+        .collect();
     if parts.len() == 1 {
         parts[0].clone()
     } else {
@@ -206,6 +216,16 @@ pub(crate) fn vector(style: &Style, v: &[Q], approx: bool) -> String {
 
 /// `4 @ 30°`: a vector's speed and direction (in the plane), or its speed (in space); with
 /// bearings, `4 @ 60° (N30E)`.
+/// A vector for JSON, component `k` marked approximate where `approx(k)`.
+pub(crate) fn json_each(style: &Style, v: &[Q], approx: impl Fn(usize) -> bool) -> Value {
+    Value::Array(
+        v.iter()
+            .enumerate()
+            .map(|(k, x)| style.json(x, approx(k)))
+            .collect(),
+    )
+}
+
 pub(crate) fn speed_angle(style: &Style, v: &[Q]) -> String {
     let (speed, angle) = polar(v);
     match angle {
@@ -237,7 +257,12 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
         2 => "in the plane",
         _ => "in space",
     };
-    let masses: Vec<String> = o.masses.iter().map(|m| style.show(m, false)).collect();
+    let masses: Vec<String> = o
+        .masses
+        .iter()
+        .enumerate()
+        .map(|(i, m)| style.show(m, o.approx.mass(i)))
+        .collect();
     let mut out = format!(
         "{} bodies {space}: masses {}{}\n",
         o.bodies(),
@@ -256,12 +281,12 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
         } else {
             "ka-whump"
         };
-        let _ = writeln!(out, "e = {} ({kind})", style.show(e, o.approx));
+        let _ = writeln!(out, "e = {} ({kind})", style.show(e, o.approx.e()));
     }
     if let Some(n) = &o.normal {
         let line = format!(
             "Line of impact n = {} (from body 1 to body 2){}",
-            vector(style, n, o.approx),
+            vector(style, n, o.approx.all),
             match polar(n).1 {
                 Some(a) => format!(", at {}°", num(a)),
                 None => String::new(),
@@ -284,15 +309,23 @@ pub(crate) fn name(i: usize, fin: bool) -> String {
 /// The report's sections as text.
 pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<String, Overflow> {
     let mut out = String::new();
-    let a = o.approx;
+    let marks = &o.approx;
+    let a = marks.any();
     let unit = unit_suffix(units);
     if show.vectors {
         let mut b = Block::new("Velocities (IN, then FIN)");
         for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
             for (i, v) in vs.iter().enumerate() {
+                let each = |k| {
+                    if fin {
+                        marks.fin(i, k)
+                    } else {
+                        marks.v_in(i, k)
+                    }
+                };
                 b.row(
                     name(i, fin),
-                    format!("{}{unit}", vector(style, v, a)),
+                    format!("{}{unit}", vector_each(style, v, each)),
                     speed_angle(style, v),
                 );
             }
@@ -300,7 +333,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         let com = o.v_com();
         b.row(
             "V_COM",
-            format!("{}{unit}", vector(style, &com, a)),
+            format!("{}{unit}", vector(style, &com, marks.before())),
             speed_angle(style, &com),
         );
         if o.bodies() == 2 {
@@ -311,7 +344,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
             };
             b.row(
                 "J",
-                format!("{}{unit}", vector(style, &j, a)),
+                format!("{}{unit}", vector(style, &j, marks.change(1))),
                 "impulse on body 2, m2 (v2' - v2)",
             );
         }
@@ -345,6 +378,11 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         for (fin, vs) in [(false, &o.v_in), (true, &o.fin)] {
             for (i, v) in vs.iter().enumerate() {
                 let p: Vec<Q> = v.iter().map(|x| x * &o.masses[i]).collect();
+                let a = if fin {
+                    marks.body_fin(i)
+                } else {
+                    marks.body_in(i)
+                };
                 b.row(
                     format!("p{}{}", i + 1, if fin { "'" } else { "" }),
                     vector(style, &p, a),
@@ -354,7 +392,7 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         }
         b.row(
             "P_total",
-            vector(style, &o.momentum(&o.v_in), a),
+            vector(style, &o.momentum(&o.v_in), marks.before()),
             "the same before and after",
         );
         b.render(&mut out);
@@ -369,8 +407,16 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         };
         let com: Vec<Vec<Q>> = vec![o.v_com(); o.bodies()];
         let mut b = Block::new("Quadratic forms (X.M.Y in R^(dN), M = diag(m1 I, ..., mN I))");
-        b.row("V_IN.M.V_IN", style.show(&form(&o.v_in, &o.v_in), a), "");
-        b.row("V_FIN.M.V_FIN", style.show(&form(&o.fin, &o.fin), a), "");
+        b.row(
+            "V_IN.M.V_IN",
+            style.show(&form(&o.v_in, &o.v_in), marks.before()),
+            "",
+        );
+        b.row(
+            "V_FIN.M.V_FIN",
+            style.show(&form(&o.fin, &o.fin), marks.after()),
+            "",
+        );
         b.row(
             "V_FIN.M.V_IN",
             style.show(&form(&o.fin, &o.v_in), a),
@@ -378,30 +424,34 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
         );
         b.row(
             "V_COM.M.V_IN",
-            style.show(&form(&com, &o.v_in), a),
+            style.show(&form(&com, &o.v_in), marks.before()),
             "= V_COM.M.V_FIN = V_COM.P_total",
         );
         b.render(&mut out);
     }
     if show.energy {
-        let e = |q: Q| style.show(&style.energy(&q), a);
+        let e = |q: Q, a: bool| style.show(&style.energy(&q), a);
+        let before = marks.before();
         let mut b = Block::new(format!("Energy (KE = 1/2 V.M.V, in {})", units.energy()));
-        b.row("KE_IN", e(o.ke_in()), "");
-        b.row("KE_FIN", e(o.ke_fin()), "");
-        b.row("KE_COM = 1/2 M_total |V_COM|^2", e(o.ke_com()), "");
+        b.row("KE_IN", e(o.ke_in(), before), "");
+        b.row("KE_FIN", e(o.ke_fin(), marks.after()), "");
+        b.row("KE_COM = 1/2 M_total |V_COM|^2", e(o.ke_com(), before), "");
         match (&o.normal, o.bodies()) {
             (Some(_), 2) => b.row(
                 "crunch = 1/2 mu (n.(v1 - v2))^2 / n.n",
-                e(o.crunch()),
-                format!("mu = {}", style.show(&o.reduced_mass(), a)),
+                e(o.crunch(), before),
+                format!(
+                    "mu = {}",
+                    style.show(&o.reduced_mass(), marks.mass(0) || marks.mass(1))
+                ),
             ),
-            _ => b.row("crunch = KE_IN - KE_COM", e(o.crunch()), ""),
+            _ => b.row("crunch = KE_IN - KE_COM", e(o.crunch(), before), ""),
         }
         let lost = o.lost();
         if lost.is_positive() {
-            b.row("lost = KE_IN - KE_FIN", e(lost), "");
+            b.row("lost = KE_IN - KE_FIN", e(lost, a), "");
         } else if lost.is_negative() {
-            b.row("released = KE_FIN - KE_IN", e(-lost), "");
+            b.row("released = KE_FIN - KE_IN", e(-lost, a), "");
         }
         b.render(&mut out);
     }
@@ -436,29 +486,29 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
 /// The time-reversed event (t -> -t: every velocity negated, IN and FIN trade places, e' = 1/e).
 pub fn reverse_text(o: &Outcome, style: &Style) -> Result<String, Overflow> {
     let r = o.reversed();
-    let a = o.approx;
+    let a = o.approx.any();
     let mut b = Block::new("Time reversed (t -> -t: V -> -V, IN and FIN trade places)");
     for (i, v) in r.v_in.iter().enumerate() {
         b.row(
             format!("v{}  = -v{}'", i + 1, i + 1),
-            vector(style, v, a),
+            vector_each(style, v, |k| r.approx.v_in(i, k)),
             "",
         );
     }
     for (i, v) in r.fin.iter().enumerate() {
         b.row(
             format!("v{}' = -v{}", i + 1, i + 1),
-            vector(style, v, a),
+            vector_each(style, v, |k| r.approx.fin(i, k)),
             "",
         );
     }
     match (&o.e, &r.e) {
         (Some(_), Some(e)) if *e > Q::ONE => b.row(
             "e'",
-            style.show(e, a),
+            style.show(e, r.approx.e()),
             "= 1/e > 1: an explosion, not a collision",
         ),
-        (Some(_), Some(e)) => b.row("e'", style.show(e, a), "= 1/e"),
+        (Some(_), Some(e)) => b.row("e'", style.show(e, r.approx.e()), "= 1/e"),
         (Some(_), None) => b.row(
             "e'",
             "undefined",
@@ -482,48 +532,59 @@ pub fn reverse_text(o: &Outcome, style: &Style) -> Result<String, Overflow> {
 /// The reversed event's JSON: `{"in", "fin", "restitution"}`.
 pub fn reverse_json(o: &Outcome, style: &Style) -> Result<Value, Overflow> {
     let r = o.reversed();
-    let a = o.approx;
-    let vecs = |vs: &[Vec<Q>]| -> Value {
-        vs.iter()
-            .map(|v| v.iter().map(|x| style.json(x, a)).collect::<Vec<_>>())
-            .collect::<Vec<_>>()
-            .into()
-    };
     let mut m = Map::new();
-    m.insert("in".into(), vecs(&r.v_in));
-    m.insert("fin".into(), vecs(&r.fin));
+    m.insert("in".into(), velocities(style, &r, false));
+    m.insert("fin".into(), velocities(style, &r, true));
     if let Some(e) = &r.e {
-        m.insert("restitution".into(), style.json(e, a));
+        m.insert("restitution".into(), style.json(e, r.approx.e()));
     }
     style.checked(Value::Object(m))
 }
 
+/// Every body's velocity before (or after, `fin`), each component marked as it is.
+pub(crate) fn velocities(style: &Style, o: &Outcome, fin: bool) -> Value {
+    let vs = if fin { &o.fin } else { &o.v_in };
+    Value::Array(
+        vs.iter()
+            .enumerate()
+            .map(|(i, v)| {
+                json_each(style, v, |k| {
+                    if fin {
+                        o.approx.fin(i, k)
+                    } else {
+                        o.approx.v_in(i, k)
+                    }
+                })
+            })
+            .collect(),
+    )
+}
+
 /// The report as a JSON object.
 pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
-    let a = o.approx;
-    let vecs = |vs: &[Vec<Q>]| -> Value {
-        Value::Array(
-            vs.iter()
-                .map(|v| Value::Array(v.iter().map(|x| style.json(x, a)).collect()))
-                .collect(),
-        )
-    };
-    let vec1 = |v: &[Q]| Value::Array(v.iter().map(|x| style.json(x, a)).collect());
+    let marks = &o.approx;
+    let a = marks.any();
+    let vec1 = |v: &[Q], a: bool| json_each(style, v, |_| a);
     let mut m = Map::new();
     m.insert("dim".into(), json!(o.dim));
+    // Exact output: values that hang on an irrational root are decimal strings (20 digits,
+    // rounded), which "8" alone would not tell from the fraction 8.
+    if style.exact && a {
+        m.insert("approx".into(), json!(true));
+    }
     m.insert(
         "masses".into(),
-        Value::Array(o.masses.iter().map(|x| style.json(x, a)).collect()),
+        json_each(style, &o.masses, |i| marks.mass(i)),
     );
     if let Some(e) = &o.e {
-        m.insert("restitution".into(), style.json(e, a));
+        m.insert("restitution".into(), style.json(e, marks.e()));
     }
     if let Some(n) = &o.normal {
-        m.insert("normal".into(), vec1(n));
+        m.insert("normal".into(), vec1(n, marks.all));
     }
     if show.vectors {
-        m.insert("in".into(), vecs(&o.v_in));
-        m.insert("fin".into(), vecs(&o.fin));
+        m.insert("in".into(), velocities(style, o, false));
+        m.insert("fin".into(), velocities(style, o, true));
         let polar_of: Vec<(f64, Option<f64>)> = o.fin.iter().map(|v| polar(v)).collect();
         m.insert(
             "fin_speed".into(),
@@ -540,9 +601,9 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
                 ),
             );
         }
-        m.insert("v_com".into(), vec1(&o.v_com()));
+        m.insert("v_com".into(), vec1(&o.v_com(), marks.before()));
         if o.bodies() == 2 {
-            m.insert("impulse".into(), vec1(&o.impulse(1)));
+            m.insert("impulse".into(), vec1(&o.impulse(1), marks.change(1)));
         }
         if let Some(parts) = o.normal_parts() {
             let a = a || !parts.exact;
@@ -558,21 +619,22 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
     if show.momentum {
         m.insert(
             "momentum".into(),
-            json!({ "total": vec1(&o.momentum(&o.v_in)) }),
+            json!({ "total": vec1(&o.momentum(&o.v_in), marks.before()) }),
         );
     }
     if show.energy {
-        let e = |q: Q| style.json(&style.energy(&q), a);
+        let e = |q: Q, a: bool| style.json(&style.energy(&q), a);
+        let before = marks.before();
         let lost = o.lost();
         let mut energy = Map::new();
-        energy.insert("in".into(), e(o.ke_in()));
-        energy.insert("fin".into(), e(o.ke_fin()));
-        energy.insert("com".into(), e(o.ke_com()));
-        energy.insert("crunch".into(), e(o.crunch()));
+        energy.insert("in".into(), e(o.ke_in(), before));
+        energy.insert("fin".into(), e(o.ke_fin(), marks.after()));
+        energy.insert("com".into(), e(o.ke_com(), before));
+        energy.insert("crunch".into(), e(o.crunch(), before));
         if lost.is_negative() {
-            energy.insert("released".into(), e(-lost));
+            energy.insert("released".into(), e(-lost, a));
         } else {
-            energy.insert("lost".into(), e(lost));
+            energy.insert("lost".into(), e(lost, a));
         }
         m.insert("energy".into(), Value::Object(energy));
     }
@@ -606,7 +668,7 @@ mod tests {
             fin: vec![v(&[2, -2]), v(&[2, 2])],
             normal: Some(v(&[1, 1])),
             e: Some(int(1)),
-            approx: false,
+            approx: crate::space::outcome::Marks::default(),
         }
     }
 

@@ -14,7 +14,19 @@ use crate::values::rational::Q;
 use crate::values::units::{EnergyUnit, EnergyUnitError, Units};
 
 use super::super::text::{header_units, wrap};
-use super::{Overflow, Show, Style, header, name, reverse_json, reverse_text, speed_angle, vector};
+use super::{
+    Overflow, Show, Style, header, json_each, name, reverse_json, reverse_text, speed_angle,
+    vector_each,
+};
+
+/// Whether component `k` of body `i`'s velocity (after when `fin`) is approximate.
+fn mark(o: &Outcome, i: usize, fin: bool, k: usize) -> bool {
+    if fin {
+        o.approx.fin(i, k)
+    } else {
+        o.approx.v_in(i, k)
+    }
+}
 
 /// The `Solved:` lines for the unknowns of one solution.
 pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
@@ -28,11 +40,11 @@ pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
             Unknown::Mass(i) => parts.push(format!(
                 "m{} = {}",
                 i + 1,
-                style.show(&o.masses[i], o.approx)
+                style.show(&o.masses[i], o.approx.mass(i))
             )),
             Unknown::Restitution => {
                 if let Some(e) = &o.e {
-                    parts.push(format!("e = {}", style.show(e, o.approx)));
+                    parts.push(format!("e = {}", style.show(e, o.approx.e())));
                 }
             }
             Unknown::Component(i, fin, _)
@@ -52,7 +64,7 @@ pub fn solved_text(o: &Outcome, unknowns: &[Unknown], style: &Style) -> String {
                 parts.push(format!(
                     "{} = {}{polar}",
                     name(i, fin),
-                    vector(style, v, o.approx)
+                    vector_each(style, v, |k| mark(o, i, fin, k))
                 ));
             }
         }
@@ -190,7 +202,7 @@ impl Verdict {
 pub enum Judged {
     /// A collision asked outright whose bodies do not approach along the line of impact: they do
     /// not collide (no FIN). `along` is `n.(v1 - v2) <= 0`.
-    Receding { o: Outcome, along: Q },
+    Receding { o: Box<Outcome>, along: Q },
     /// The solutions kept (the physical ones, or all, when none is), with their checks and
     /// verdicts; `inconsistent` when given values contradict a law checked (exit 1).
     Solutions {
@@ -266,7 +278,9 @@ pub fn judge(
         && let [(o, _, Verdict::Unphysical)] = kept.as_slice()
         && let Some(e) = o.e.as_ref().filter(|e| e.is_negative())
     {
-        return Err(RenderError::NegativeRestitution(style.show(e, o.approx)));
+        return Err(RenderError::NegativeRestitution(
+            style.show(e, o.approx.e()),
+        ));
     }
     if let [(o, _, Verdict::Unphysical)] = kept.as_slice()
         && asked.is_empty()
@@ -274,7 +288,7 @@ pub fn judge(
     {
         let along = dot(n, &sub(&o.v_in[0], &o.v_in[1]));
         return Ok(Judged::Receding {
-            o: o.clone(),
+            o: Box::new(o.clone()),
             along,
         });
     }
@@ -292,7 +306,7 @@ fn negative_speed(o: &Outcome, st: &Statement, style: &Style) -> String {
             if dot(vel, unit) < Q::ZERO {
                 let polar = speed_angle(style, vel);
                 let at = if polar.is_empty() {
-                    vector(style, vel, o.approx)
+                    vector_each(style, vel, |k| mark(o, body, fin, k))
                 } else {
                     polar
                 };
@@ -302,6 +316,10 @@ fn negative_speed(o: &Outcome, st: &Statement, style: &Style) -> String {
     }
     String::new()
 }
+
+/// A solution as an observer sees it: the event boosted, its checks, its verdict, and the
+/// observer's velocity with whether it is approximate.
+type Seen = (Outcome, Vec<Check>, Verdict, Vec<Q>, bool);
 
 /// The solutions of a posed problem, judged in the lab ([`judge`]) and printed as `opts.frame`
 /// sees them: the physical ones (or all, when none is), what was solved, the checks; a
@@ -317,16 +335,19 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     let (kept, inconsistent) = match judge(posed, solved, opts.fin_given, opts.exact)? {
         Judged::Receding { o, along } => {
             // No collision: the observer of a "finally at rest" frame moves with FIN = IN.
-            let w = o.as_happens().observer(opts.frame, posed.typed_values)?;
-            return receding(&o.boost(&w), &along, &style, &units, opts.frame, &w);
+            let happens = o.as_happens();
+            let w = happens.observer(opts.frame, posed.typed_values)?;
+            let approx = happens.observer_approx(opts.frame);
+            return receding(&o.boost(&w, approx), &along, &style, &units, opts.frame, &w);
         }
         Judged::Solutions { kept, inconsistent } => (kept, inconsistent),
     };
     // Each solution as the observer sees it, with the observer's velocity.
-    let mut keep: Vec<(Outcome, Vec<Check>, Verdict, Vec<Q>)> = Vec::new();
+    let mut keep: Vec<Seen> = Vec::new();
     for (o, c, v) in kept {
         let w = o.observer(opts.frame, posed.typed_values)?;
-        keep.push((o.boost(&w), c, v, w));
+        let approx = o.observer_approx(opts.frame);
+        keep.push((o.boost(&w, approx), c, v, w, approx));
     }
     let frame_line = (*opts.frame != Frame::Lab).then(|| {
         format!(
@@ -337,7 +358,7 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
     let many = keep.len() > 1;
     let mut text = String::new();
     let mut list = Vec::new();
-    for (k, (o, checks, v, w)) in keep.iter().enumerate() {
+    for (k, (o, checks, v, w, w_approx)) in keep.iter().enumerate() {
         if many {
             let _ = writeln!(
                 text,
@@ -376,7 +397,7 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
         };
         let m = j.as_object_mut().expect("a report is an object");
         if *opts.frame != Frame::Lab {
-            let w: Vec<Value> = w.iter().map(|x| style.json(x, o.approx)).collect();
+            let w: Vec<Value> = w.iter().map(|x| style.json(x, *w_approx)).collect();
             m.insert(
                 "frame".into(),
                 json!({ "name": opts.frame.to_string(), "w": w }),
@@ -471,27 +492,24 @@ pub fn receding(
         &format!(
             "Note: the bodies do not approach along the line of impact: n.(v1 - v2) = {} <= 0, \
              so they do not collide (no FIN).",
-            style.show(along, o.approx)
+            style.show(along, o.approx.body_in(0) || o.approx.body_in(1))
         ),
         crate::values::terminal::width(),
         "  ",
     ));
-    let a = o.approx;
-    let vecs: Vec<Value> = o
-        .v_in
-        .iter()
-        .map(|v| v.iter().map(|x| style.json(x, a)).collect())
-        .collect();
+    let a = o.approx.all;
     let mut json = json!({
         "dim": o.dim,
-        "masses": o.masses.iter().map(|m| style.json(m, a)).collect::<Vec<_>>(),
+        "masses": json_each(style, &o.masses, |i| o.approx.mass(i)),
         "normal": o.normal.as_ref().map(|n| n.iter().map(|x| style.json(x, a)).collect::<Vec<_>>()),
-        "in": vecs,
+        "in": super::velocities(style, o, false),
         "approaching": false,
     });
     if *frame != Frame::Lab
         && let Some(m) = json.as_object_mut()
     {
+        // The observer of a receding pair moves with a typed or a body's typed velocity.
+        let a = o.approx.any();
         let w: Vec<Value> = w.iter().map(|x| style.json(x, a)).collect();
         m.insert("frame".into(), json!({ "name": frame.to_string(), "w": w }));
     }
@@ -508,19 +526,19 @@ pub fn solved_json(o: &Outcome, unknowns: &[Unknown], style: &Style) -> Value {
     let mut m = Map::new();
     for u in unknowns {
         let (key, value) = match *u {
-            Unknown::Mass(i) => (format!("m{}", i + 1), style.json(&o.masses[i], o.approx)),
+            Unknown::Mass(i) => (
+                format!("m{}", i + 1),
+                style.json(&o.masses[i], o.approx.mass(i)),
+            ),
             Unknown::Restitution => match &o.e {
-                Some(e) => ("e".to_string(), style.json(e, o.approx)),
+                Some(e) => ("e".to_string(), style.json(e, o.approx.e())),
                 None => continue,
             },
             Unknown::Component(i, fin, _)
             | Unknown::Speed(i, fin)
             | Unknown::Direction(i, fin, _) => {
                 let v = if fin { &o.fin[i] } else { &o.v_in[i] };
-                (
-                    name(i, fin),
-                    Value::Array(v.iter().map(|x| style.json(x, o.approx)).collect()),
-                )
+                (name(i, fin), json_each(style, v, |k| mark(o, i, fin, k)))
             }
         };
         m.insert(key, value);
