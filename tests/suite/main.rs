@@ -43,5 +43,6 @@ mod units;
 mod view;
 mod view_hostile;
 mod view_node;
+mod view_open;
 mod view_plane;
 mod width;
