@@ -355,9 +355,15 @@ pub struct ViewArgs {
     #[arg(long)]
     pub reverse: bool,
 
-    /// Write the page to FILE (atomically) [default: stdout]
+    /// Write the page to FILE (atomically), or to stdout with -o - [default: stdout to a pipe;
+    /// on a terminal, collide-view.html in this folder]
     #[arg(short, long, value_name = "FILE.html", global = true)]
     pub output: Option<PathBuf>,
+
+    /// Open the page in the default browser (xdg-open, open or start; the environment variable
+    /// COLLIDE_OPENER names another program): the file of -o, else collide-view.html here
+    #[arg(long, global = true)]
+    pub open: bool,
 }
 
 #[derive(Subcommand, Debug)]

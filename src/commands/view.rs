@@ -1,8 +1,11 @@
 //! `collide view`: the lecture's simulators as one self-contained web page.
 
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
 use anyhow::{Result, bail};
 use collide::scene::{AnyScene, Scene};
-use collide::values::output::write_file;
+use collide::values::output::{diagnostic, write_file};
 use collide::view::input::TrackInput;
 use collide::view::page::{self, Focus, Setup};
 
@@ -111,15 +114,120 @@ fn bodies(text: &str) -> Result<[String; 2]> {
     }
 }
 
-/// The page, written to `-o FILE` or stdout.
+/// The page, written to `-o FILE`, to stdout (`-o -`, or a pipe), or, on a terminal or with
+/// `--open`, to [`DEFAULT_FILE`] in the current folder (saying so on stderr); `--open` then opens
+/// the file in the default browser.
 fn write(setup: &Setup, args: &ViewArgs) -> Result<Outcome> {
     let html = page::html(setup).map_err(|e| anyhow::anyhow!("{}", e.error))?;
-    match &args.output {
-        Some(path) => {
-            write_file(path, html.as_bytes())?;
-            Ok(Outcome::print(String::new()))
+    let path = match args.output.as_deref() {
+        Some(p) if p == Path::new("-") => {
+            if args.open {
+                bail!("--open opens a file: give -o FILE.html (or no -o), not -o -");
+            }
+            return Ok(Outcome::print(html));
         }
-        None => Ok(Outcome::print(html)),
+        Some(p) => p.to_path_buf(),
+        None if args.open || std::io::stdout().is_terminal() => {
+            let (path, note) = default_file()?;
+            write_file(&path, html.as_bytes())?;
+            diagnostic(format_args!(
+                "collide view: wrote the page to {} ({} KB){note}{}\n",
+                path.display(),
+                html.len().div_ceil(1000),
+                if args.open {
+                    ""
+                } else {
+                    "; open it in a browser, or run collide view --open"
+                }
+            ));
+            return finish(&path, args.open);
+        }
+        None => return Ok(Outcome::print(html)),
+    };
+    write_file(&path, html.as_bytes())?;
+    finish(&path, args.open)
+}
+
+/// Where a page goes without `-o` on a terminal: this name in the current folder.
+const DEFAULT_FILE: &str = "collide-view.html";
+
+/// The file for a page without `-o`: [`DEFAULT_FILE`] when it is free or a page `collide view`
+/// wrote (replaced, and said), else the first free or own `collide-view-N.html` (N from 2),
+/// with a note on stderr that the file of that name was left alone: a file that is not ours is
+/// never overwritten.
+fn default_file() -> Result<(PathBuf, String)> {
+    let ours = |p: &Path| -> Option<bool> {
+        let mut head = [0u8; 2048];
+        let n = std::io::Read::read(&mut std::fs::File::open(p).ok()?, &mut head).ok()?;
+        Some(
+            String::from_utf8_lossy(&head[..n])
+                .contains("<meta name=\"generator\" content=\"collide view\">"),
+        )
+    };
+    for n in 1..=99 {
+        let path = PathBuf::from(if n == 1 {
+            DEFAULT_FILE.to_string()
+        } else {
+            format!("collide-view-{n}.html")
+        });
+        let note = if n == 1 {
+            String::new()
+        } else {
+            format!(" ({DEFAULT_FILE} is not a page of collide view's: left alone)")
+        };
+        match (path.symlink_metadata().is_ok(), ours(&path)) {
+            (false, _) => return Ok((path, note)),
+            (true, Some(true)) => return Ok((path, format!("{note}, replacing its last page"))),
+            _ => {}
+        }
+    }
+    bail!(
+        "{DEFAULT_FILE} and collide-view-2.html to -99.html in this folder are not pages of \
+         collide view's: give the file with -o FILE.html"
+    )
+}
+
+/// After writing `path`: opened in the default browser with `--open`.
+fn finish(path: &Path, open: bool) -> Result<Outcome> {
+    if open {
+        open_in_browser(path)?;
+    }
+    Ok(Outcome::print(String::new()))
+}
+
+/// Opens `path` with the program in `COLLIDE_OPENER`, else the system's own opener (xdg-open on
+/// Linux and the BSDs, open on macOS, start on Windows); a failure names the program.
+fn open_in_browser(path: &Path) -> Result<()> {
+    let file = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    let (program, mut command) = match std::env::var_os("COLLIDE_OPENER") {
+        Some(p) if !p.is_empty() => (
+            p.to_string_lossy().into_owned(),
+            std::process::Command::new(p),
+        ),
+        _ if cfg!(target_os = "macos") => ("open".into(), std::process::Command::new("open")),
+        _ if cfg!(windows) => {
+            let mut c = std::process::Command::new("cmd");
+            c.args(["/C", "start", ""]);
+            ("start".into(), c)
+        }
+        _ => ("xdg-open".into(), std::process::Command::new("xdg-open")),
+    };
+    let status = command
+        .arg(&file)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .status();
+    match status {
+        Ok(s) if s.success() => Ok(()),
+        Ok(s) => bail!(
+            "wrote {}, but {program} could not open it ({s}): open it in a browser",
+            path.display()
+        ),
+        Err(e) => bail!(
+            "wrote {}, but cannot run {program} to open it ({e}): open it in a browser, or \
+             name an opener in COLLIDE_OPENER",
+            path.display()
+        ),
     }
 }
 

@@ -42,6 +42,8 @@ mod track;
 mod units;
 mod view;
 mod view_hostile;
+mod view_layout;
 mod view_node;
+mod view_open;
 mod view_plane;
 mod width;

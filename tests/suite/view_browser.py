@@ -212,6 +212,18 @@ def run_steps(page, steps, errors):
     return out
 
 
+def wait_ready(page):
+    """Until the page's core is ready. Polled with page.evaluate: Playwright's wait_for_function
+    evaluates its predicate with eval() when it has to poll, which the page's
+    Content-Security-Policy (no 'unsafe-eval') refuses, so it failed whenever the page was not
+    ready at the first look."""
+    deadline = time.time() + 30
+    while not page.evaluate("() => !!(window.collideView && window.collideView.ready)"):
+        if time.time() > deadline:
+            raise TimeoutError("the page did not become ready in 30 s")
+        time.sleep(0.02)
+
+
 def main():
     page_path, plan_path = sys.argv[1], sys.argv[2]
     plan = json.load(open(plan_path))
@@ -227,14 +239,7 @@ def main():
         page.on("console", lambda m: out["console"].append([m.type, m.text]))
         page.on("pageerror", lambda e: out["errors"].append(str(e)))
         page.goto("file://" + os.path.abspath(page_path))
-        # Polled with page.evaluate: Playwright's wait_for_function evaluates its predicate with
-        # eval() when it has to poll, which the page's Content-Security-Policy (no
-        # 'unsafe-eval') refuses, so it failed whenever the page was not ready at the first look.
-        deadline = time.time() + 30
-        while not page.evaluate("() => !!(window.collideView && window.collideView.ready)"):
-            if time.time() > deadline:
-                raise TimeoutError("the page did not become ready in 30 s")
-            time.sleep(0.02)
+        wait_ready(page)
         out["ready_s"] = time.time() - started
         text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
 

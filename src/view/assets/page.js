@@ -12,7 +12,8 @@
   // What tests and curious users can read: whether the core is running, how long each recompute
   // + redraw of a drag took (IN on the velocity plane; an arrow in the plane), and the last run +
   // redraw of the stack (milliseconds).
-  const view = { ready: false, timings: [], planeTimings: [], lastUpdateMs: NaN, stackMs: NaN };
+  const view = { ready: false, timings: [], planeTimings: [], lastUpdateMs: NaN, stackMs: NaN,
+    time: () => ({ dual: dual.t, stack: stack.t }) };
   window.collideView = view;
 
   // ---------------------------------------------------------------- the core (WebAssembly)
@@ -72,21 +73,24 @@
   const num = (x) => fmt(x, 7);
 
   // About `n` round ticks from lo to hi.
+  // Spans are taken by halves (hi/2 - lo/2): a box from -1e308 to 1e308 is 2e308 wide, which
+  // binary64 cannot hold (the valid case M 1, 1e-308; V 0, 1e308 draws such a box).
   function ticks(lo, hi, n) {
-    const span = hi - lo;
-    if (!(span > 0) || !isFinite(span)) return [];
-    const raw = span / n;
+    const half = hi / 2 - lo / 2;
+    if (!(half > 0) || !isFinite(half)) return [];
+    const raw = (half / n) * 2;
     const p = Math.pow(10, Math.floor(Math.log10(raw)));
     const step = [1, 2, 5, 10].map((k) => k * p).find((s) => s >= raw) || 10 * p;
     const out = [];
-    for (let k = Math.ceil(lo / step); k * step <= hi + 1e-9 * span; k++) out.push(k * step === 0 ? 0 : k * step);
-    return out.length > 40 ? [] : out;
+    const end = hi + 1e-9 * raw * n;
+    for (let k = Math.ceil(lo / step); k * step <= end && out.length <= 40; k++) out.push(k * step === 0 ? 0 : k * step);
+    return out.length > 40 || !out.every(isFinite) ? [] : out;
   }
 
   // The part of the line k1 x + k2 y = c inside the box [x0, x1] x [y0, y1].
   function clipLine(k1, k2, c, box) {
     const hits = [];
-    const within = (v, lo, hi) => v >= lo - 1e-9 * (hi - lo) && v <= hi + 1e-9 * (hi - lo);
+    const within = (v, lo, hi) => isFinite(v) && v >= lo - 2e-9 * (hi / 2 - lo / 2) && v <= hi + 2e-9 * (hi / 2 - lo / 2);
     if (k2 !== 0) {
       for (const x of [box.x0, box.x1]) {
         const y = (c - k1 * x) / k2;
@@ -103,22 +107,44 @@
     return hits.length >= 2 ? [hits[0], hits[hits.length - 1]] : null;
   }
 
+  // Chart text at one readable size on every screen: a chart's `--k` is its viewBox units per
+  // screen pixel, and page.css sizes its text in those units (11 px ticks), so that a phone,
+  // which draws the 560-unit velocity plane 340 px wide, shows the same 11 px text as a desktop.
+  // Returns whether a drawn chart's scale changed (its labels, placed by measure, are redrawn).
+  const textScale = new Map();
+  const shownWidth = new Map(); // each chart's width on screen when last measured (px)
+  function scaleText(svg) {
+    const w = svg.getBoundingClientRect().width;
+    if (!(w > 0)) return false;
+    shownWidth.set(svg, w);
+    const k = Math.min(4, Math.max(0.5, svg.viewBox.baseVal.width / w));
+    const old = textScale.get(svg);
+    if (old !== undefined && Math.abs(old - k) < 0.02 * old) return false;
+    textScale.set(svg, k);
+    svg.style.setProperty("--k", k.toFixed(5));
+    return old !== undefined;
+  }
+  const kOf = (svg) => textScale.get(svg.ownerSVGElement || svg) || 1;
+
   // A 2-D plot area: data box to screen, with grid and tick labels.
   function frameAxes(svg, area, box, labels) {
-    const sx = area.w / (box.x1 - box.x0);
-    const sy = area.h / (box.y1 - box.y0);
-    const X = (x) => area.x + (x - box.x0) * sx;
-    const Y = (y) => area.y + (box.y1 - y) * sy;
+    // By halves, as in `ticks`: no difference of two huge numbers overflows.
+    const sx = area.w / 2 / (box.x1 / 2 - box.x0 / 2);
+    const sy = area.h / 2 / (box.y1 / 2 - box.y0 / 2);
+    const X = (x) => area.x + (x / 2 - box.x0 / 2) * (2 * sx);
+    const Y = (y) => area.y + (box.y1 / 2 - y / 2) * (2 * sy);
     el(svg, "rect", { x: area.x, y: area.y, width: area.w, height: area.h, fill: "#fff", stroke: "#d1d5db" });
     const grid = el(svg, "g", { stroke: "#eef0f3", "stroke-width": 1 });
     const tickText = el(svg, "g", { class: "tick" });
-    for (const t of ticks(box.x0, box.x1, area.w > 300 ? 6 : 4)) {
+    // Fewer ticks where the text is large against the picture (a phone).
+    const k = kOf(svg);
+    for (const t of ticks(box.x0, box.x1, area.w / k > 300 ? 6 : 4)) {
       el(grid, "line", { x1: r2(X(t)), x2: r2(X(t)), y1: area.y, y2: area.y + area.h });
-      el(tickText, "text", { x: r2(X(t)), y: area.y + area.h + 14, "text-anchor": "middle" }, short(t));
+      el(tickText, "text", { x: r2(X(t)), y: r2(area.y + area.h + 3 + 11 * k), "text-anchor": "middle" }, short(t));
     }
-    for (const t of ticks(box.y0, box.y1, area.h > 300 ? 6 : 4)) {
+    for (const t of ticks(box.y0, box.y1, area.h / k > 300 ? 6 : 4)) {
       el(grid, "line", { x1: area.x, x2: area.x + area.w, y1: r2(Y(t)), y2: r2(Y(t)) });
-      el(tickText, "text", { x: area.x - 5, y: r2(Y(t)) + 4, "text-anchor": "end" }, short(t));
+      el(tickText, "text", { x: area.x - 5, y: r2(Y(t) + 4 * k), "text-anchor": "end" }, short(t));
     }
     const axes = el(svg, "g", { stroke: "#6b7280", "stroke-width": 1.2 });
     if (box.y0 <= 0 && box.y1 >= 0) el(axes, "line", { x1: area.x, x2: area.x + area.w, y1: r2(Y(0)), y2: r2(Y(0)) });
@@ -208,12 +234,13 @@
       }
       if (more) more(p, add);
     }
-    let span = Math.max(x1 - x0, y1 - y0);
-    span = span > 0 && isFinite(span) ? span * 1.12 : 2;
-    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    // Half the side, by halves (a side of 2e308 overflows binary64), at most the largest double.
+    let half = Math.max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2) * 1.12;
+    half = half > 0 ? Math.min(half, Number.MAX_VALUE) : 1;
+    const cx = x0 / 2 + x1 / 2, cy = y0 / 2 + y1 / 2;
     const P = { left: 62, top: 34, side: 470 };
-    const s = P.side / span;
-    const box = { x0: cx - span / 2, x1: cx + span / 2, y0: cy - span / 2, y1: cy + span / 2 };
+    const s = P.side / 2 / half;
+    const box = { x0: cx - half, x1: cx + half, y0: cy - half, y1: cy + half };
     return { box, s, ox: P.left - s * box.x0, oy: P.top + s * box.y1, area: { x: P.left, y: P.top, w: P.side, h: P.side } };
   }
 
@@ -313,8 +340,17 @@
     svg.appendChild(labels);
   }
 
+  // A finger on a handle (`.handle`) of `svg` drags it, and the page does not scroll: its
+  // `touch-action: none` is not honoured on an SVG shape by every browser (Chromium's is not),
+  // so the touch is also taken here. Elsewhere on the picture a finger scrolls the page.
+  function holdHandles(svg) {
+    svg.addEventListener("touchstart", (ev) => {
+      if (ev.target.classList && ev.target.classList.contains("handle")) ev.preventDefault();
+    }, { passive: false });
+  }
+
   // A Play/Pause button: while playing, `advance(seconds)` is called once a frame with the time
-  // since the last one.
+  // since the last one. Returns `pause()`.
   function player(button, advance) {
     let playing = false, last = 0;
     const tick = (now) => {
@@ -329,12 +365,40 @@
       last = now;
       requestAnimationFrame(tick);
     };
+    const show = () => {
+      button.textContent = playing ? "Pause" : "Play";
+      button.setAttribute("aria-pressed", String(playing));
+    };
     button.addEventListener("click", () => {
       playing = !playing;
       last = 0;
-      button.textContent = playing ? "Pause" : "Play";
-      button.setAttribute("aria-pressed", String(playing));
+      show();
       if (playing) requestAnimationFrame(tick);
+    });
+    return { pause: () => { playing = false; show(); } };
+  }
+
+  // PhET's controls for an animation (the buttons `<prefix>-play`, `-back`, `-step`, `-reset`
+  // and the select `-speed`) whose time `o.get()` runs from `o.start` to `o.end()`; `o.set(t)`
+  // sets and draws it. Play runs `o.rate` time units a second times the speed, round and round;
+  // a step moves the time by `o.step()` back or forward, paused, within the ends; Reset pauses at
+  // the start at 1x: the state as typed, before anything moved.
+  function animation(prefix, o) {
+    const speed = $(prefix + "-speed");
+    const play = player($(prefix + "-play"), (dt) => {
+      const t = o.get() + dt * o.rate * Number(speed.value);
+      o.set(t > o.end() ? o.start : t);
+    });
+    const stepBy = (k) => {
+      play.pause();
+      o.set(Math.min(o.end(), Math.max(o.start, o.get() + k * o.step())));
+    };
+    $(prefix + "-step").addEventListener("click", () => stepBy(1));
+    $(prefix + "-back").addEventListener("click", () => stepBy(-1));
+    $(prefix + "-reset").addEventListener("click", () => {
+      play.pause();
+      speed.value = "1";
+      o.set(o.start);
     });
   }
 

@@ -234,6 +234,9 @@
       const [x, y] = tip(i, p.in[i]);
       if (i === pucks.selected) el(svg, "circle", { class: "tip-ring", cx: r2(x), cy: r2(y), r: 12, fill: "none", stroke: "#111827", "stroke-width": 1.5, "stroke-dasharray": "3 3" });
       el(svg, "circle", { id: "tip-" + (i + 1), class: "tip", cx: r2(x), cy: r2(y), r: 7, fill: planeColours[i], stroke: "#fff", "stroke-width": 2 });
+      // Where a finger grabs the tip (22 px around it, `touch-action: none`); elsewhere a
+      // finger scrolls the page.
+      el(svg, "circle", { class: "handle", "data-body": i, cx: r2(x), cy: r2(y), r: r2(22 * kOf(svg)), fill: "transparent" });
     }
   }
 
@@ -454,8 +457,11 @@
         moveTip(pucks.dragging, tipVelocity(pucks.dragging, q));
       }
     };
+    holdHandles(svg);
     svg.addEventListener("pointerdown", (ev) => {
       if (!core || ev.button !== 0) return;
+      // A finger drags only from a tip's handle (it scrolls the page elsewhere).
+      if (ev.pointerType === "touch" && !ev.target.classList.contains("handle")) return;
       const q = pucksPoint(ev);
       const p = planeAnswer.picture, m = pucks.map;
       // The nearer tip of the two IN arrows, within reach.

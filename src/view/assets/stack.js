@@ -25,7 +25,7 @@
     // After a bad input the tower, the world lines and the numbers are the last valid run's:
     // greyed and labelled, and Play disabled (it would animate that run as if it were this).
     markStale(["tower-svg", "lines-svg", "stack-numbers"], !answer.ok);
-    $("stack-play").disabled = !answer.ok;
+    for (const b of ["play", "back", "step", "reset"]) $("stack-" + b).disabled = !answer.ok;
     if (!answer.ok) {
       const f = trackFields.find((x) => x[0] === answer.field);
       $(f ? f[1] : "t-masses").setAttribute("aria-invalid", "true");
@@ -148,10 +148,19 @@
     const para = (html, cls) => { const p = document.createElement("p"); p.innerHTML = html; if (cls) p.className = cls; box.appendChild(p); };
     const amp = a.amplification;
     if (amp && a.masses.length > 1) {
-      para("Velocity amplification: the top ball leaves at <span class=\"num\">" + num(amp.ratio) + "</span> &times; the bottom ball's impact speed", "big");
-      para("(it leaves at " + num(amp.top_velocity) + "; the bottom ball hit the floor at " + num(amp.drop_speed) +
-        "). For elastic balls, each much lighter than the one below, the limit is 2<sup>" + a.masses.length + "</sup> &minus; 1 = " + amp.limit + ".");
-      if (a.gravity > 0) para("so it rises <span class=\"num\">" + num(amp.ratio * amp.ratio) + "</span> &times; as high above the collision as the stack fell");
+      // Harter's limit 2^n - 1 is for balls each lighter than the one below; a heavy ball on
+      // top is not amplified, and the top ball may leave downward (then it does not rise).
+      const start = (i) => (a.x[i] && a.x[i].length ? a.x[i][0] : trackState.x[i]);
+      const up = a.masses.map((m, i) => i).sort((i, j) => start(i) - start(j));
+      const lighterUp = up.every((i, k) => k === 0 || a.masses[i] < a.masses[up[k - 1]]);
+      const rises = amp.top_velocity > 0;
+      para(rises ? "Velocity amplification: the top ball leaves at <span class=\"num\">" + num(amp.ratio) + "</span> &times; the bottom ball's impact speed"
+        : "No amplification: the top ball leaves the collision downward, at <span class=\"num\">" + num(amp.ratio) + "</span> &times; the bottom ball's impact speed", "big");
+      const limit = "the limit is 2<sup>" + a.masses.length + "</sup> &minus; 1 = " + amp.limit;
+      para("(it leaves at " + num(amp.top_velocity) + "; the bottom ball hit the floor at " + num(amp.drop_speed) + "). " +
+        (lighterUp ? "For elastic balls, each much lighter than the one below, " + limit + "."
+          : "A heavier ball is above a lighter one here; " + limit + " only for elastic balls each much lighter than the one below."));
+      if (a.gravity > 0 && rises) para("so it rises <span class=\"num\">" + num(amp.ratio * amp.ratio) + "</span> &times; as high above the collision as the stack fell");
     } else if (amp) {
       para("The ball rebounds at <span class=\"num\">" + num(amp.ratio) + "</span> &times; its impact speed", "big");
     }
@@ -187,12 +196,9 @@
       stack.t = 0;
       runStack();
     });
-    // In real time (the track's time unit a second).
-    player($("stack-play"), (dt) => {
-      stack.t += dt;
-      if (stack.t > stackAnswer.until) stack.t = 0;
-      drawStackTime();
-    });
+    // In real time at 1x (the track's time unit a second); 100 steps to the end.
+    animation("stack", { start: 0, end: () => stackAnswer.until, rate: 1, step: () => stackAnswer.until / 100,
+      get: () => stack.t, set: (t) => { stack.t = t; drawStackTime(); } });
     $("stack-time").addEventListener("input", () => { stack.t = Number($("stack-time").value); drawStackTime(); });
   }
   function syncTrackSlider() {

@@ -16,10 +16,21 @@
   setupPlane();
   setupStack();
   setupCopy();
+  for (const svg of document.querySelectorAll("svg.chart")) scaleText(svg);
   renderCase();
   renderPlane();
   renderStack();
   setEnabled(false);
+  // A picture drawn at another width (a phone turned, a window resized): its text keeps its
+  // size, and the pictures are drawn again around it.
+  if (typeof ResizeObserver === "function") {
+    const seen = new ResizeObserver((entries) => {
+      let changed = false;
+      for (const e of entries) changed = scaleText(e.target) || changed;
+      if (changed) { renderCase(); renderPlane(); renderStack(); }
+    });
+    for (const svg of document.querySelectorAll("svg.chart")) seen.observe(svg);
+  }
   if ((data.setup.focus === "stack" || data.setup.focus === "plane") && !location.hash) $(data.setup.focus).scrollIntoView();
 
   loadCore().then((ask) => {

@@ -105,6 +105,9 @@
         point(p.reverse.fin, "var(--rev)", "FIN\u2032", "point-rev-fin", 0.1);
       }
     } });
+    // Where a finger grabs IN (22 px around it, `touch-action: none`); elsewhere a finger
+    // scrolls the page, and only a mouse or pen moves IN to where it presses.
+    el(svg, "circle", { id: "in-handle", class: "handle", cx: r2(map.ox + map.s * p.in[0]), cy: r2(map.oy - map.s * p.in[1]), r: r2(22 * kOf(svg)), fill: "transparent" });
   }
 
   function drawNumbers(p) {
@@ -229,8 +232,11 @@
     const map = plane.map;
     const step = snapStep(map);
     const v = labIn(x, y);
-    $("v1").value = snapText(v[0], step);
-    $("v2").value = snapText(v[1], step);
+    // In the unit typed (`72 km/h` stays km/h: the core's velocities are in it).
+    const unit = splitUnit($("v1").value)[1] || splitUnit($("v2").value)[1];
+    const typed = (x) => snapText(x, step) + (unit ? " " + unit : "");
+    $("v1").value = typed(v[0]);
+    $("v2").value = typed(v[1]);
     const answer = solveCase(true);
     const ms = performance.now() - t0;
     view.lastUpdateMs = ms;
@@ -254,8 +260,10 @@
       queued = false;
       if (pending && plane.dragging) { const [x, y] = planePoint(pending); pending = null; moveIn(x, y); }
     };
+    holdHandles(svg);
     svg.addEventListener("pointerdown", (ev) => {
       if (!core || ev.button !== 0) return;
+      if (ev.pointerType === "touch" && ev.target.id !== "in-handle") return;
       cancelAnimationFrame(plane.animation);
       plane.dragging = true;
       plane.dragW = caseAnswer.picture.w;
@@ -263,7 +271,10 @@
       svg.classList.add("dragging");
       svg.focus({ preventScroll: true });
       pending = ev;
-      flush();
+      // A mouse moves IN to where it presses at once. A finger moves it from its first move:
+      // the redraw would take its handle away before the browser sends the touch's start
+      // (after this event), which then could not hold the page still.
+      if (ev.pointerType !== "touch") flush();
       ev.preventDefault();
     });
     svg.addEventListener("pointermove", (ev) => {
@@ -348,9 +359,12 @@
     const x = (i, t) => (t < 0 ? v[i] * t : f[i] * t);
     const colours = ["var(--body1)", "var(--body2)"];
     const area = { x: 46, y: 16, w: 262, h: 244 };
+    const axesOf = {};
     // Newton: t across, x up. Minkowski: x across, t up.
     for (const [id, newton] of [["newton-svg", true], ["minkowski-svg", false]]) {
       const svg = $(id);
+      // The diagram not chosen is drawn when it is (a drag draws only what is seen).
+      if (svg.closest("[hidden]")) { clear(svg); continue; }
       clear(svg);
       const box = newton ? { x0: tBox[0], x1: tBox[1], y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: tBox[0], y1: tBox[1] };
       const a = frameAxes(svg, area, box, newton ? ["t", "x"] : ["x", "t"]);
@@ -360,6 +374,7 @@
       }
       const g = el(svg, "g", { class: "cursor" });
       g.dataset.newton = newton ? "1" : "0";
+      axesOf[id] = a;
     }
     // Space vs Space: x2 against x1, or scaled by M^(1/2).
     const svg = $("space-svg");
@@ -383,7 +398,7 @@
     const note = !scaled ? "on the dashed line x\u2081 = x\u2082 the bodies meet"
       : p.e === 1 ? "e = 1: the path reflects in the dashed line" : "only e = 1 reflects the path in the line";
     el(svg, "text", { x: sq.x + 6, y: sq.y + sq.h - 8, class: "tick", "paint-order": "stroke", stroke: "#fff", "stroke-width": 3 }, note);
-    dual.map = { reach, x, map2, space: a };
+    dual.map = { reach, x, map2, space: a, axes: axesOf, area };
     drawDualTime();
   }
 
@@ -391,17 +406,15 @@
     const p = dual.picture;
     if (!p) return;
     const t = dual.t;
-    const { reach, x, map2, space } = dual.map;
+    const { reach, x, map2, space, axes, area } = dual.map;
     const colours = ["var(--body1)", "var(--body2)"];
-    const area = { x: 46, y: 16, w: 262, h: 244 };
     for (const id of ["newton-svg", "minkowski-svg"]) {
       const svg = $(id);
       const g = svg.querySelector(".cursor");
+      if (!g) continue;
       const newton = g.dataset.newton === "1";
       clear(g);
-      const bx = newton ? { x0: -1.1, x1: 1.1, y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: -1.1, y1: 1.1 };
-      const X = (u) => area.x + (u - bx.x0) * area.w / (bx.x1 - bx.x0);
-      const Y = (u) => area.y + (bx.y1 - u) * area.h / (bx.y1 - bx.y0);
+      const { X, Y } = axes[id];
       if (newton) el(g, "line", { x1: r2(X(t)), x2: r2(X(t)), y1: area.y, y2: area.y + area.h, stroke: "#111827", "stroke-opacity": 0.35 });
       else el(g, "line", { x1: area.x, x2: area.x + area.w, y1: r2(Y(t)), y2: r2(Y(t)), stroke: "#111827", "stroke-opacity": 0.35 });
       for (let i = 0; i < 2; i++) {
@@ -423,42 +436,60 @@
   function drawRail(p, t, reach, x) {
     const svg = $("rail-svg");
     clear(svg);
-    const L = 30, R = 930, car = 84;
-    const X = (u) => L + car + (u + reach) * (R - L - 2 * car) / (2 * reach);
-    el(svg, "line", { x1: L, x2: R, y1: 86, y2: 86, stroke: "#6b7280", "stroke-width": 3 });
-    for (const u of ticks(-reach, reach, 8)) {
-      el(svg, "line", { x1: r2(X(u)), x2: r2(X(u)), y1: 86, y2: 92, stroke: "#6b7280" });
-      el(svg, "text", { x: r2(X(u)), y: 105, "text-anchor": "middle", class: "tick" }, short(u));
+    // The rail is 960 units long on a wide screen and shorter on a narrow one (down to 480), so
+    // that its cars and text are not drawn tiny on a phone. (Its width as last measured:
+    // measuring here would lay out the page again at every step of a drag.) The title has a row
+    // of its own, above the cars' velocities.
+    const shown = shownWidth.get(svg) || 0;
+    const W = shown > 0 ? Math.round(Math.min(960, Math.max(480, shown * 1.4))) : svg.viewBox.baseVal.width;
+    if (W !== svg.viewBox.baseVal.width) { svg.setAttribute("viewBox", "0 0 " + W + " 132"); scaleText(svg); }
+    const L = 30, R = W - 30, car = 84, D = 22;
+    const X = (u) => L + car + (u / reach + 1) * (R - L - 2 * car) / 2;
+    el(svg, "line", { x1: L, x2: R, y1: D + 86, y2: D + 86, stroke: "#6b7280", "stroke-width": 3 });
+    for (const u of ticks(-reach, reach, (R - L) / kOf(svg) > 600 ? 8 : 4)) {
+      el(svg, "line", { x1: r2(X(u)), x2: r2(X(u)), y1: D + 86, y2: D + 92, stroke: "#6b7280" });
+      el(svg, "text", { x: r2(X(u)), y: D + 105, "text-anchor": "middle", class: "tick" }, short(u));
     }
     const m = p.inertia;
-    const bodies = [
-      { left: X(x(0, t)) - car, colour: "var(--body1)", name: "1", mass: m[0][0], v: t < 0 ? p.in[0] : p.fin[0] },
-      { left: X(x(1, t)), colour: "var(--body2)", name: "2", mass: m[1][1], v: t < 0 ? p.in[1] : p.fin[1] },
-    ];
+    // The cars meet at x = 0 at t = 0: the one on the left (body 2 when it catches body 1 from
+    // behind, `p.left`) ends at its position, the other starts there.
+    const onLeft = p.left === 2 ? 1 : 0;
+    const bodies = [0, 1].map((i) => ({
+      left: X(x(i, t)) - (i === onLeft ? car : 0), colour: "var(--body" + (i + 1) + ")", name: String(i + 1),
+      mass: m[i][i], v: t < 0 ? p.in[i] : p.fin[i],
+    }));
     for (const b of bodies) {
-      el(svg, "rect", { x: r2(b.left), y: 46, width: car, height: 36, rx: 7, fill: b.colour, "fill-opacity": 0.88 });
-      el(svg, "circle", { cx: r2(b.left + 18), cy: 84, r: 6, fill: "#1f2937" });
-      el(svg, "circle", { cx: r2(b.left + car - 18), cy: 84, r: 6, fill: "#1f2937" });
-      el(svg, "text", { x: r2(b.left + car / 2), y: 69, "text-anchor": "middle", fill: "#fff", class: "label" }, "M" + (b.name === "1" ? "\u2081" : "\u2082") + " " + short(b.mass));
+      el(svg, "rect", { x: r2(b.left), y: D + 46, width: car, height: 36, rx: 7, fill: b.colour });
+      el(svg, "circle", { cx: r2(b.left + 18), cy: D + 84, r: 6, fill: "#1f2937" });
+      el(svg, "circle", { cx: r2(b.left + car - 18), cy: D + 84, r: 6, fill: "#1f2937" });
+      el(svg, "text", { x: r2(b.left + car / 2), y: D + 69, "text-anchor": "middle", fill: "#fff", class: "label" }, "M" + (b.name === "1" ? "\u2081" : "\u2082") + " " + short(b.mass));
       const dir = b.v >= 0 ? 1 : -1;
       const cx = b.left + car / 2;
       if (b.v !== 0) {
-        el(svg, "line", { x1: r2(cx - dir * 18), x2: r2(cx + dir * 18), y1: 30, y2: 30, stroke: b.colour, "stroke-width": 2.2 });
-        el(svg, "polygon", { points: pts([[cx + dir * 24, 30], [cx + dir * 16, 25], [cx + dir * 16, 35]]), fill: b.colour });
+        el(svg, "line", { x1: r2(cx - dir * 18), x2: r2(cx + dir * 18), y1: D + 30, y2: D + 30, stroke: b.colour, "stroke-width": 2.2 });
+        el(svg, "polygon", { points: pts([[cx + dir * 24, D + 30], [cx + dir * 16, D + 25], [cx + dir * 16, D + 35]]), fill: b.colour });
       }
-      el(svg, "text", { x: r2(cx), y: 18, "text-anchor": "middle", class: "tick" }, "V = " + short(b.v));
+      el(svg, "text", { x: r2(cx), y: D + 18, "text-anchor": "middle", class: "tick" }, "V = " + short(b.v));
     }
-    el(svg, "text", { x: L, y: 16, class: "title" }, t < 0 ? "before: IN" : t > 0 ? "after: FIN" : "the collision");
+    el(svg, "text", { x: L, y: 18, class: "title" }, t < 0 ? "before: IN" : t > 0 ? "after: FIN" : "the collision");
   }
 
+
   function setupDual() {
-    // Two units of time (t from -1 to 1) in four seconds, round and round.
-    player($("dual-play"), (dt) => {
-      dual.t += dt / 2;
-      if (dual.t > 1) dual.t = -1;
-      drawDualTime();
-    });
+    // Two units of time (t from -1 to 1) in four seconds at 1x, round and round; 40 steps.
+    animation("dual", { start: -1, end: () => 1, rate: 0.5, step: () => 0.05, get: () => dual.t,
+      set: (t) => { dual.t = t; drawDualTime(); } });
     $("dual-time").addEventListener("input", () => { dual.t = Number($("dual-time").value); drawDualTime(); });
     $("scaled").addEventListener("change", () => drawDual(caseAnswer.picture));
+    // Newton's or Minkowski's diagram beside the velocity plane: both are drawn at every change,
+    // the choice only shows one.
+    for (const choice of document.querySelectorAll('input[name="spacetime"]')) {
+      choice.addEventListener("change", () => {
+        $("newton-figure").hidden = choice.value !== "newton";
+        $("minkowski-figure").hidden = choice.value !== "minkowski";
+        scaleText($(choice.value + "-svg"));
+        if (dual.picture) drawDual(dual.picture);
+      });
+    }
   }
 
