@@ -135,7 +135,7 @@ def frames(
     prints it; `frame=` adds rows (one frame or a list).
 
     >>> [row.name for row in frames(m=(4, 1), v=(60, 10)).frames][:2]
-    ['lab', 'com']
+    ['lab', 'rest-in:1']
     """
 
 def plot(
