@@ -61,56 +61,78 @@ fn report(py: Python<'_>, args: Vec<String>) -> PyResult<Py<Report>> {
     Report::new(py, args, printed)
 }
 
-/// One collision, as `collide solve ... --format json` solves it: on a rail, in the plane or
-/// space, N bodies, a homework problem with unknowns, or a rigid impact.
-///
-/// `m`, `v` and `e` are `-m`, `-v` and `-e`; every other flag of `collide solve` is a keyword
-/// (`fin=`, `impulse=`, `released=`, `length=`, `target=`, `pivot=`, `hit_at=`, `spin=`,
-/// `friction=`, `law=`, `join=True`, `frame=`, `exact=True`, ...; `b=` is
-/// `--impact-parameter`). Values are numbers (`int`, `float`, `fractions.Fraction`), the
-/// command line's text (`"4 ton"`, `"60 mph"`, `"2/3"`, `"?"` for an unknown), and lists of
-/// them; a pair inside a list is a vector (`v=((1, 0), (0, 0))`).
-///
-/// >>> r = solve(m=(4, 1), v=(60, 10), e=1)
-/// >>> r.fin, r.energy.crunch
-/// ([40.0, 90.0], 1000.0)
-/// >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).fin
-/// [Fraction(4, 3), Fraction(6, 1)]
-/// >>> solve(m=("4 ton", "1 ton"), v=("?", "10 mph"), fin=("40 mph", "90 mph")).solved.v1
-/// 60.0
-///
-/// Raises `CollideError` (a `ValueError`) with the command line's message for a value
-/// `collide solve` refuses.
-#[pyfunction]
-#[pyo3(signature = (m=None, v=None, e=None, **flags))]
-pub fn solve(
-    py: Python<'_>,
-    m: Option<&Bound<'_, PyAny>>,
-    v: Option<&Bound<'_, PyAny>>,
-    e: Option<&Bound<'_, PyAny>>,
-    flags: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Py<Report>> {
-    let args = words_of(py, "solve", &[("m", m), ("v", v), ("e", e)], flags)?;
-    report(py, args)
+/// A function of the module for `collide COMMAND`, whose report it returns, with three leading
+/// values (the case's `m`, `v`, `e`, or a layout's `m`, `x`, `v`: Python's name, then the flag's)
+/// and the command's other flags as keywords.
+macro_rules! command {
+    ($(#[$doc:meta])* $name:ident, $command:literal,
+     $a:ident => $fa:literal, $b:ident => $fb:literal, $c:ident => $fc:literal) => {
+        $(#[$doc])*
+        #[pyfunction]
+        #[pyo3(signature = ($a=None, $b=None, $c=None, **flags))]
+        pub fn $name(
+            py: Python<'_>,
+            $a: Option<&Bound<'_, PyAny>>,
+            $b: Option<&Bound<'_, PyAny>>,
+            $c: Option<&Bound<'_, PyAny>>,
+            flags: Option<&Bound<'_, PyDict>>,
+        ) -> PyResult<Py<Report>> {
+            let leading = [($fa, $a), ($fb, $b), ($fc, $c)];
+            report(py, words_of(py, $command, &leading, flags)?)
+        }
+    };
 }
 
-/// One collision seen from the standard Galilean frames, as `collide frames ... --format json`
-/// prints it (lecture Figs. 2.5 and 3.4); `frame=` adds rows (one frame or a list).
-///
-/// >>> [row.name for row in frames(m=(4, 1), v=(60, 10)).frames][:2]
-/// ['lab', 'com']
-#[pyfunction]
-#[pyo3(signature = (m=None, v=None, e=None, **flags))]
-pub fn frames(
-    py: Python<'_>,
-    m: Option<&Bound<'_, PyAny>>,
-    v: Option<&Bound<'_, PyAny>>,
-    e: Option<&Bound<'_, PyAny>>,
-    flags: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Py<Report>> {
-    let args = words_of(py, "frames", &[("m", m), ("v", v), ("e", e)], flags)?;
-    report(py, args)
-}
+command!(
+    /// One collision, as `collide solve ... --format json` solves it: on a rail, in the plane or
+    /// space, N bodies, a homework problem with unknowns, or a rigid impact.
+    ///
+    /// `m`, `v` and `e` are `-m`, `-v` and `-e`; every other flag of `collide solve` is a keyword
+    /// (`fin=`, `impulse=`, `released=`, `length=`, `target=`, `pivot=`, `hit_at=`, `spin=`,
+    /// `friction=`, `law=`, `join=True`, `frame=`, `exact=True`, ...; `b=` is
+    /// `--impact-parameter`). Values are numbers (`int`, `float`, `fractions.Fraction`), the
+    /// command line's text (`"4 ton"`, `"60 mph"`, `"2/3"`, `"?"` for an unknown), and lists of
+    /// them; a pair inside a list is a vector (`v=((1, 0), (0, 0))`).
+    ///
+    /// >>> r = solve(m=(4, 1), v=(60, 10), e=1)
+    /// >>> r.fin, r.energy.crunch
+    /// ([40.0, 90.0], 1000.0)
+    /// >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).fin
+    /// [Fraction(4, 3), Fraction(6, 1)]
+    /// >>> solve(m=("4 ton", "1 ton"), v=("?", "10 mph"), fin=("40 mph", "90 mph")).solved.v1
+    /// 60.0
+    ///
+    /// Raises `CollideError` (a `ValueError`) with the command line's message for a value
+    /// `collide solve` refuses.
+    solve, "solve", m => "m", v => "v", e => "e"
+);
+
+command!(
+    /// One collision seen from the standard Galilean frames, as `collide frames ... --format
+    /// json` prints it (lecture Figs. 2.5 and 3.4); `frame=` adds rows (one frame or a list).
+    ///
+    /// >>> [row.name for row in frames(m=(4, 1), v=(60, 10)).frames][:2]
+    /// ['lab', 'rest-in:1']
+    frames, "frames", m => "m", v => "v", e => "e"
+);
+
+command!(
+    /// Repeated collisions of bodies on a track between walls, as `collide track ... --format
+    /// json` runs them: `m`, `x` and `v` are the masses, positions and velocities (`-m`, `-x`,
+    /// `-v`); `left_wall=`, `right_wall=`, `sizes=`, `e=`, `gravity=`, `until=`, ... the other
+    /// flags.
+    ///
+    /// >>> track(m=(1, 100), x=(1, 2), v=(0, -1), left_wall=0).collisions
+    /// 31
+    track, "track", m => "m", x => "positions", v => "v"
+);
+
+command!(
+    /// Collisions in time with contact forces, as `collide contact ... --format json`
+    /// integrates them: `m`, `x`, `v` as for `track`, and `sizes=`, `law=` (`"linear"`,
+    /// `"hertz"`, ...), `stiffness=`, `zeta=`, `damping=`, `method=`, ... as the command's flags.
+    contact, "contact", m => "m", x => "positions", v => "v"
+);
 
 /// The SVG that `collide plot` draws for the case (the velocity plane by default;
 /// `kind="minkowski"`, `frame="com"`, `frames=True` as its flags).
@@ -128,41 +150,6 @@ pub fn plot(
 ) -> PyResult<String> {
     let args = words_of(py, "plot", &[("m", m), ("v", v), ("e", e)], flags)?;
     Ok(run(py, &args)?.stdout)
-}
-
-/// Repeated collisions of bodies on a track between walls, as `collide track ... --format json`
-/// runs them: `m`, `x` and `v` are the masses, positions and velocities (`-m`, `-x`, `-v`);
-/// `left_wall=`, `right_wall=`, `sizes=`, `e=`, `gravity=`, `until=`, ... the other flags.
-///
-/// >>> track(m=(1, 100), x=(1, 2), v=(0, -1), left_wall=0).collisions
-/// 31
-#[pyfunction]
-#[pyo3(signature = (m=None, x=None, v=None, **flags))]
-pub fn track(
-    py: Python<'_>,
-    m: Option<&Bound<'_, PyAny>>,
-    x: Option<&Bound<'_, PyAny>>,
-    v: Option<&Bound<'_, PyAny>>,
-    flags: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Py<Report>> {
-    let leading = [("m", m), ("positions", x), ("v", v)];
-    report(py, words_of(py, "track", &leading, flags)?)
-}
-
-/// Collisions in time with contact forces, as `collide contact ... --format json` integrates
-/// them: `m`, `x`, `v` as for `track`, and `sizes=`, `law=` (`"linear"`, `"hertz"`, ...),
-/// `stiffness=`, `zeta=`, `damping=`, `method=`, ... as the command's flags.
-#[pyfunction]
-#[pyo3(signature = (m=None, x=None, v=None, **flags))]
-pub fn contact(
-    py: Python<'_>,
-    m: Option<&Bound<'_, PyAny>>,
-    x: Option<&Bound<'_, PyAny>>,
-    v: Option<&Bound<'_, PyAny>>,
-    flags: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Py<Report>> {
-    let leading = [("m", m), ("positions", x), ("v", v)];
-    report(py, words_of(py, "contact", &leading, flags)?)
 }
 
 /// Pi from collisions, as `collide pi N --format json` counts them: the exact count for mass
