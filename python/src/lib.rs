@@ -4,14 +4,33 @@
 //! `collide solve --format json`'s byte for byte; many cases go through the table engine's row
 //! (`collide::table::engine::solve_row`), the one `collide sweep` and `collide batch` print.
 //!
-//! The modules: `values` (Python values as the command line's text), `report` (the `Report`
-//! class over the JSON), `many` (`solve_many`: NumPy arrays in and out).
+//! The modules: `values` (Python values as the command line's text), `command` (the command
+//! line run in the module), `functions` (one per command), `report` (the `Report` class over the
+//! JSON), `picture` (its SVG), `many` (`solve_many`: NumPy arrays in and out), `sweep` (`collide.sweep`:
+//! a DataFrame).
 
 use pyo3::prelude::*;
 
+mod command;
+mod functions;
 mod many;
+mod picture;
 mod report;
+mod sweep;
 mod values;
+
+/// The command line's own flags and commands, compiled into the module from the binary's files
+/// (`src/cli.rs`, `src/commands/`, `src/usage.rs`): one parser and one renderer for both, so a
+/// report is the command's JSON by construction. The binary's code names its flags as
+/// `crate::cli`, hence the `use` below.
+#[path = "../../src"]
+#[allow(dead_code, unused_imports)]
+mod binary {
+    pub mod cli;
+    pub mod commands;
+    pub mod usage;
+}
+use binary::{cli, commands, usage};
 
 pyo3::create_exception!(
     collide,
@@ -45,7 +64,18 @@ fn collide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     )?;
     m.add_class::<report::Section>()?;
     m.add_class::<report::Report>()?;
-    m.add_function(wrap_pyfunction!(report::solve, m)?)?;
+    for f in [
+        wrap_pyfunction!(functions::solve, m)?,
+        wrap_pyfunction!(functions::frames, m)?,
+        wrap_pyfunction!(functions::plot, m)?,
+        wrap_pyfunction!(functions::track, m)?,
+        wrap_pyfunction!(functions::contact, m)?,
+        wrap_pyfunction!(functions::pi, m)?,
+        wrap_pyfunction!(functions::scene, m)?,
+        wrap_pyfunction!(sweep::sweep, m)?,
+    ] {
+        m.add_function(f)?;
+    }
     m.add_function(wrap_pyfunction!(many::solve_many, m)?)?;
     Ok(())
 }

@@ -8,10 +8,7 @@ use pyo3::exceptions::{PyAttributeError, PyKeyError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString};
 
-use collide::view::input::{CaseInput, PlaneInput};
-
-use crate::refused;
-use crate::values::{Velocity, pair, scalar, velocity};
+use crate::command::Printed;
 
 /// A part of a report (a JSON object): its keys as attributes (`r.energy.crunch`) and items
 /// (`r["energy"]["crunch"]`; a key that is a Python keyword, `in`, also as `in_`).
@@ -26,6 +23,9 @@ pub struct Section {
 #[pyclass(module = "collide", frozen, extends = Section)]
 pub struct Report {
     json: String,
+    /// The command's words that made it (`solve --masses 4,1 ...`, without `--format json`).
+    args: Vec<String>,
+    status: u8,
 }
 
 /// Whether `s` is a number as the exact JSON writes it: an integer or a fraction `n/d`.
@@ -138,8 +138,57 @@ impl Report {
         &self.json
     }
 
+    /// The command line that prints this report (`collide solve --masses 4,1 ...`), quoted
+    /// for a POSIX shell.
+    #[getter]
+    fn command(&self) -> String {
+        let words: Vec<String> = self
+            .args
+            .iter()
+            .chain(["--format".to_string(), "json".to_string()].iter())
+            .map(|w| collide::view::shell::word(w))
+            .collect();
+        format!("collide {}", words.join(" "))
+    }
+
+    /// The command's exit status: 0, or 1 when a scene's check failed or given values
+    /// contradict each other (the report then says what was checked).
+    #[getter]
+    fn status(&self) -> u8 {
+        self.status
+    }
+
     fn __repr__(slf: PyRef<'_, Self>, py: Python<'_>) -> PyResult<String> {
         Ok(format!("Report({})", slf.as_super().keys(py)?.join(", ")))
+    }
+
+    /// The velocity plane as SVG (Jupyter's rich display): what `collide plot` draws for a case
+    /// of `collide.solve` or `collide.frames` with the same values; `None` for a report that
+    /// `collide plot` does not draw (a track, a scene, a case with unknowns or knowns).
+    fn _repr_svg_(&self, py: Python<'_>) -> Option<String> {
+        let args = crate::picture::plot_args(&self.args)?;
+        crate::command::run(py, &args).ok().map(|p| p.stdout)
+    }
+}
+
+impl Report {
+    /// The report of what `args` printed (`--format json`), with Fractions when `exact`.
+    pub fn new(py: Python<'_>, args: Vec<String>, printed: Printed) -> PyResult<Py<Report>> {
+        let exact = args.iter().any(|a| a == "--exact");
+        let data = py
+            .import("json")?
+            .call_method1("loads", (&printed.stdout,))?
+            .cast_into::<PyDict>()?
+            .unbind();
+        let report = Report {
+            json: printed.stdout,
+            args,
+            status: printed.status,
+        };
+        Py::new(
+            py,
+            PyClassInitializer::from(Section { data, exact }).add_subclass(report),
+        )
     }
 }
 
@@ -181,113 +230,4 @@ fn escape(s: &str) -> String {
         .replace('<', "&lt;")
         .replace('>', "&gt;")
         .replace('"', "&quot;")
-}
-
-/// The text of an optional value, empty when absent.
-fn text(x: Option<&Bound<'_, PyAny>>, what: &str) -> PyResult<String> {
-    x.map_or(Ok(String::new()), |x| scalar(x, what))
-}
-
-/// One collision, as `collide solve ... --format json` solves it.
-///
-/// Values are numbers (`int`, `float`, `fractions.Fraction`) or the command line's text
-/// (`"4 ton"`, `"60 mph"`, `"2/3"`, `"elastic"`). Velocities that are vectors (`(4, 1)`,
-/// `"(4,1)"`, `"6 m/s @ 30deg"`), or a line of impact (`normal=`, or `radii=` with `b=`),
-/// make it a case in the plane.
-///
-/// >>> r = solve(m=(4, 1), v=(60, 10), e=1)
-/// >>> r.fin, r.energy.crunch
-/// ([40.0, 90.0], 1000.0)
-/// >>> solve(m=(6, 1), v=(3, -4), e="2/3", exact=True).fin
-/// [Fraction(4, 3), Fraction(6, 1)]
-/// >>> solve(m=(1, 1), v=((1, 0), (0, 0)), radii=(1, 1), b=1).angle_between_deg
-/// 90.0
-///
-/// Raises `CollideError` (a `ValueError`) with the command line's message for a value
-/// `collide solve` refuses.
-#[pyfunction]
-#[pyo3(signature = (m=None, v=None, e=None, *, inertia=None, normal=None, radii=None, b=None,
-    frame="lab", reverse=false, exact=false))]
-#[allow(clippy::too_many_arguments)]
-pub fn solve(
-    py: Python<'_>,
-    m: Option<&Bound<'_, PyAny>>,
-    v: Option<&Bound<'_, PyAny>>,
-    e: Option<&Bound<'_, PyAny>>,
-    inertia: Option<&Bound<'_, PyAny>>,
-    normal: Option<&Bound<'_, PyAny>>,
-    radii: Option<&Bound<'_, PyAny>>,
-    b: Option<&Bound<'_, PyAny>>,
-    frame: &str,
-    reverse: bool,
-    exact: bool,
-) -> PyResult<Py<Report>> {
-    let v = v.ok_or_else(|| refused("v: the velocities (V1, V2) are missing"))?;
-    let [v1, v2] = pair(v, "v", velocity)?;
-    let e = match e {
-        Some(e) => scalar(e, "e")?,
-        None => "elastic".into(),
-    };
-    let [m1, m2] = match (m, inertia) {
-        (Some(_), Some(_)) => return Err(refused("give the masses m or the inertia, not both")),
-        (Some(m), None) => pair(m, "m", scalar)?,
-        (None, Some(_)) => [String::new(), String::new()],
-        (None, None) => return Err(refused("m: the masses (M1, M2) are missing")),
-    };
-    let normal = match normal {
-        Some(n) => velocity(n, "normal")?.text,
-        None => String::new(),
-    };
-    let [r1, r2] = match radii {
-        Some(r) => pair(r, "radii", scalar)?,
-        None => [String::new(), String::new()],
-    };
-    let b = text(b, "b")?;
-    let planar = v1.planar || v2.planar || [&normal, &r1, &r2, &b].iter().any(|s| !s.is_empty());
-    let state = if planar {
-        if inertia.is_some() {
-            return Err(refused(
-                "inertia: a general tensor is for two bodies on a rail, not the plane",
-            ));
-        }
-        let input = PlaneInput {
-            m1,
-            m2,
-            v1: v1.text,
-            v2: v2.text,
-            e,
-            normal,
-            r1,
-            r2,
-            b,
-            frame: frame.into(),
-            reverse,
-            exact,
-            line: String::new(),
-        };
-        py.detach(|| input.solve_typed().map(|s| s.state))
-    } else {
-        let Velocity { text: v1, .. } = v1;
-        let input = CaseInput {
-            m1,
-            m2,
-            inertia: inertia.map(|t| scalar(t, "inertia")).transpose()?,
-            v1,
-            v2: v2.text,
-            e,
-            frame: frame.into(),
-            reverse,
-            exact,
-        };
-        py.detach(|| input.solve_typed().map(|s| s.state))
-    }
-    .map_err(|e| refused(e.error))?;
-    let data = py
-        .import("json")?
-        .call_method1("loads", (&state,))?
-        .cast_into::<PyDict>()?
-        .unbind();
-    let init =
-        PyClassInitializer::from(Section { data, exact }).add_subclass(Report { json: state });
-    Py::new(py, init)
 }

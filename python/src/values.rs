@@ -2,7 +2,8 @@
 //! value is refused, or read, exactly as `collide solve` would): a `str` as typed (`"4 ton"`,
 //! `"2/3"`, `"(4,1)"`, `"6 m/s @ 30deg"`), an `int` in decimal, a `float` as its shortest
 //! round-trip text (read back as the same binary64), a `fractions.Fraction` (any
-//! `numbers.Rational`) as `n/d`, a pair of those as the vector `(x,y)`.
+//! `numbers.Rational`) as `n/d`; a list of those comma-separated, a sequence inside it as the
+//! vector `(x,y)`.
 
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt, PyString};
@@ -48,27 +49,32 @@ fn float(v: f64, what: &str) -> PyResult<String> {
     }
 }
 
-/// A pair of values (`m=(4, 1)`, `v=("60 mph", "10 mph")`), each as `item` reads it.
-pub fn pair<T>(
-    x: &Bound<'_, PyAny>,
-    what: &str,
-    item: impl Fn(&Bound<'_, PyAny>, &str) -> PyResult<T>,
-) -> PyResult<[T; 2]> {
-    let items = sequence(x).ok_or_else(|| {
-        refused(format!(
-            "{what}: expected a pair such as (4, 1), got {}",
-            x.repr().map(|r| r.to_string()).unwrap_or_default()
-        ))
-    })?;
-    match items.as_slice() {
-        [a, b] => Ok([
-            item(a, &format!("{what}[0]"))?,
-            item(b, &format!("{what}[1]"))?,
-        ]),
-        _ => Err(refused(format!(
-            "{what}: expected two values (body 1, body 2), got {}",
-            items.len()
-        ))),
+/// A list as the command line's text: the items comma-separated, an item that is itself a
+/// sequence as the vector `(x,y)` (`v=((1, 0), "6 m/s @ 30deg")` is `(1,0),6 m/s @ 30deg`);
+/// a single value as `scalar` reads it.
+pub fn list(x: &Bound<'_, PyAny>, what: &str) -> PyResult<String> {
+    match sequence(x) {
+        Some(items) => items
+            .iter()
+            .enumerate()
+            .map(|(i, item)| vector(item, &format!("{what}[{i}]")))
+            .collect::<PyResult<Vec<_>>>()
+            .map(|items| items.join(",")),
+        None => scalar(x, what),
+    }
+}
+
+/// One vector as the command line's text: a sequence as `(x,y)` (`(x,y,z)` in space), text
+/// as typed (`"30deg"`, `"(1,1)"`).
+pub fn vector(x: &Bound<'_, PyAny>, what: &str) -> PyResult<String> {
+    match sequence(x) {
+        Some(items) => items
+            .iter()
+            .enumerate()
+            .map(|(i, c)| scalar(c, &format!("{what}[{i}]")))
+            .collect::<PyResult<Vec<_>>>()
+            .map(|c| format!("({})", c.join(","))),
+        None => scalar(x, what),
     }
 }
 
@@ -79,32 +85,4 @@ fn sequence<'py>(x: &Bound<'py, PyAny>) -> Option<Vec<Bound<'py, PyAny>>> {
     }
     let n = x.len().ok()?;
     (0..n).map(|i| x.get_item(i).ok()).collect()
-}
-
-/// A velocity: a scalar on the rail, or a vector in the plane (a pair of numbers, or text).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Velocity {
-    pub text: String,
-    /// Given as a pair, or as text that only the plane reads (`(4,1)`, `6 m/s @ 30deg`).
-    pub planar: bool,
-}
-
-/// A velocity as the command line's text.
-pub fn velocity(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Velocity> {
-    if let Some(items) = sequence(x) {
-        if items.len() != 2 {
-            return Err(refused(format!(
-                "{what}: a vector in the plane has two components, got {}",
-                items.len()
-            )));
-        }
-        let [a, b] = pair(x, what, scalar)?;
-        return Ok(Velocity {
-            text: format!("({a},{b})"),
-            planar: true,
-        });
-    }
-    let text = scalar(x, what)?;
-    let planar = text.contains('(') || text.contains('@');
-    Ok(Velocity { text, planar })
 }

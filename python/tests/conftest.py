@@ -39,16 +39,19 @@ def unwrapped(stderr):
 
 
 def cli_error(*args):
-    """The message of a refusal: exit status 2, `error: MESSAGE` on stderr."""
+    """The message of a refusal as the module gives it: exit status 2, `error: MESSAGE` on
+    stderr, with its lines rejoined; for a value a flag's parser refused, the parser's own
+    message; a usage error's text without the usage line and the hint to try --help."""
     status, _, err = run(*args)
     assert status == 2, (status, err)
     message = unwrapped(err)
     assert message.startswith("error: "), message
     message = message[len("error: "):]
-    # A value clap's parser refused: "invalid value 'X' for '--flag <V>': MESSAGE" and a hint;
-    # the message is the library's.
-    if message.startswith("invalid value "):
-        message = message.split(">': ", 1)[1].split("\n\nFor more information")[0]
+    message = message.split("\n\nFor more information")[0].split("\n\nUsage:")[0]
+    # A value clap's parser refused: "invalid value 'X' for '--flag <V>': MESSAGE"; the message
+    # is the library's.
+    if message.startswith("invalid value ") and ">': " in message:
+        message = message.split(">': ", 1)[1]
     return message.strip()
 
 

@@ -31,7 +31,7 @@ def test_document_examples(path):
     run_examples(python_blocks(path), path)
 
 
-@pytest.mark.parametrize("name", ["collide", "solve", "solve_many"])
+@pytest.mark.parametrize("name", ["collide", "solve", "solve_many", "frames", "plot", "track", "pi", "sweep"])
 def test_docstring_examples(name):
     obj = collide if name == "collide" else getattr(collide, name)
     run_examples(obj.__doc__, name)
@@ -45,3 +45,15 @@ def test_stub_examples():
     nodes = [tree] + [n for n in ast.walk(tree) if isinstance(n, (ast.FunctionDef, ast.ClassDef))]
     texts = [ast.get_docstring(n) or "" for n in nodes]
     run_examples("\n\n".join(t for t in texts if ">>>" in t), "collide.pyi")
+
+
+def test_stubs_name_what_the_module_has():
+    """Every public function and class of the module has its stub, and every stub a thing."""
+    import ast
+
+    tree = ast.parse((ROOT / "python" / "collide.pyi").read_text())
+    stubbed = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    public = {n for n in dir(collide) if not n.startswith("_") and callable(getattr(collide, n))}
+    assert stubbed == public, (stubbed ^ public)
+    for name in public - {"Section", "Report", "CollideError"}:
+        assert getattr(collide, name).__doc__, name

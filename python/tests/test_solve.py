@@ -13,7 +13,7 @@ from fractions import Fraction
 import pytest
 
 import collide
-from conftest import cli_error, cli_json
+from conftest import cli_error, cli_json, unwrapped
 
 
 def cli_text(x):
@@ -194,19 +194,35 @@ def test_refusals_carry_the_cli_message(kwargs, cli):
 
 
 def test_refusals_of_python_values():
+    """Values Python has and the command line cannot be typed: refused by the module, naming
+    the keyword and the item."""
     for kwargs, words in [
         ({"m": (1, float("nan")), "v": (1, 0)}, "m[1]: NaN is not a number"),
         ({"m": (1, 1), "v": (float("inf"), 0)}, "v[0]: inf is not a number"),
-        ({"m": (1, 1, 1), "v": (1, 0)}, "m: expected two values"),
         ({"m": (True, 1), "v": (1, 0)}, "m[0]: expected a number or text, got the bool True"),
-        ({"m": (1, 1)}, "v: the velocities (V1, V2) are missing"),
-        ({"m": 4, "v": (1, 0)}, "m: expected a pair such as (4, 1), got 4"),
-        ({"m": (1, 1), "v": ((1, 2, 3), (0, 0))}, "v[0]: a vector in the plane has two components, got 3"),
         ({"m": (1, 1), "v": ((1, float("nan")), (0, 0))}, "v[0][1]: NaN is not a number"),
+        ({"m": (1, 1), "v": (1, 0), "b": object()}, "b: expected a number or text, got <object"),
     ]:
         with pytest.raises(collide.CollideError) as refused:
             collide.solve(**kwargs)
         assert str(refused.value).startswith(words), str(refused.value)
+
+
+@pytest.mark.parametrize(
+    "kwargs, cli",
+    [
+        ({"m": (1, 1, 1), "v": (1, 0)}, ["-m", "1,1,1", "-v", "1,0"]),
+        ({"m": (1, 1)}, ["-m", "1,1"]),
+        ({"m": 4, "v": (1, 0)}, ["-m", "4", "-v", "1,0"]),
+        ({"m": (1, 1), "v": ((1, 2, 3), (0, 0))}, ["-m", "1,1", "-v", "(1,2,3),(0,0)"]),
+    ],
+)
+def test_refusals_of_shapes_are_the_cli_message(kwargs, cli):
+    """A list of the wrong length is the command's to refuse (it takes N bodies and vectors in
+    space): the same message."""
+    with pytest.raises(collide.CollideError) as refused:
+        collide.solve(**kwargs)
+    assert unwrapped(str(refused.value)) == cli_error("solve", *cli, "--format", "json")
 
 
 def test_display():

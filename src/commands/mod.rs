@@ -13,7 +13,7 @@ mod scene;
 mod shell;
 mod solve;
 mod space_solve;
-mod table;
+pub(crate) mod table;
 mod track;
 mod view;
 

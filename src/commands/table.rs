@@ -20,6 +20,25 @@ pub fn sweep(args: SweepArgs) -> Result<Outcome> {
     if args.case.spatial() {
         return plane_sweep(args);
     }
+    let RailSweep {
+        case,
+        grid,
+        columns,
+    } = rail_sweep(&args)?;
+    let writer = RowWriter::new(columns, format_of(&args.table)?);
+    write_rows(&case, &grid, args.shard, &args.table, writer)
+}
+
+/// A sweep on a rail, checked: the case, its grid and its columns.
+pub struct RailSweep {
+    pub case: Case,
+    pub grid: Grid,
+    pub columns: Vec<&'static Column>,
+}
+
+/// The sweep on a rail of `args` (a case in the plane is `plane_sweep`'s), checked: what `collide
+/// sweep` writes and the Python module's `collide.sweep` solves into columns.
+pub fn rail_sweep(args: &SweepArgs) -> Result<RailSweep> {
     let vary = args
         .vary
         .iter()
@@ -30,9 +49,14 @@ pub fn sweep(args: SweepArgs) -> Result<Outcome> {
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    let case = args.case.into_case(false)?;
+    let case = args.case.clone().into_case(false)?;
     let grid = Grid::new(vary, args.max_rows)?;
-    run_sweep(&case, &grid, args.shard, &args.table)
+    let columns = checked(&case, &grid, &args.table)?;
+    Ok(RailSweep {
+        case,
+        grid,
+        columns,
+    })
 }
 
 /// `collide sweep` in the plane: two bodies with 2-vectors and a line of impact
@@ -108,6 +132,12 @@ fn plane_sweep(args: SweepArgs) -> Result<Outcome> {
 
 /// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
 pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> Result<Outcome> {
+    let writer = RowWriter::new(checked(case, grid, table)?, format_of(table)?);
+    write_rows(case, grid, shard, table, writer)
+}
+
+/// The columns of a sweep of `case` over `grid`, once the sweep is one a table can hold.
+fn checked(case: &Case, grid: &Grid, table: &TableArgs) -> Result<Vec<&'static Column>> {
     if let Some(unit) = case.units.energy_as {
         // A table's columns carry no unit: its energies are the case's own.
         anyhow::bail!(
@@ -125,7 +155,17 @@ pub fn run_sweep(case: &Case, grid: &Grid, shard: Shard, table: &TableArgs) -> R
     if general && (grid.varies(Param::M1) || grid.varies(Param::M2)) {
         anyhow::bail!("--vary m1 or m2 needs --masses; with --inertia, vary v1, v2 or e");
     }
-    let writer = RowWriter::new(columns(&table.columns, general)?, format_of(table)?);
+    columns(&table.columns, general)
+}
+
+/// Writes the rows of `shard` of a sweep with `writer`.
+fn write_rows(
+    case: &Case,
+    grid: &Grid,
+    shard: Shard,
+    table: &TableArgs,
+    writer: RowWriter,
+) -> Result<Outcome> {
     let (mut out, writer) = open(table, writer)?;
     let rows = shard.rows(grid.total);
     let mut progress = Progress::new(Some(rows.end - rows.start));

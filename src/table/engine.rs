@@ -87,6 +87,51 @@ pub fn chunk(
     out
 }
 
+/// The rows of a sweep of `case` over `grid`: each row's case, and the tensor every row shares
+/// when no mass varies. `collide sweep` writes them (`write_sweep`), the Python module's
+/// `collide.sweep` solves them into columns; both with `solve_row`.
+pub struct SweepRows<'a> {
+    base: RowCase,
+    grid: &'a Grid,
+    /// The tensor of every row, when no mass varies (`solve_row`'s `shared`).
+    pub shared: Option<InertiaTensor>,
+}
+
+impl<'a> SweepRows<'a> {
+    pub fn new(case: &Case, grid: &'a Grid) -> SweepRows<'a> {
+        let m = case.inertia().matrix();
+        let shared =
+            (!grid.varies(Param::M1) && !grid.varies(Param::M2)).then(|| case.inertia().untyped());
+        let c = &case.collision;
+        let base = RowCase {
+            m11: m[(0, 0)],
+            m12: m[(0, 1)],
+            m22: m[(1, 1)],
+            v: [c.v_in.x, c.v_in.y],
+            e: c.restitution.value(),
+        };
+        SweepRows { base, grid, shared }
+    }
+
+    /// Row `r`'s case (from 0, in the grid's order: the last parameter varies fastest).
+    pub fn row(&self, r: u64) -> RowCase {
+        let mut varied = [(Param::E, 0.0); 5];
+        let varied = &mut varied[..self.grid.vary.len()];
+        self.grid.row(r, varied);
+        let mut row = self.base;
+        for &(p, x) in varied.iter() {
+            match p {
+                Param::M1 => row.m11 = x,
+                Param::M2 => row.m22 = x,
+                Param::V1 => row.v[0] = x,
+                Param::V2 => row.v[1] = x,
+                Param::E => row.e = x,
+            }
+        }
+        row
+    }
+}
+
 /// Solves the rows of `shard` of a sweep of `case` over `grid` and writes them (with the header
 /// when the writer puts one in this shard: by default, the first) to `out`. A Parquet table is
 /// complete (footer written) only when this returns `Ok`.
@@ -99,44 +144,18 @@ pub fn write_sweep(
     out: &mut dyn Write,
     progress: &mut Progress,
 ) -> Result<Summary, RowsError> {
-    let m = case.inertia().matrix();
-    // A tensor every row shares, when no mass varies.
-    let shared =
-        (!grid.varies(Param::M1) && !grid.varies(Param::M2)).then(|| case.inertia().untyped());
-    let c = &case.collision;
-    let base = RowCase {
-        m11: m[(0, 0)],
-        m12: m[(0, 1)],
-        m22: m[(1, 1)],
-        v: [c.v_in.x, c.v_in.y],
-        e: c.restitution.value(),
-    };
+    let rows_of = SweepRows::new(case, grid);
     let rows = shard.rows(grid.total);
     let mut sink = Sink::open(writer, shard.k, out)?;
     let chunk_ranges = (rows.start..rows.end)
         .step_by(CHUNK_ROWS)
         .map(move |s| s..(s + CHUNK_ROWS as u64).min(rows.end));
     let solve = |range: std::ops::Range<u64>| {
-        let mut varied = [(Param::E, 0.0); 5];
-        let varied = &mut varied[..grid.vary.len()];
-        let items = range.map(|r| {
-            grid.row(r, varied);
-            let mut row = base;
-            for &(p, x) in varied.iter() {
-                match p {
-                    Param::M1 => row.m11 = x,
-                    Param::M2 => row.m22 = x,
-                    Param::V1 => row.v[0] = x,
-                    Param::V2 => row.v[1] = x,
-                    Param::E => row.e = x,
-                }
-            }
-            Ok((r + 1, row))
-        });
+        let items = range.map(|r| Ok((r + 1, rows_of.row(r))));
         chunk(
             items,
             &|r| format!("row {r}"),
-            shared.as_ref(),
+            rows_of.shared.as_ref(),
             writer,
             skip_bad,
         )
