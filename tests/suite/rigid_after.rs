@@ -188,12 +188,13 @@ fn the_rails_pendulum_is_the_same_computation_for_a_point_bob() {
 
 /// A 1 kg ball at `v` sticks to the lower end of a 1 kg, 2 m rod on an axle through its
 /// centre (no units: g as given).
-fn over(v: &str, g: &str) -> serde_json::Value {
-    json(&[
+fn rod(v: &str, g: &str) -> Vec<String> {
+    let v = format!("{v},0");
+    let a = [
         "-m",
         "1,1",
         "-v",
-        &format!("{v},0"),
+        &v,
         "--target",
         "rod 2",
         "--pivot",
@@ -205,8 +206,15 @@ fn over(v: &str, g: &str) -> serde_json::Value {
         "swing",
         "--gravity",
         g,
-        "--exact",
-    ])
+    ];
+    a.iter().map(|s| s.to_string()).collect()
+}
+
+fn over(v: &str, g: &str) -> serde_json::Value {
+    js(&with(
+        &rod(v, g).iter().map(String::as_str).collect::<Vec<_>>(),
+        &["--exact"],
+    ))
 }
 
 #[test]
@@ -220,23 +228,7 @@ fn over_the_top_and_just_to_the_top() {
     assert_eq!(s["swing"]["end"], "over the top");
     assert_eq!(s["swing"]["over_the_top"], true);
     assert_eq!(q(&s["swing"]["rise"]), int(1));
-    let b = json(&[
-        "-m",
-        "1,1",
-        "-v",
-        "8,0",
-        "--target",
-        "rod 2",
-        "--pivot",
-        "centre",
-        "--hit-at",
-        "-1",
-        "--join",
-        "--show",
-        "swing",
-        "--gravity",
-        "10",
-    ]);
+    let b = js(&rod("8", "10"));
     assert_ulps(f(&b["swing"]["omega_top"]), 6f64.sqrt(), 2.0, "omega_top");
     let t = over("8", "12");
     assert_eq!(t["swing"]["end"], "reaches the top");
@@ -428,24 +420,9 @@ fn the_new_flags_refuse_what_they_cannot_mean() {
         ],
         &["--floor-friction 0", "above 0"],
     );
+    let negative = rod("8", "-9.8");
     solve_refused(
-        &[
-            "-m",
-            "1,1",
-            "-v",
-            "8,0",
-            "--target",
-            "rod 2",
-            "--pivot",
-            "centre",
-            "--hit-at",
-            "-1",
-            "--join",
-            "--show",
-            "swing",
-            "--gravity",
-            "-9.8",
-        ],
+        &negative.iter().map(String::as_str).collect::<Vec<_>>(),
         &["--gravity -9.8", "above 0"],
     );
     // Without the sections, --gravity still means nothing to a rigid impact.
