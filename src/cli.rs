@@ -658,6 +658,16 @@ pub struct RigidArgs {
     /// body (e = 0 and no slip); prints the combined mass, centre and inertia
     #[arg(long, help_heading = "Rigid bodies")]
     pub join: bool,
+
+    /// The floor's kinetic friction MU > 0 under a ball that leaves the impact sliding: with
+    /// --show rolling, the time and distance before it rolls (with --gravity)
+    #[arg(
+        long,
+        value_name = "MU",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub floor_friction: Option<Number>,
 }
 
 impl RigidArgs {
@@ -677,6 +687,7 @@ impl RigidArgs {
             || self.law.is_some()
             || self.tangential_restitution.is_some()
             || self.join
+            || self.floor_friction.is_some()
     }
 }
 

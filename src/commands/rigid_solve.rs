@@ -18,13 +18,17 @@ use super::Outcome;
 use crate::cli::{CaseArgs, Format, RigidArgs, SolveArgs};
 
 pub fn run(args: &SolveArgs) -> Result<Outcome> {
+    let after = args.show.contains(&Section::Swing) || args.show.contains(&Section::Rolling);
     let refused = [
         (args.frame != collide::line::frame::Frame::Lab, "--frame"),
         (args.plot.is_some(), "--plot (use collide plot)"),
         (args.contact_time.is_some(), "--contact-time"),
         (args.fin.is_some(), "--fin"),
         (args.reverse, "--reverse"),
-        (args.case.gravity.is_some(), "--gravity"),
+        (
+            args.case.gravity.is_some() && !after,
+            "--gravity (but with --show swing or rolling)",
+        ),
         (
             args.case.inertia.is_some(),
             "--inertia (give --target or --ball)",
@@ -41,7 +45,8 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
              a general contact is a scene with [[body]] tables"
         );
     }
-    let show = show(&args.show)?;
+    let mut show = show(&args.show)?;
+    after_impact(&mut show, args)?;
     let problem = homework(&args.case, &args.rigid, args.exact)?.pose()?;
     let (stdout, status) = report_of(
         problem,
@@ -51,6 +56,35 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
         args.format,
     )?;
     Ok(Outcome { stdout, status })
+}
+
+/// What the swing and the slide to rolling need: `g` (`--gravity`) and the floor's friction
+/// (`--floor-friction`, only with `--show rolling`), each above 0.
+fn after_impact(show: &mut Sections, args: &SolveArgs) -> Result<()> {
+    let positive = |n: &Number, flag: &str, what: &str| -> Result<collide::values::rational::Q> {
+        let q = n.exact();
+        if q <= collide::values::rational::Q::ZERO {
+            anyhow::bail!("{flag} {n}: {what} must be above 0");
+        }
+        Ok(q)
+    };
+    if let Some(g) = &args.case.gravity {
+        show.gravity = Some(positive(g, "--gravity", "g")?);
+    }
+    if let Some(mu) = &args.rigid.floor_friction {
+        if !show.contains(Section::Rolling) {
+            anyhow::bail!(
+                "--floor-friction {mu} is the floor's friction under a ball sliding to rolling: \
+                 ask for it with --show rolling"
+            );
+        }
+        show.floor_friction = Some(positive(
+            mu,
+            "--floor-friction",
+            "the floor's coefficient of kinetic friction (a frictionless floor never stops a slip)",
+        )?);
+    }
+    Ok(())
 }
 
 /// The typed homework problem of the command line.
@@ -188,7 +222,7 @@ pub fn show(list: &[Section]) -> Result<Sections> {
     if let Some(other) = list.iter().find(|s| !report::SECTIONS.contains(s)) {
         anyhow::bail!(
             "--show {}: for rigid bodies the sections are vectors, momentum, forms (the inertia \
-             tensor, the Jacobian rows, K), energy and all",
+             tensor, the Jacobian rows, K), energy, swing, rolling and all",
             clap::ValueEnum::to_possible_value(other)
                 .map(|v| v.get_name().to_string())
                 .unwrap_or_default()

@@ -3,6 +3,7 @@
 use anyhow::Result;
 use collide::line::problem::Posed;
 use collide::plot::Kind;
+use collide::report::not_shown::{self, Event};
 use collide::report::special::Special;
 use collide::report::{AnyReport, Sections, json, solved};
 
@@ -120,10 +121,14 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     }
     let report = AnyReport::of(case, &args.frame, args.exact, &sections, args.reverse)?;
     let mut stdout = match args.format {
-        Format::Text => report.text(case, &sections, unknowns.as_ref()),
+        Format::Text => {
+            report.text(case, &sections, unknowns.as_ref())
+                + &not_shown::text(Event::Collision, &args.show)
+        }
         Format::Json => {
             let mut json = report.json();
             solved::annotate(&mut json, &case.units, unknowns.as_ref(), args.exact);
+            with_notes(&mut json, Event::Collision, &args.show);
             json::render(&json)
         }
     };
@@ -181,15 +186,31 @@ fn special(
         .map(|s| solved::text(s, args.exact, &units))
         .unwrap_or_default();
     let report = event.render(sections, sections, args.exact)?;
+    let kind = match event {
+        Special::Separation(s) if s.kind == collide::line::separation::Kind::PassThrough => {
+            Event::PassThrough
+        }
+        Special::Separation(_) => Event::Separation,
+        Special::Wall(_) => Event::Wall,
+    };
     let stdout = match args.format {
-        Format::Text => head + &report.text,
+        Format::Text => head + &report.text + &not_shown::text(kind, &args.show),
         Format::Json => {
             let mut json = report.json;
             solved::annotate(&mut json, &units, solved, args.exact);
+            with_notes(&mut json, kind, &args.show);
             json::render(&json)
         }
     };
     Ok(Outcome { stdout, status: 0 })
+}
+
+/// The sections asked for by name that `event` does not show, as JSON `not_shown: {section:
+/// why}` (issue 42 section 3: never nothing).
+fn with_notes(json: &mut serde_json::Value, event: Event, asked: &[collide::report::Section]) {
+    if let (Some(notes), Some(map)) = (not_shown::json(event, asked), json.as_object_mut()) {
+        map.insert("not_shown".into(), notes);
+    }
 }
 
 /// A separation with the energy released given and both final velocities unknown: both ways

@@ -106,7 +106,7 @@ const TRIM_BITS: isize = 136;
 /// `asin(s)` for `0 <= s <= 1`, as `atan(s / sqrt(1 - s^2))` with the argument halved
 /// (`atan t = 2 atan(t / (1 + sqrt(1 + t^2)))`) until it is below 1/8, then Taylor's series, to
 /// about `DIGITS` digits.
-fn asin(s: &Q) -> Q {
+pub fn asin(s: &Q) -> Q {
     if s >= &Q::ONE {
         return q(PI) / int(2);
     }

@@ -10,6 +10,7 @@ pub mod block;
 pub mod contact;
 pub mod frames;
 pub mod json;
+pub mod not_shown;
 pub mod pi;
 #[cfg(feature = "cli")]
 pub mod rigid;
@@ -247,14 +248,25 @@ impl<N: Scalar> Heights<N> {
     /// and rounded once, never 0 for a speed that is not (`Scalar::unless_underflow`).
     pub fn of(x: &ExactCollision, h: &crate::values::units::HeightScale) -> Heights<N> {
         let f = x.v_fin_q();
+        let v_in = [x.v[0].clone(), x.v[1].clone()];
+        Heights::of_speeds(&v_in, &[f[0].clone(), f[1].clone()], h)
+    }
+
+    /// The heights of the speeds `v_in` and `fin` (a collision's, a separation's or a
+    /// pass-through's).
+    pub fn of_speeds(
+        v_in: &[Q; 2],
+        fin: &[Q; 2],
+        h: &crate::values::units::HeightScale,
+    ) -> Heights<N> {
         let one = |v: &Q| {
             let h = h.height(v);
             N::of_rational(&h).unless_underflow(&h)
         };
         Heights {
             g: N::of_rational(&h.g),
-            at_in: [one(&x.v[0]), one(&x.v[1])],
-            fin: [one(&f[0]), one(&f[1])],
+            at_in: [one(&v_in[0]), one(&v_in[1])],
+            fin: [one(&fin[0]), one(&fin[1])],
         }
     }
 }

@@ -24,6 +24,7 @@ use super::space::{Overflow, Style, vector};
 use super::text::{Block, wrap};
 use super::{Section, Sections};
 
+pub mod after;
 mod json;
 
 pub use json::{KEYS, json};
@@ -39,11 +40,13 @@ pub const DEFAULT: [Section; 2] = [Section::Vectors, Section::Energy];
 
 /// The sections that mean something for rigid bodies (`forms`: the inertia tensor, the Jacobian
 /// rows and the collision matrix).
-pub const SECTIONS: [Section; 5] = [
+pub const SECTIONS: [Section; 7] = [
     Section::Vectors,
     Section::Momentum,
     Section::Forms,
     Section::Energy,
+    Section::Swing,
+    Section::Rolling,
     Section::All,
 ];
 
@@ -272,6 +275,12 @@ pub fn text(
     }
     if show.contains(Section::Energy) {
         energy_block(o, style, u).render(&mut out);
+    }
+    if let Some(s) = after::swing(o, show) {
+        after::swing_block(o, &s, show, style, u).render(&mut out);
+    }
+    if let Some(r) = after::rolling(o, show) {
+        after::rolling_block(o, &r, style, u).render(&mut out);
     }
     if let Some(ode) = &o.impact.ode {
         let _ = write!(

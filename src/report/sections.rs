@@ -35,6 +35,12 @@ pub enum Section {
     Diagnostics,
     /// In the plane or in space: the angle between the final velocities, how far each body turned
     Angles,
+    /// Rigid bodies: how high a body on a pivot swings after the impact under --gravity (the
+    /// angle and the rise of its centre), or that it goes over the top
+    Swing,
+    /// Rigid bodies: the speed a round body sliding on the floor after the impact starts to
+    /// roll at; with --floor-friction the time and distance to get there
+    Rolling,
     /// Every physics section (not diagnostics, whose timing varies run to run)
     All,
 }
@@ -66,6 +72,8 @@ impl Section {
             Section::Slides => &["slides"],
             Section::Diagnostics => &["diagnostics"],
             Section::Angles => &["angle_between_deg"],
+            Section::Swing => &["swing"],
+            Section::Rolling => &["rolling"],
             Section::All => &[],
         }
     }
@@ -94,6 +102,10 @@ pub struct Sections {
     pub force_scale: Option<Q>,
     /// What a homework problem asks beyond these sections (`--spring`).
     pub asked: asked::Asked,
+    /// `g` for a rigid body's swing and slide (`--gravity`; default: standard gravity).
+    pub gravity: Option<Q>,
+    /// The floor's kinetic friction under a body sliding to rolling (`--floor-friction`).
+    pub floor_friction: Option<Q>,
 }
 
 impl Sections {
@@ -113,6 +125,8 @@ impl Sections {
             energy_scale: None,
             force_scale: None,
             asked: asked::Asked::default(),
+            gravity: None,
+            floor_friction: None,
         }
     }
     pub fn contains(&self, s: Section) -> bool {

@@ -36,6 +36,9 @@ pub struct SeparationReport<N> {
     pub energy: Option<SeparationEnergy<N>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub changes: Option<ChangeReport<N>>,
+    /// `--show heights`: the height of each IN and FIN speed, `v^2 / 2g`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heights: Option<super::Heights<N>>,
     /// A pendulum's swing (`--length`).
     #[serde(flatten)]
     pub asked: AskedReport<N>,
@@ -122,6 +125,11 @@ impl<N: Scalar> SeparationReport<N> {
                     sections.force_scale.as_ref(),
                 )
             }),
+            heights: sections
+                .heights
+                .as_ref()
+                .filter(|_| has(Section::Heights))
+                .map(|h| super::Heights::of_speeds(&s.v_in(), &s.fin, h)),
             asked,
         })
     }
@@ -220,6 +228,9 @@ impl<N: Scalar> SeparationReport<N> {
         }
         if let Some(c) = self.changes.as_ref().filter(|_| shown(Section::Changes)) {
             changes(c, &s.units).render(&mut out);
+        }
+        if let Some(h) = self.heights.as_ref().filter(|_| shown(Section::Heights)) {
+            super::text::heights(h, "").render(&mut out);
         }
         for b in self.asked.blocks() {
             b.render(&mut out);

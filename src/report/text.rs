@@ -127,21 +127,7 @@ pub fn render<N: Scalar>(case: &Case, report: &Report<N>) -> String {
         } else {
             ""
         };
-        let mut b = Block::new(format!(
-            "Heights (v^2 / 2g with g = {} m/s^2, in m{lab})",
-            h.g.show()
-        ));
-        b.row(
-            "IN",
-            pair(&h.at_in),
-            "the height a fall from rest needs for each speed",
-        );
-        b.row(
-            "FIN",
-            pair(&h.fin),
-            "how high each body rises (a pendulum's swing)",
-        );
-        b.render(&mut out);
+        heights(h, lab).render(&mut out);
     }
     for b in report.asked.blocks() {
         b.render(&mut out);
@@ -537,5 +523,24 @@ fn products<N: Scalar>(p: &Products<N>) -> Block {
         b.row("V_IN (x) V_FIN", format!("[{},", rows[0]), "outer product");
         b.row("", format!(" {}]", rows[1]), "");
     }
+    b
+}
+
+/// `--show heights`: the height of each IN and FIN speed (`lab`: a note on the frame).
+pub fn heights<N: Scalar>(h: &super::Heights<N>, lab: &str) -> Block {
+    let mut b = Block::new(format!(
+        "Heights (v^2 / 2g with g = {} m/s^2, in m{lab})",
+        h.g.show()
+    ));
+    b.row(
+        "IN",
+        pair(&h.at_in),
+        "the height a fall from rest needs for each speed",
+    );
+    b.row(
+        "FIN",
+        pair(&h.fin),
+        "how high each body rises (a pendulum's swing)",
+    );
     b
 }

@@ -12,7 +12,8 @@
 //! - `laws`: Newton, Poisson, Stronge; `routh`: friction in the plane (piecewise linear);
 //!   `slip`: friction in space (an ODE in the normal impulse, diffsol); `impact`: one impact by
 //!   the law asked; `outcome`: what follows from it; `join`: the one body two joined bodies
-//!   make (`--join`);
+//!   make (`--join`); `swing`, `rolling`: what follows it (a body on a pivot swings up under
+//!   gravity, a ball sliding on the floor starts to roll);
 //! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem.
 
 pub mod algebra;
@@ -24,9 +25,11 @@ pub mod join;
 pub mod laws;
 pub mod outcome;
 pub mod pose;
+pub mod rolling;
 pub mod routh;
 pub mod shape;
 pub mod slip;
+pub mod swing;
 pub mod units;
 
 /// Solves a posed problem.

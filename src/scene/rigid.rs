@@ -183,7 +183,7 @@ fn optional<T>(
 }
 
 /// Top-level keys of a rigid report, for `[expect]`.
-pub const RIGID_KEYS: [&str; 24] = crate::report::rigid::KEYS;
+pub const RIGID_KEYS: [&str; 26] = crate::report::rigid::KEYS;
 
 impl RigidScene {
     pub fn parse(path: &Path, text: &str) -> Result<RigidScene, SceneError> {

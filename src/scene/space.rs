@@ -288,9 +288,16 @@ pub fn show_of(list: &[Section]) -> Result<Show, String> {
             Section::Momentum => s.momentum = true,
             Section::Forms => s.forms = true,
             Section::Energy => s.energy = true,
-            Section::Angles => s.angles = true,
+            Section::Angles => {
+                s.angles = true;
+                s.named_angles = true;
+            }
             Section::Changes => s.changes = true,
-            Section::All => s = Show::all(),
+            Section::All => {
+                let named = s.named_angles;
+                s = Show::all();
+                s.named_angles = named;
+            }
             other => {
                 return Err(format!(
                     "{}: in the plane, in space and for N bodies the sections are vectors, \

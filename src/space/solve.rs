@@ -168,6 +168,12 @@ pub enum SolveError {
         hint: &'static str,
     },
     #[error(
+        "the given values contradict each other: {broken} cannot hold together with {kept}, \
+         whatever the unknowns are (final directions that cannot carry the momentum, such as \
+         two parallel directions across it); check the directions and values given"
+    )]
+    Contradiction { broken: String, kept: String },
+    #[error(
         "a product of unknowns of degree three (an unknown mass with an unknown velocity in the \
          energy): give the mass or the velocity"
     )]
@@ -571,18 +577,20 @@ fn solve_system(
     m: usize,
     last: &[usize],
 ) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
-    let mut linear: Vec<&Poly> = eqs
+    let mut linear: Vec<(Law, &Poly)> = eqs
         .iter()
         .filter(|(_, p)| p.is_linear())
-        .map(|(_, p)| p)
+        .map(|(l, p)| (*l, p))
         .collect();
     let quadratic: Vec<&(Law, Poly)> = eqs.iter().filter(|(_, p)| !p.is_linear()).collect();
     // A linear law that contradicts the others is dropped here and judged as a check.
+    let mut dropped: Vec<Law> = Vec::new();
     let affine = loop {
-        match algebra::solve_linear(&linear, m, last) {
+        let polys: Vec<&Poly> = linear.iter().map(|(_, p)| *p).collect();
+        match algebra::solve_linear(&polys, m, last) {
             Ok(a) => break a,
             Err(c) => {
-                linear.remove(c.equation);
+                dropped.push(linear.remove(c.equation).0);
             }
         }
     };
@@ -603,6 +611,19 @@ fn solve_system(
         .filter(|(_, p)| !(p.lin.is_empty() && p.is_linear()))
         .collect();
     let too_few = |used: usize| {
+        // Laws that contradict the others leave too few to fix the unknowns: the data, not
+        // a missing value, are at fault (issue 42 section 5), so say which laws cannot hold.
+        if !dropped.is_empty() {
+            let names = |laws: &mut dyn Iterator<Item = Law>| -> String {
+                let mut v: Vec<String> = laws.map(Law::name).collect();
+                v.dedup();
+                v.join(", ")
+            };
+            return SolveError::Contradiction {
+                broken: names(&mut dropped.iter().copied()),
+                kept: names(&mut linear.iter().map(|(l, _)| *l)),
+            };
+        }
         let laws: Vec<String> = eqs.iter().map(|(l, _)| l.name()).collect();
         let mut laws_unique = laws.clone();
         laws_unique.dedup();

@@ -678,3 +678,33 @@ mod separation_speed {
         );
     }
 }
+
+/// Issue 42 section 5: in the plane, final directions that cannot carry the momentum are a
+/// contradiction of the data (exit 2, naming the law that cannot hold), not a missing value.
+#[test]
+fn plane_directions_that_contradict_momentum_say_so() {
+    // 0.5 kg at 2 m/s along x has momentum (1, 0). Final directions at 120 and -60 degrees are
+    // antiparallel, along (-1/2, sqrt(3)/2): whatever the speeds f1, f2, the final momentum
+    // 0.5 (f1 - f2)(-1/2, sqrt(3)/2) lies along that line, and (1, 0) does not (its cross
+    // product with it is sqrt(3)/2, not 0): momentum cannot be kept. The same for two parallel
+    // directions at 30 degrees, across (1, 0).
+    for fin in ["? @ 120deg,? @ -60deg", "? @ 30deg,? @ 30deg"] {
+        common::solve_refused(
+            &["-m", "0.5,0.5", "-v", "2 @ 0deg,0", "--fin", fin],
+            &["contradict", "momentum", "cannot hold"],
+        );
+    }
+    // Directions along the momentum do carry it: f1 + f2 = 4 is one equation in two unknowns,
+    // and one more known value is what is missing.
+    common::solve_refused(
+        &[
+            "-m",
+            "0.5,0.5",
+            "-v",
+            "2 @ 0deg,0",
+            "--fin",
+            "? @ 0deg,? @ 0deg",
+        ],
+        &["more known value"],
+    );
+}

@@ -30,6 +30,7 @@ mod properties;
 mod readme;
 mod resources;
 mod rigid;
+mod rigid_after;
 mod rigid_friction;
 mod rigid_join;
 mod rigid_ode;

@@ -221,6 +221,12 @@ pub fn json(
         );
         m.insert("tensor".into(), Value::Object(f));
     }
+    if let Some(s) = super::after::swing(o, show) {
+        m.insert("swing".into(), super::after::swing_json(o, &s, style));
+    }
+    if let Some(r) = super::after::rolling(o, show) {
+        m.insert("rolling".into(), super::after::rolling_json(o, &r, style));
+    }
     if let Some(ode) = &o.impact.ode {
         let mut j = json!({
             "method": "tsit45",
@@ -266,7 +272,7 @@ fn mat_json(style: &Style, m: &Mat, a: bool) -> Value {
 }
 
 /// The top-level keys of the JSON report (for a scene's `[expect]`).
-pub const KEYS: [&str; 24] = [
+pub const KEYS: [&str; 26] = [
     "dim",
     "bodies",
     "point",
@@ -286,6 +292,8 @@ pub const KEYS: [&str; 24] = [
     "energy",
     "momentum",
     "tensor",
+    "swing",
+    "rolling",
     "ode",
     "physical",
     "paradox",

@@ -40,6 +40,8 @@ pub struct Show {
     pub angles: bool,
     /// Each body's dv, impulse and kinetic energy (`changes`).
     pub changes: bool,
+    /// `angles` was asked for by name: where there are none, a note says why (issue 42).
+    pub named_angles: bool,
 }
 
 impl Show {
@@ -52,6 +54,7 @@ impl Show {
             energy: false,
             angles: false,
             changes: false,
+            named_angles: false,
         }
     }
 
@@ -64,6 +67,7 @@ impl Show {
             energy: true,
             angles: true,
             changes: true,
+            named_angles: false,
         }
     }
 }
@@ -77,6 +81,7 @@ impl Default for Show {
             energy: true,
             angles: true,
             changes: false,
+            named_angles: false,
         }
     }
 }
@@ -472,16 +477,39 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
                 any = true;
             }
         }
-        // No heading without a row (every final velocity zero, or no body moving before).
+        // No heading without a row (every final velocity zero, or no body moving before),
+        // unless asked for by name.
+        if !any && show.named_angles {
+            b.row("note", "", NO_ANGLE_AT_REST);
+            any = true;
+        }
         if any {
             b.render(&mut out);
         }
+    } else if show.named_angles {
+        let mut b = Block::new("Angles");
+        b.row("note", "", no_angles(o));
+        b.render(&mut out);
     }
     if show.changes {
         changes::text(o, style, units).render(&mut out);
     }
     style.checked(out)
 }
+
+/// Why a case has no angles (`--show angles` named).
+fn no_angles(o: &Outcome) -> &'static str {
+    if o.dim < 2 {
+        "angles are between velocities in the plane or space: on a line every velocity is \
+         along it"
+    } else {
+        "angles are printed for two bodies (between v1' and v2', and each body's turn)"
+    }
+}
+
+/// Why a two-body case asked for its angles has none.
+const NO_ANGLE_AT_REST: &str =
+    "no angle: a body at rest before or after has no direction to turn from or to";
 
 /// The time-reversed event (t -> -t: every velocity negated, IN and FIN trade places, e' = 1/e).
 pub fn reverse_text(o: &Outcome, style: &Style) -> Result<String, Overflow> {
@@ -647,6 +675,8 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
             .map(|i| angle_between(&o.v_in[i], &o.fin[i]).unwrap_or(0.0))
             .collect();
         m.insert("turned_deg".into(), json!(turned));
+    } else if show.named_angles {
+        m.insert("not_shown".into(), json!({ "angles": no_angles(o) }));
     }
     if show.changes {
         m.insert("changes".into(), changes::json(o, style));
