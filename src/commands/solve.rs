@@ -5,6 +5,7 @@ use collide::line::problem::Posed;
 use collide::plot::Kind;
 use collide::report::special::Special;
 use collide::report::{AnyReport, Sections, json, solved};
+use collide::values::number::Given;
 
 use super::{Outcome, plot};
 use crate::cli::{Format, SolveArgs};
@@ -25,10 +26,14 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
                 "--show slides is for two bodies on a rail (with --friction MU, the floor's), not \
                  rigid bodies, the plane, space or more than two bodies"
             ),
-            Some(mu) if mu.exact() > collide::values::rational::Q::ZERO => {}
-            Some(mu) => anyhow::bail!(
+            Some(Given::Known(mu)) if mu.exact() > collide::values::rational::Q::ZERO => {}
+            Some(Given::Known(mu)) => anyhow::bail!(
                 "--friction {mu}: the floor's coefficient of kinetic friction must be above 0 \
                  (a frictionless floor never stops a slide)"
+            ),
+            Some(_) => anyhow::bail!(
+                "--friction ? with --show slides: give the slide whose mu is asked as a final \
+                 velocity, --fin 'slide D mu ?' (the floor's mu = f^2 / (2 g D))"
             ),
             None => anyhow::bail!(
                 "--show slides needs --friction MU, the floor's coefficient of kinetic friction"
@@ -84,7 +89,9 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         .map(|h| h.g.clone())
         .unwrap_or_default();
     sections.asked = args.knowns.asked(&units, &g);
-    sections.asked.friction = floor.map(|mu| (mu.exact(), mu.to_string()));
+    sections.asked.friction = floor
+        .and_then(Given::known)
+        .map(|mu| (mu.exact(), mu.to_string()));
     let (case, unknowns) = match &posed {
         // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
         // denominator, and a typed -e would print FIN = IN as if it were an answer.

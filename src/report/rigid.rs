@@ -25,6 +25,7 @@ use super::text::{Block, wrap};
 use super::{Section, Sections};
 
 mod json;
+pub mod solved;
 
 pub use json::{KEYS, json};
 

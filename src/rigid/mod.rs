@@ -13,12 +13,15 @@
 //!   `slip`: friction in space (an ODE in the normal impulse, diffsol); `impact`: one impact by
 //!   the law asked; `outcome`: what follows from it; `join`: the one body two joined bodies
 //!   make (`--join`);
-//! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem.
+//! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem;
+//!   `unknowns`: one value typed `?`, fixed by a given final spin or a pivot without impulse,
+//!   from the impact as a rational function of it (`interpolate`).
 
 pub mod algebra;
 pub mod body;
 pub mod homework;
 pub mod impact;
+pub mod interpolate;
 pub mod jacobian;
 pub mod join;
 pub mod laws;
@@ -28,6 +31,7 @@ pub mod routh;
 pub mod shape;
 pub mod slip;
 pub mod units;
+pub mod unknowns;
 
 /// Solves a posed problem.
 pub fn solve(problem: impact::Problem) -> Result<outcome::Outcome, impact::ImpactError> {
