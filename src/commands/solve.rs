@@ -32,8 +32,8 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
                  (a frictionless floor never stops a slide)"
             ),
             Some(_) => anyhow::bail!(
-                "--friction ? with --show slides: give the slide whose mu is asked as a final \
-                 velocity, --fin 'slide D mu ?' (the floor's mu = f^2 / (2 g D))"
+                "--friction ? with --show slides: the floor's mu is not solved for on a rail; \
+                 give it (--friction MU), or mark another value '?'"
             ),
             None => anyhow::bail!(
                 "--show slides needs --friction MU, the floor's coefficient of kinetic friction"
