@@ -630,15 +630,16 @@ pub struct RigidArgs {
     )]
     pub spin: Option<String>,
 
-    /// Coulomb friction coefficient mu >= 0 at the contact; with --show slides on a rail, the
-    /// floor's kinetic friction, which stops each body after the collision
+    /// Coulomb friction coefficient mu >= 0 at the contact, or '?' (solve); with --show slides
+    /// on a rail, the floor's kinetic friction, which stops each body after the collision
     #[arg(
         long,
         value_name = "MU",
         allow_hyphen_values = true,
+        value_parser = |s: &str| Given::parse(s, str::parse::<Number>),
         help_heading = "Rigid bodies"
     )]
-    pub friction: Option<Number>,
+    pub friction: Option<Given<Number>>,
 
     /// The restitution law with friction [default: poisson]
     #[arg(long, value_enum, help_heading = "Rigid bodies")]
@@ -668,6 +669,26 @@ pub struct RigidArgs {
         help_heading = "Rigid bodies"
     )]
     pub floor_friction: Option<Number>,
+
+    /// The final spins W1,W2 about z, counterclockwise positive ('?' or empty for one not given;
+    /// rad/s, rpm, rev/s, deg/s; plain: rad/s): a known that fixes a '?'
+    #[arg(
+        long,
+        value_name = "W1,W2",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub fin_spin: Option<String>,
+
+    /// The impulse the pivot gives the target: 0 (the centre of percussion), a known that fixes
+    /// a '?' such as --hit-at ?
+    #[arg(
+        long,
+        value_name = "0",
+        allow_hyphen_values = true,
+        help_heading = "Rigid bodies"
+    )]
+    pub pivot_impulse: Option<Number>,
 }
 
 impl RigidArgs {
@@ -688,6 +709,8 @@ impl RigidArgs {
             || self.tangential_restitution.is_some()
             || self.join
             || self.floor_friction.is_some()
+            || self.fin_spin.is_some()
+            || self.pivot_impulse.is_some()
     }
 }
 

@@ -6,12 +6,13 @@ use anyhow::Result;
 use collide::report::rigid::{self as report, RigidUnits};
 use collide::report::space::Style;
 use collide::report::{Section, Sections, json};
-use collide::rigid::homework::Homework;
+use collide::rigid::homework::{HitTyped, Homework};
 use collide::rigid::impact::{ImpactError, Problem};
 use collide::rigid::pose::{Either, LawsTyped, MassTyped};
 use collide::rigid::units::{Measure, Typed};
+use collide::rigid::unknowns::{self, Asked, Known, Unknown};
 use collide::space::typed::split_bodies;
-use collide::values::number::Number;
+use collide::values::number::{Given, Number};
 use collide::values::units::{EnergyUnit, Units};
 
 use super::Outcome;
@@ -47,9 +48,12 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
     }
     let mut show = show(&args.show)?;
     after_impact(&mut show, args)?;
-    let problem = homework(&args.case, &args.rigid, args.exact)?.pose()?;
+    let (homework, asked) = typed(&args.case, &args.rigid, args.exact)?;
+    if !asked.is_empty() {
+        return solved(&homework, &asked, &show, args);
+    }
     let (stdout, status) = report_of(
-        problem,
+        homework.pose()?,
         &show,
         args.exact,
         args.case.energy_unit,
@@ -87,8 +91,60 @@ fn after_impact(show: &mut Sections, args: &SolveArgs) -> Result<()> {
     Ok(())
 }
 
-/// The typed homework problem of the command line.
+/// A problem with a `?` (or a given final value to check): solved, then reported with its
+/// `Solved:` and `Check:` lines (JSON `solved`, `check`).
+fn solved(hw: &Homework, asked: &Asked, show: &Sections, args: &SolveArgs) -> Result<Outcome> {
+    let solution = unknowns::solve(hw, asked)?;
+    if let Some(c) = solution
+        .checks
+        .iter()
+        .find(|c| !c.approx && !c.residual.is_zero())
+    {
+        anyhow::bail!(
+            "the given {} contradicts the impact: it misses by {} (mark a value '?' to solve \
+             for it)",
+            c.name,
+            collide::values::quantity::significant(&c.residual, 15)
+        );
+    }
+    let problem = solution.problem.clone();
+    let u = units(problem.si, args.case.energy_unit)?;
+    let style = Style::new(args.exact, u.units.energy_scale());
+    let lines = report::solved::text(&solution, &style, problem.si);
+    let (out, status) = report_of(
+        problem,
+        show,
+        args.exact,
+        args.case.energy_unit,
+        args.format,
+    )?;
+    let stdout = match args.format {
+        Format::Text => lines + &out,
+        Format::Json => {
+            let mut j: serde_json::Value = serde_json::from_str(&out)?;
+            report::solved::annotate(&mut j, &solution, &style);
+            json::render(&j)
+        }
+    };
+    Ok(Outcome { stdout, status })
+}
+
+/// The typed homework problem of the command line, without unknowns (`collide plot`).
 pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homework> {
+    let (hw, asked) = typed(case, rigid, exact)?;
+    if let Some(u) = asked.unknowns.first() {
+        anyhow::bail!(
+            "{} = ?: solve it first (collide solve), then give its value",
+            u.name()
+        );
+    }
+    Ok(hw)
+}
+
+/// The typed homework problem of the command line, a `?` holding `1` in its place, and what
+/// it asks: its unknowns and the final values given (`--fin-spin`, `--pivot-impulse`).
+pub fn typed(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<(Homework, Asked)> {
+    let mut asked = Asked::default();
     let Some(masses) = &case.masses else {
         anyhow::bail!("give --masses M1,M2 (the ball, then the target, a wall or a floor)");
     };
@@ -108,8 +164,24 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
             masses.text
         );
     };
-    let masses = [MassTyped::parse(m1, "mass")?, MassTyped::parse(m2, "mass")?];
-    let v = two(&case.velocities.text, "--velocities")?;
+    let mut mass = |i: usize, text: &str| -> Result<MassTyped> {
+        let text = match unknowns::placeholder(text, "--masses")? {
+            Some(t) => {
+                asked.unknowns.push(Unknown::Mass(i));
+                t
+            }
+            None => text.to_string(),
+        };
+        Ok(MassTyped::parse(&text, "mass")?)
+    };
+    let masses = [mass(0, m1)?, mass(1, m2)?];
+    let mut v = two(&case.velocities.text, "--velocities")?;
+    for (i, t) in v.iter_mut().enumerate() {
+        if let Some(p) = unknowns::placeholder(t, "--velocities")? {
+            asked.unknowns.push(Unknown::Speed(i));
+            *t = p;
+        }
+    }
     let velocity = |i: usize| -> Result<Option<Either>> {
         v.get(i)
             .map(|t| Either::parse(t, Measure::Velocity, "velocity"))
@@ -134,12 +206,25 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
     }
     let restitution = match &case.restitution {
         None => Number::from_f64(1.0)?,
-        Some(collide::values::number::Given::Known(r)) => r.number().clone(),
-        Some(_) => anyhow::bail!(
-            "-e ?: rigid impacts solve forward only: give the restitution (e in [0, 1])"
-        ),
+        Some(Given::Known(r)) => r.number().clone(),
+        Some(_) => {
+            asked.unknowns.push(Unknown::Restitution);
+            Number::from_f64(0.5)?
+        }
     };
-    Ok(Homework {
+    let friction = match &rigid.friction {
+        None => None,
+        Some(Given::Known(mu)) => Some(mu.clone()),
+        Some(_) => {
+            asked.unknowns.push(Unknown::Friction);
+            Some(Number::from_f64(0.5)?)
+        }
+    };
+    if matches!(rigid.hit_at, Some(HitTyped::Unknown)) {
+        asked.unknowns.push(Unknown::HitAt);
+    }
+    asked.knowns = knowns(rigid)?;
+    let homework = Homework {
         masses,
         velocities: [velocity(0)?, velocity(1)?],
         spins: [spin(0)?, spin(1)?],
@@ -149,7 +234,7 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
         hit_at: rigid.hit_at.clone(),
         laws: LawsTyped {
             restitution,
-            friction: rigid.friction.clone(),
+            friction,
             law: rigid.law,
             tangential_restitution: rigid.tangential_restitution.clone(),
             join: rigid.join,
@@ -157,7 +242,43 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
         exact,
         // The homework shapes are in the plane: no ODE (a scene's `tol` sets it in space).
         rtol: None,
-    })
+    };
+    Ok((homework, asked))
+}
+
+/// The final values given: `--fin-spin 'W1,W2'` (`?` or empty for a spin not given; a plain
+/// number is in rad/s) and `--pivot-impulse 0`.
+fn knowns(rigid: &RigidArgs) -> Result<Vec<Known>> {
+    let mut out = Vec::new();
+    if let Some(text) = &rigid.fin_spin {
+        let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+        if parts.len() > 2 {
+            anyhow::bail!("--fin-spin '{text}': give one or two spins 'W1,W2' (empty for none)");
+        }
+        for (i, t) in parts.into_iter().enumerate() {
+            if t.is_empty() || t == "?" {
+                continue;
+            }
+            let mut spin = Typed::parse(t, Measure::Spin, "--fin-spin")?;
+            if spin.unit.is_none() {
+                spin = Typed::parse(&format!("{t} rad/s"), Measure::Spin, "--fin-spin")?;
+            }
+            out.push(Known::Spin(i, spin));
+        }
+        if out.is_empty() {
+            anyhow::bail!("--fin-spin '{text}': no spin given (empty or '?' for both bodies)");
+        }
+    }
+    if let Some(p) = &rigid.pivot_impulse {
+        if p.value() != 0.0 {
+            anyhow::bail!(
+                "--pivot-impulse {p}: only 0 is solved for (the pivot feels nothing: the centre \
+                 of percussion)"
+            );
+        }
+        out.push(Known::PivotImpulseZero);
+    }
+    Ok(out)
 }
 
 /// The units of a posed problem: SI when it had any unit.

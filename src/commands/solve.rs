@@ -6,6 +6,7 @@ use collide::plot::Kind;
 use collide::report::not_shown::{self, Event};
 use collide::report::special::Special;
 use collide::report::{AnyReport, Sections, json, solved};
+use collide::values::number::Given;
 
 use super::{Outcome, plot};
 use crate::cli::{Format, SolveArgs};
@@ -26,10 +27,14 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
                 "--show slides is for two bodies on a rail (with --friction MU, the floor's), not \
                  rigid bodies, the plane, space or more than two bodies"
             ),
-            Some(mu) if mu.exact() > collide::values::rational::Q::ZERO => {}
-            Some(mu) => anyhow::bail!(
+            Some(Given::Known(mu)) if mu.exact() > collide::values::rational::Q::ZERO => {}
+            Some(Given::Known(mu)) => anyhow::bail!(
                 "--friction {mu}: the floor's coefficient of kinetic friction must be above 0 \
                  (a frictionless floor never stops a slide)"
+            ),
+            Some(_) => anyhow::bail!(
+                "--friction ? with --show slides: the floor's mu is not solved for on a rail; \
+                 give it (--friction MU), or mark another value '?'"
             ),
             None => anyhow::bail!(
                 "--show slides needs --friction MU, the floor's coefficient of kinetic friction"
@@ -85,7 +90,9 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         .map(|h| h.g.clone())
         .unwrap_or_default();
     sections.asked = args.knowns.asked(&units, &g);
-    sections.asked.friction = floor.map(|mu| (mu.exact(), mu.to_string()));
+    sections.asked.friction = floor
+        .and_then(Given::known)
+        .map(|mu| (mu.exact(), mu.to_string()));
     let (case, unknowns) = match &posed {
         // Bodies that start together are pushed apart: e = (v2' - v1') / (v1 - v2) has no
         // denominator, and a typed -e would print FIN = IN as if it were an answer.

@@ -26,6 +26,7 @@ use super::{Section, Sections};
 
 pub mod after;
 mod json;
+pub mod solved;
 
 pub use json::{KEYS, json};
 

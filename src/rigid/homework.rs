@@ -52,6 +52,9 @@ pub enum HitTyped {
     /// The top end (away from an end pivot).
     End,
     At(Typed),
+    /// `?`: solved for (`unknowns`), which puts a value in its place before the problem is
+    /// laid out.
+    Unknown,
 }
 
 impl std::str::FromStr for HitTyped {
@@ -59,6 +62,7 @@ impl std::str::FromStr for HitTyped {
     fn from_str(s: &str) -> Result<HitTyped, Self::Err> {
         match s.trim().to_ascii_lowercase().as_str() {
             "end" | "tip" => Ok(HitTyped::End),
+            "?" => Ok(HitTyped::Unknown),
             _ => Typed::parse(s, super::units::Measure::Length, "--hit-at").map(HitTyped::At),
         }
     }
@@ -119,6 +123,8 @@ pub enum HomeworkError {
     JoinBall,
     #[error("--join makes two bodies one; a {0} does not move: give the body hit with --target")]
     JoinWall(&'static str),
+    #[error("--hit-at ?: give a final value that fixes it (--fin-spin, --pivot-impulse 0)")]
+    HitUnknown,
     #[error(
         "a target spins with the second value of --spin, and a pivoted one does not slide: give it no velocity"
     )]
@@ -130,7 +136,8 @@ fn f(q: &Q) -> String {
 }
 
 impl Homework {
-    fn has_unit(&self) -> bool {
+    /// Whether any value carries a unit (then the case is in SI).
+    pub fn has_unit(&self) -> bool {
         let mass = |m: &MassTyped| matches!(m, MassTyped::Mass(t) if t.unit.is_some());
         let either = |e: &Option<Either>| {
             e.as_ref().is_some_and(|e| match e {
@@ -150,6 +157,9 @@ impl Homework {
 
     /// The problem, laid out.
     pub fn pose(&self) -> Result<Problem, HomeworkError> {
+        if matches!(self.hit_at, Some(HitTyped::Unknown)) {
+            return Err(HomeworkError::HitUnknown);
+        }
         if self
             .velocities
             .iter()
@@ -273,6 +283,7 @@ impl Homework {
                             return Err(HomeworkError::RoundHitEnd(shape.kind.name()));
                         }
                         Some(HitTyped::At(t)) => r.one(t)?,
+                        Some(HitTyped::Unknown) => return Err(HomeworkError::HitUnknown),
                     };
                     let rad = shape.radius();
                     if b.clone().abs() > rad {
@@ -309,6 +320,7 @@ impl Homework {
                         (Some(HitTyped::End), _) => half.clone(),
                         (Some(HitTyped::At(t)), Some(p)) => &p[1] + r.one(t)?,
                         (Some(HitTyped::At(t)), None) => r.one(t)?,
+                        (Some(HitTyped::Unknown), _) => return Err(HomeworkError::HitUnknown),
                         (None, Some(_)) => return Err(HomeworkError::HitNeeded),
                         (None, None) => Q::ZERO,
                     };

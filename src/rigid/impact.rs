@@ -84,6 +84,15 @@ pub enum ImpactError {
 }
 
 impl Problem {
+    /// The law's name as reports print it: `join` for bodies that join (`--join` sets `e = 0`
+    /// and no slip, so no restitution law is used), else the restitution law's.
+    pub fn law_name(&self) -> &'static str {
+        match self.tangential {
+            Tangential::Join => "join",
+            _ => self.law.name(),
+        }
+    }
+
     /// The relative velocity at the contact before.
     pub fn w(&self) -> Vec<Q> {
         self.pair.relative_velocity(&self.motions)

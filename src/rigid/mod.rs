@@ -14,12 +14,15 @@
 //!   the law asked; `outcome`: what follows from it; `join`: the one body two joined bodies
 //!   make (`--join`); `swing`, `rolling`: what follows it (a body on a pivot swings up under
 //!   gravity, a ball sliding on the floor starts to roll);
-//! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem.
+//! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem;
+//!   `unknowns`: one value typed `?`, fixed by a given final spin or a pivot without impulse,
+//!   from the impact as a rational function of it (`interpolate`).
 
 pub mod algebra;
 pub mod body;
 pub mod homework;
 pub mod impact;
+pub mod interpolate;
 pub mod jacobian;
 pub mod join;
 pub mod laws;
@@ -31,6 +34,7 @@ pub mod shape;
 pub mod slip;
 pub mod swing;
 pub mod units;
+pub mod unknowns;
 
 /// Solves a posed problem.
 pub fn solve(problem: impact::Problem) -> Result<outcome::Outcome, impact::ImpactError> {

@@ -35,6 +35,7 @@ mod rigid_friction;
 mod rigid_join;
 mod rigid_ode;
 mod rigid_symmetry;
+mod rigid_unknowns;
 mod shell;
 mod stages;
 mod sweeps;

@@ -43,6 +43,8 @@ fn a_bullet_along_a_tangent_joins_a_disk_on_its_axle() {
     // omega' = -m v R / (I_p + m R^2) = -(1/2) / (801/2000) = -1000/801 = -1.2484 rad/s.
     let j = disk(true);
     assert_eq!(j["contact"], "joined");
+    // No restitution law is used: the JSON names the join (issue 42: it said "poisson").
+    assert_eq!(j["law"], "join");
     let joined = &j["joined"];
     assert_eq!(q(&joined["omega"]), ratio(-1000, 801));
     assert_eq!(q(&j["fin"][1]["omega"]), ratio(-1000, 801));

@@ -88,7 +88,7 @@ pub fn json(
         }
         Tangential::Join => {}
     }
-    m.insert("law".into(), json!(p.law.name()));
+    m.insert("law".into(), json!(p.law_name()));
     m.insert("contact".into(), json!(o.impact.mode.name()));
     let motions = |ms: &[Motion; 2]| -> Value {
         Value::Array(ms.iter().map(|x| motion_json(style, x, a)).collect())

@@ -1,0 +1,729 @@
+//! Unknowns in rigid problems (issue 42 section 2): one value typed `?` (a speed, `-v '? @
+//! -30deg,0'`; a mass; the hit point, `--hit-at ?`; `e`; mu, `--friction ?`), fixed by one
+//! given final value: a body's final spin (`--fin-spin`) or a pivot that feels no impulse
+//! (`--pivot-impulse 0`, the centre of percussion).
+//!
+//! The impact is solved exactly at sample values of the unknown, and the given quantity is a
+//! rational function of it (`interpolate`): without friction `P = (1 + e) (n.w)/(n.K.n) n`, and
+//! for bodies that join `P = K^-1 w`, so a final spin is affine in a speed or in `e`, and
+//! rational in a mass or in the hit point (`omega' = m v d / (I_p + m d^2)` for a bullet that
+//! lodges; the pivot's impulse `P (3d/(2L) - 1)` of a rod on its end). The unknown is a root
+//! of that function's numerator in the unknown's range; each root is checked by solving the
+//! impact again with it (the residual), and there must be exactly one. With Coulomb friction
+//! the impact is piecewise (Routh's phases): mu is found where the contact slides throughout
+//! (`P_t = mu P_n`, rational in mu); a given state the contact reaches only by sticking is
+//! reached by every mu from the one at which the slip just stops, and that range is the
+//! answer (`mu >= X`).
+
+use num_traits::{Signed, Zero};
+
+use crate::values::number::Number;
+use crate::values::quantity::fraction;
+use crate::values::rational::{Q, from_f64, int, pow2, to_f64};
+
+use super::algebra::dot;
+use super::homework::{HitTyped, Homework};
+use super::impact::{ImpactError, Problem};
+use super::interpolate::{self, Poly, Root, Roots};
+use super::laws::Mode;
+use super::outcome::Outcome;
+use super::pose::{Either, MassTyped, Resolver};
+use super::units::{Measure, Typed};
+
+/// What a rigid problem may leave unknown (`?`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unknown {
+    /// Body `i`'s speed: `?` along x (signed), or the size of `? @ angle` (>= 0).
+    Speed(usize),
+    Mass(usize),
+    /// `--hit-at ?`: the distance from the pivot (from the centre when free).
+    HitAt,
+    Restitution,
+    Friction,
+}
+
+impl Unknown {
+    /// The name printed: `v1`, `m2`, `hit_at`, `e`, `mu`.
+    pub fn name(self) -> String {
+        match self {
+            Unknown::Speed(i) => format!("v{}", i + 1),
+            Unknown::Mass(i) => format!("m{}", i + 1),
+            Unknown::HitAt => "hit_at".into(),
+            Unknown::Restitution => "e".into(),
+            Unknown::Friction => "mu".into(),
+        }
+    }
+
+    /// What it measures (`None`: a pure number).
+    pub fn measure(self) -> Option<Measure> {
+        match self {
+            Unknown::Speed(_) => Some(Measure::Velocity),
+            Unknown::Mass(_) => Some(Measure::Mass),
+            Unknown::HitAt => Some(Measure::Length),
+            Unknown::Restitution | Unknown::Friction => None,
+        }
+    }
+}
+
+/// A final value the problem gives.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Known {
+    /// Body `i`'s final spin (`--fin-spin`), counterclockwise positive.
+    Spin(usize, Typed),
+    /// The pivot gives its body no impulse (`--pivot-impulse 0`).
+    PivotImpulseZero,
+}
+
+impl Known {
+    /// The name printed: `omega2'`, `pivot impulse`.
+    pub fn name(&self) -> String {
+        match self {
+            Known::Spin(i, _) => format!("omega{}'", i + 1),
+            Known::PivotImpulseZero => "the pivot's impulse".into(),
+        }
+    }
+}
+
+/// The unknowns and the final values of a problem.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Asked {
+    pub unknowns: Vec<Unknown>,
+    pub knowns: Vec<Known>,
+}
+
+impl Asked {
+    pub fn is_empty(&self) -> bool {
+        self.unknowns.is_empty() && self.knowns.is_empty()
+    }
+}
+
+/// A value typed with `?`: the same text with `1` in its place (`? @ -30deg` is `1 @ -30deg`,
+/// `? kg` is `1 kg`); `None` when it has no `?`.
+pub fn placeholder(text: &str, what: &'static str) -> Result<Option<String>, UnknownError> {
+    let t = text.trim();
+    if !t.contains('?') {
+        return Ok(None);
+    }
+    match t.strip_prefix('?') {
+        Some(rest) if !rest.contains('?') => Ok(Some(format!("1{rest}"))),
+        _ => Err(UnknownError::Where(what, t.to_string())),
+    }
+}
+
+/// Why the unknown cannot be solved for.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum UnknownError {
+    #[error(
+        "{0} '{1}': '?' stands for a whole value or a size along a direction ('? @ -30deg', \
+         '? kg'), not for a component"
+    )]
+    Where(&'static str, String),
+    #[error(
+        "{count} unknowns ({names}) and {knowns} given final value{}: give {more} more known \
+         value{} (a rigid impact solves one unknown from one final value)",
+        if *.knowns == 1 { "" } else { "s" },
+        if *.more == 1 { "" } else { "s" }
+    )]
+    TooMany {
+        count: usize,
+        names: String,
+        knowns: usize,
+        more: usize,
+    },
+    #[error(
+        "{0} = ?: nothing fixes it: give 1 more known value, a final spin (--fin-spin 'W1,W2') \
+         or --pivot-impulse 0"
+    )]
+    NoKnown(String),
+    #[error("--pivot-impulse 0 needs a pivoted target (--pivot end, centre or '(x,y)')")]
+    NoPivot,
+    #[error("--fin-spin: body {0} is a {1} and has no spin of its own: give the target's")]
+    NoSpin(usize, &'static str),
+    #[error(
+        "{0} ?: with friction (--friction MU) the impact is piecewise (Routh's phases): only mu \
+         can be the unknown; drop --friction, or give {0}"
+    )]
+    WithFriction(String),
+    #[error(
+        "--hit-at ? on a round target: the contact point sqrt(R^2 - b^2) is not rational in b; \
+         give the impact parameter b"
+    )]
+    Round,
+    #[error("{0} ?: {1}")]
+    Impossible(String, String),
+    #[error("no value fits: {0}")]
+    None(String),
+    #[error("more than one value fits: {0}; give another known to choose")]
+    Many(String),
+    #[error(
+        "--exact: {0} = {1} is irrational (a root of a quadratic), and exact arithmetic holds \
+         rationals only: drop --exact"
+    )]
+    Irrational(String, String),
+    #[error("{0}")]
+    Pose(String),
+}
+
+/// What was solved: the unknown's value (in the case's units), or for mu where the contact
+/// sticks the least value (`at_least`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Value {
+    pub unknown: Unknown,
+    pub value: Q,
+    /// Not rational, or from binary64 input: held to 40 digits, or binary64.
+    pub approx: bool,
+    /// `mu >= value`: every friction from it on gives this FIN (the contact sticks).
+    pub at_least: bool,
+}
+
+/// A given final value against the impact solved with the unknown in place.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Check {
+    pub name: String,
+    pub given: Q,
+    /// The impact's value less the given one (a vector's size for the pivot's impulse).
+    pub residual: Q,
+    /// The residual is a rounding, not exactly 0.
+    pub approx: bool,
+}
+
+/// A problem with its unknown solved.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution {
+    /// The problem with the value in place, to report.
+    pub problem: Problem,
+    pub value: Option<Value>,
+    pub checks: Vec<Check>,
+}
+
+/// The unknown's value as a typed number in the case's units (SI when it has any).
+fn number(x: &Q) -> Option<Number> {
+    Number::solved(&fraction(x)).ok()
+}
+
+/// The homework with `x` for the unknown (`None` when `x` is not a binary64 number).
+pub fn with(hw: &Homework, u: Unknown, x: &Q, si: bool) -> Option<Homework> {
+    let n = number(x)?;
+    let unit = match (u.measure(), si) {
+        (Some(m), true) => {
+            Typed::parse(&format!("1 {}", m.si_name()), m, "")
+                .ok()?
+                .unit
+        }
+        _ => None,
+    };
+    let set = |t: &mut Typed| {
+        t.number = n.clone();
+        t.unit = unit;
+    };
+    let mut h = hw.clone();
+    match u {
+        Unknown::Speed(i) => match h.velocities[i].as_mut()? {
+            Either::One(t) => set(t),
+            Either::Vector(v) => {
+                v.parts = vec![n.clone()];
+                v.unit = unit;
+            }
+        },
+        Unknown::Mass(i) => match &mut h.masses[i] {
+            MassTyped::Mass(t) => set(t),
+            MassTyped::Immovable(_) => return None,
+        },
+        Unknown::HitAt => {
+            let mut t = Typed::parse("0", Measure::Length, "--hit-at").ok()?;
+            set(&mut t);
+            h.hit_at = Some(HitTyped::At(t));
+        }
+        Unknown::Restitution => h.laws.restitution = n,
+        Unknown::Friction => h.laws.friction = Some(n),
+    }
+    Some(h)
+}
+
+/// The problem with `x` in place. A speed scales the velocity of size 1 laid out (`1 @
+/// -30deg`), exactly: laid out again, the components of `x @ -30deg` would be rounded to
+/// binary64, and the impact would not be rational in `x`.
+pub fn problem_at(hw: &Homework, u: Unknown, x: &Q, si: bool) -> Result<Problem, String> {
+    let at = match u {
+        Unknown::Speed(_) => Q::ONE,
+        _ => x.clone(),
+    };
+    let h = with(hw, u, &at, si).ok_or_else(|| "not a binary64 number".to_string())?;
+    let mut problem = h.pose().map_err(|e| e.to_string())?;
+    if let Unknown::Speed(i) = u {
+        let v = &mut problem.motions[i].v;
+        *v = super::algebra::scale(v, x);
+    }
+    Ok(problem)
+}
+
+/// The impact with `x` in place.
+fn outcome(hw: &Homework, u: Unknown, x: &Q, si: bool) -> Result<Outcome, String> {
+    let problem = problem_at(hw, u, x, si)?;
+    super::solve(problem).map_err(|e| match e {
+        ImpactError::NotApproaching(_) => "the bodies do not approach at the contact".into(),
+        e => e.to_string(),
+    })
+}
+
+/// A given value, resolved in the case's units.
+struct Given {
+    known: Known,
+    value: Q,
+    approx: bool,
+}
+
+impl Given {
+    /// The impact's value less the given one, per component.
+    fn residual(&self, o: &Outcome) -> Result<Vec<Q>, UnknownError> {
+        match &self.known {
+            Known::Spin(i, _) => {
+                let body = &o.bodies()[*i];
+                if let Some(word) = body.immovable() {
+                    return Err(UnknownError::NoSpin(i + 1, word));
+                }
+                if body.inertia().is_none() && body.pivot().is_none() {
+                    return Err(UnknownError::NoSpin(i + 1, "point particle"));
+                }
+                Ok(vec![&o.fin[*i].omega[0] - &self.value])
+            }
+            Known::PivotImpulseZero => o
+                .pivot_impulses()
+                .into_iter()
+                .flatten()
+                .next()
+                .ok_or(UnknownError::NoPivot),
+        }
+    }
+
+    /// `omega2' = -10` (in the case's units).
+    fn text(&self) -> String {
+        format!(
+            "{} = {}",
+            self.known.name(),
+            crate::values::quantity::significant(&self.value, 15)
+        )
+    }
+
+    /// The size residuals are measured against: the given value, the spins, or the impulse.
+    fn scale(&self, o: &Outcome) -> Q {
+        let big = |a: Q, b: Q| if b.clone().abs() > a { b.abs() } else { a };
+        match &self.known {
+            Known::Spin(i, _) => big(
+                big(self.value.clone().abs(), o.fin[*i].omega[0].clone()),
+                o.v_in()[*i].omega[0].clone(),
+            ),
+            Known::PivotImpulseZero => o.impact.impulse.iter().cloned().fold(Q::ZERO, big),
+        }
+    }
+}
+
+/// The range of the unknown: `(lo, hi)`, `None` for no bound.
+type Range = (Option<Q>, Option<Q>);
+
+/// Solves for the one unknown of `hw` from the given final values (the first fixes it, the
+/// others are checked); with no unknown, the given values are checked.
+pub fn solve(hw: &Homework, asked: &Asked) -> Result<Solution, UnknownError> {
+    let si = hw.has_unit();
+    let r = Resolver::new(si, hw.exact);
+    let mut given = Vec::new();
+    for k in &asked.knowns {
+        let (value, approx) = match k {
+            Known::Spin(_, t) => {
+                let v = r.one(t).map_err(|e| UnknownError::Pose(e.to_string()))?;
+                (v, r.rounded())
+            }
+            Known::PivotImpulseZero => (Q::ZERO, false),
+        };
+        given.push(Given {
+            known: k.clone(),
+            value,
+            approx,
+        });
+    }
+    let unknown = match (asked.unknowns.as_slice(), given.len()) {
+        ([], _) => None,
+        ([u], 0) => return Err(UnknownError::NoKnown(u.name())),
+        ([u], _) => Some(*u),
+        (many, k) => {
+            return Err(UnknownError::TooMany {
+                count: many.len(),
+                names: many.iter().map(|u| u.name()).collect::<Vec<_>>().join(", "),
+                knowns: k,
+                more: many.len().saturating_sub(k).max(1),
+            });
+        }
+    };
+    let Some(u) = unknown else {
+        let problem = hw.pose().map_err(|e| UnknownError::Pose(e.to_string()))?;
+        let o = super::solve(problem).map_err(|e| UnknownError::Pose(e.to_string()))?;
+        return Ok(Solution {
+            problem: o.problem.clone(),
+            value: None,
+            checks: checks(&o, &given, false)?,
+        });
+    };
+    let friction = matches!(&hw.laws.friction, Some(m) if m.value() != 0.0);
+    if friction && u != Unknown::Friction {
+        return Err(UnknownError::WithFriction(u.name()));
+    }
+    let (value, o) = if u == Unknown::Friction {
+        friction_of(hw, &given[0], si)?
+    } else {
+        rational(hw, u, &given[0], si)?
+    };
+    let approx = value.approx || !hw.exact;
+    Ok(Solution {
+        problem: o.problem.clone(),
+        checks: checks(&o, &given, approx)?,
+        value: Some(value),
+    })
+}
+
+/// Each given value against the impact.
+fn checks(o: &Outcome, given: &[Given], approx: bool) -> Result<Vec<Check>, UnknownError> {
+    given
+        .iter()
+        .map(|g| {
+            let res = g.residual(o)?;
+            let residual = match res.as_slice() {
+                [one] => one.clone(),
+                many => crate::values::quantity::sqrt(&dot(many, many), 40),
+            };
+            Ok(Check {
+                name: g.known.name(),
+                given: g.value.clone(),
+                residual,
+                approx: approx || g.approx || o.approx(),
+            })
+        })
+        .collect()
+}
+
+/// Whether a residual is zero: exactly, or within 1e-9 of the scale when any value is rounded.
+fn holds(res: &[Q], scale: &Q, approx: bool) -> bool {
+    if !approx {
+        return res.iter().all(Zero::is_zero);
+    }
+    let tol = scale * from_f64(1e-9);
+    res.iter().all(|r| r.clone().abs() <= tol)
+}
+
+/// Samples of the unknown in its range, binary64 numbers (so each is used as it is).
+fn candidates(u: Unknown, range: &Range) -> Vec<Q> {
+    let b64 = |q: Q| to_f64(&q).map_or(q, from_f64);
+    match range {
+        (Some(lo), Some(hi)) => (0..=16)
+            .map(|k| b64(lo + (hi - lo) * int(k) / int(16)))
+            .filter(|x| u == Unknown::Restitution || (x > lo && x < hi))
+            .collect(),
+        (lo, _) => {
+            let mut out = Vec::new();
+            for scale in [0isize, 10, -10, 20, -20] {
+                for k in 1..=16 {
+                    out.push(pow2(scale) * int(k));
+                    if lo.is_none() {
+                        out.push(-(pow2(scale) * int(k)));
+                    }
+                }
+            }
+            out
+        }
+    }
+}
+
+/// The unknown's range: a size along a direction, a mass, mu >= 0; e in [0, 1]; the hit point
+/// on the target.
+fn range(hw: &Homework, u: Unknown, si: bool) -> Result<Range, UnknownError> {
+    Ok(match u {
+        Unknown::Speed(i) => match &hw.velocities[i] {
+            Some(Either::Vector(v)) if v.angle.is_some() => (Some(Q::ZERO), None),
+            _ => (None, None),
+        },
+        Unknown::Mass(_) | Unknown::Friction => (Some(Q::ZERO), None),
+        Unknown::Restitution => (Some(Q::ZERO), Some(Q::ONE)),
+        Unknown::HitAt => {
+            let pose = |h: Option<HitTyped>| {
+                let mut t = hw.clone();
+                t.hit_at = h;
+                t.pose().map_err(|e| UnknownError::Pose(e.to_string()))
+            };
+            let top = pose(Some(HitTyped::End)).map_err(|_| UnknownError::Round)?;
+            let zero = Typed::parse(if si { "0 m" } else { "0" }, Measure::Length, "--hit-at")
+                .map_err(|e| UnknownError::Pose(e.to_string()))?;
+            let base = pose(Some(HitTyped::At(zero)))?;
+            let half = top.pair.contact.point[1].clone();
+            let y0 = base.pair.contact.point[1].clone();
+            (Some(-&half - &y0), Some(half - y0))
+        }
+    })
+}
+
+/// The unknown where the given value is a rational function of it (no friction).
+fn rational(
+    hw: &Homework,
+    u: Unknown,
+    given: &Given,
+    si: bool,
+) -> Result<(Value, Outcome), UnknownError> {
+    let range = range(hw, u, si)?;
+    let mut samples: Vec<(Q, Vec<Q>)> = Vec::new();
+    for x in candidates(u, &range) {
+        if let Ok(o) = outcome(hw, u, &x, si) {
+            samples.push((x, given.residual(&o)?));
+        }
+        if samples.len() == interpolate::SAMPLES {
+            break;
+        }
+    }
+    let found = roots_of(&samples, u, &range)?;
+    pick(hw, u, given, si, &range, found, |_| true)
+}
+
+/// The roots of the residual's first component that is not zero for every value, over the
+/// whole line (the range is checked after).
+fn roots_of(samples: &[(Q, Vec<Q>)], u: Unknown, range: &Range) -> Result<Vec<Root>, UnknownError> {
+    let parts = samples.first().map_or(0, |(_, r)| r.len());
+    for c in 0..parts {
+        let points: Vec<(Q, Q)> = samples
+            .iter()
+            .map(|(x, r)| (x.clone(), r[c].clone()))
+            .collect();
+        let Some((n, _)) = interpolate::fit(&points) else {
+            return Err(UnknownError::Pose(format!(
+                "{} ?: the impact could not be solved at enough values of it to find it",
+                u.name()
+            )));
+        };
+        if let Some(found) = line_roots(&n, range) {
+            return Ok(found);
+        }
+    }
+    Err(UnknownError::Many(format!(
+        "every {} gives the same value (the given one)",
+        u.name()
+    )))
+}
+
+/// The real roots of `n` over the whole line, or within a bounded range (`None`: `n` is 0).
+fn line_roots(n: &Poly, range: &Range) -> Option<Vec<Root>> {
+    let b = interpolate::root_bound(n);
+    let lo = match &range.0 {
+        Some(lo) if range.1.is_some() => lo.clone(),
+        _ => -b.clone(),
+    };
+    let hi = range.1.clone().unwrap_or(b);
+    match interpolate::roots(n, &lo, &hi) {
+        Roots::All => None,
+        Roots::Some(r) => Some(r),
+    }
+}
+
+/// The one root in the range whose impact gives the given value (`accept` filters the
+/// impacts, e.g. a contact that slides throughout).
+fn pick(
+    hw: &Homework,
+    u: Unknown,
+    given: &Given,
+    si: bool,
+    range: &Range,
+    found: Vec<Root>,
+    accept: impl Fn(&Outcome) -> bool,
+) -> Result<(Value, Outcome), UnknownError> {
+    let unit = unit_of(u, si);
+    let show = |x: &Q| {
+        format!(
+            "{} = {}{unit}",
+            u.name(),
+            crate::values::quantity::significant(x, 15)
+        )
+    };
+    let inside = |x: &Q| {
+        range.0.as_ref().is_none_or(|lo| x >= lo) && range.1.as_ref().is_none_or(|hi| x <= hi)
+    };
+    let mut fits = Vec::new();
+    let mut why = Vec::new();
+    for root in found {
+        if !inside(&root.x) {
+            why.push(format!(
+                "{} is out of its range ({})",
+                show(&root.x),
+                range_text(u, range)
+            ));
+            continue;
+        }
+        if hw.exact && !root.exact {
+            return Err(UnknownError::Irrational(
+                u.name(),
+                crate::values::quantity::significant(&root.x, 15),
+            ));
+        }
+        // As the impact uses it: binary64 input is rounded to binary64.
+        let x = if hw.exact {
+            root.x.clone()
+        } else {
+            to_f64(&root.x).map_or(root.x.clone(), from_f64)
+        };
+        match outcome(hw, u, &x, si) {
+            Ok(o) => {
+                let res = given.residual(&o)?;
+                let approx = !root.exact || !hw.exact || given.approx || o.approx();
+                if accept(&o) && holds(&res, &given.scale(&o), approx) {
+                    fits.push((
+                        Value {
+                            unknown: u,
+                            value: x,
+                            approx: !root.exact || o.approx(),
+                            at_least: false,
+                        },
+                        o,
+                    ));
+                } else {
+                    why.push(format!("{} does not give it", show(&x)));
+                }
+            }
+            Err(e) => why.push(format!("{} makes no impact: {e}", show(&x))),
+        }
+    }
+    match fits.len() {
+        1 => Ok(fits.remove(0)),
+        0 if why.is_empty() => Err(UnknownError::None(format!(
+            "no {} gives {}",
+            u.name(),
+            given.text()
+        ))),
+        0 => Err(UnknownError::Impossible(u.name(), why.join("; "))),
+        _ => Err(UnknownError::Many(
+            fits.iter()
+                .map(|(v, _)| show(&v.value))
+                .collect::<Vec<_>>()
+                .join(" and "),
+        )),
+    }
+}
+
+/// ` m/s` after a value in SI, or nothing.
+fn unit_of(u: Unknown, si: bool) -> String {
+    match (u.measure(), si) {
+        (Some(m), true) => format!(" {}", m.si_name()),
+        _ => String::new(),
+    }
+}
+
+fn range_text(u: Unknown, range: &Range) -> String {
+    match (u, range) {
+        (Unknown::Speed(_), (Some(_), None)) => {
+            "a size along a direction is >= 0; spins are counterclockwise positive: a spin of \
+             the other sign?"
+                .into()
+        }
+        (_, (Some(lo), Some(hi))) => format!(
+            "{} to {}",
+            crate::values::quantity::significant(lo, 15),
+            crate::values::quantity::significant(hi, 15)
+        ),
+        (_, (Some(_), None)) => "it is > 0".into(),
+        _ => "any".into(),
+    }
+}
+
+/// mu: where the contact slides throughout, the given value is rational in mu; a given value
+/// only sticking reaches holds for every mu from the one at which the slip just stops.
+fn friction_of(hw: &Homework, given: &Given, si: bool) -> Result<(Value, Outcome), UnknownError> {
+    let range: Range = (Some(Q::ZERO), None);
+    let mut slides: Vec<(Q, Vec<Q>, Q)> = Vec::new();
+    for k in 1..=60 {
+        let mu = pow2(-k);
+        if let Ok(o) = outcome(hw, Unknown::Friction, &mu, si)
+            && o.impact.mode == Mode::Slip
+        {
+            let slip = final_slip(&o);
+            slides.push((mu, given.residual(&o)?, slip));
+        }
+        if slides.len() == interpolate::SAMPLES {
+            break;
+        }
+    }
+    if slides.len() == interpolate::SAMPLES {
+        let samples: Vec<(Q, Vec<Q>)> = slides
+            .iter()
+            .map(|(m, r, _)| (m.clone(), r.clone()))
+            .collect();
+        let found = roots_of(&samples, Unknown::Friction, &range).unwrap_or_default();
+        // mu = 0 is the smooth contact.
+        let sliding = |o: &Outcome| matches!(o.impact.mode, Mode::Slip | Mode::Smooth);
+        if let Ok(v) = pick(hw, Unknown::Friction, given, si, &range, found, sliding) {
+            return Ok(v);
+        }
+    }
+    // Sticking: the given value is the one every large mu gives.
+    let big = pow2(30);
+    let stuck = outcome(hw, Unknown::Friction, &big, si)
+        .map_err(|e| UnknownError::Impossible("mu".into(), e))?;
+    let approx = !hw.exact || given.approx || stuck.approx();
+    if !holds(&given.residual(&stuck)?, &given.scale(&stuck), approx) {
+        return Err(UnknownError::None(format!(
+            "no mu gives {}: sliding throughout gives other values, and sticking gives {}",
+            given.text(),
+            crate::values::quantity::significant(&(&given.residual(&stuck)?[0] + &given.value), 15)
+        )));
+    }
+    if slides.len() < interpolate::SAMPLES {
+        return Err(UnknownError::Many(
+            "the contact does not slide, so friction plays no part: mu is not determined".into(),
+        ));
+    }
+    // The least mu that sticks: where the slip after, rational in mu while it slides, is 0.
+    let points: Vec<(Q, Q)> = slides
+        .iter()
+        .map(|(m, _, s)| (m.clone(), s.clone()))
+        .collect();
+    let least = interpolate::fit(&points)
+        .and_then(|(n, _)| line_roots(&n, &range))
+        .unwrap_or_default()
+        .into_iter()
+        .find(|r| r.x.is_positive());
+    let Some(root) = least else {
+        return Err(UnknownError::Many(
+            "the given value needs the contact to stick, which every large enough mu gives: \
+             mu is not determined (a bound was not found)"
+                .into(),
+        ));
+    };
+    if hw.exact && !root.exact {
+        return Err(UnknownError::Irrational(
+            "mu".into(),
+            crate::values::quantity::significant(&root.x, 15),
+        ));
+    }
+    let x = if hw.exact {
+        root.x.clone()
+    } else {
+        to_f64(&root.x).map_or(root.x.clone(), from_f64)
+    };
+    let o = outcome(hw, Unknown::Friction, &x, si)
+        .map_err(|e| UnknownError::Impossible("mu".into(), e))?;
+    let approx = approx || !root.exact;
+    if !holds(&given.residual(&o)?, &given.scale(&o), approx) {
+        return Err(UnknownError::Many(
+            "the given value needs the contact to stick, which every large enough mu gives: \
+             mu is not determined (the least such mu was not found)"
+                .into(),
+        ));
+    }
+    Ok((
+        Value {
+            unknown: Unknown::Friction,
+            value: x,
+            approx: !root.exact || o.approx(),
+            at_least: true,
+        },
+        o,
+    ))
+}
+
+/// The slip after the impact: the tangential relative velocity of the contact points.
+fn final_slip(o: &Outcome) -> Q {
+    let pair = &o.problem.pair;
+    dot(&pair.tangent(), &pair.relative_velocity(&o.fin))
+}
