@@ -762,6 +762,17 @@ fn every_scene_report_satisfies_the_invariants() {
         holds(all_real(r), &s["scene"]);
         if r.get("inertia").is_some() {
             holds(two_body(&TwoBody::of_report(r)), &s["scene"]);
+        } else if r.get("law").is_some() {
+            // Several contacts at once: energy never created, no pair approaching after.
+            let (a, b) = (num(&r["energy"]["in"]), num(&r["energy"]["fin"]));
+            assert!(b <= a, "{}: energy {a} -> {b}", s["scene"]);
+            for c in r["contacts"].as_array().unwrap() {
+                assert!(
+                    num(&c["normal_velocity"]["fin"]) >= 0.0,
+                    "{}: {c}",
+                    s["scene"]
+                );
+            }
         } else if r.get("contacts").is_some() || r.get("collisions").is_some() {
             // Track and contact: the centres in order, energy never created (every scene's
             // law and restitution dissipates or keeps it).
