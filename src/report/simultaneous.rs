@@ -161,16 +161,8 @@ fn text(
         a,
         &unit,
     );
-    let mut e = Block::new("Energy (KE = 1/2 V.M.V)");
-    let (ki, kf) = (o.ke_in(), o.ke_fin());
-    e.row("KE_IN", style.show(&style.energy(&ki), a), "");
-    e.row("KE_FIN", style.show(&style.energy(&kf), a), "");
-    e.row(
-        "lost = KE_IN - KE_FIN",
-        style.show(&style.energy(&(&ki - &kf)), a),
-        "",
-    );
-    e.render(&mut out);
+    let ki = o.ke_in();
+    energy(&mut out, "Energy (KE = 1/2 V.M.V)", &ki, &o.fin, o, style);
     if let Some(Sequential { fin, impacts, .. }) = seq {
         out.push('\n');
         out.push_str(&super::block::paragraph(&format!(
@@ -186,17 +178,23 @@ fn text(
             a,
             &unit,
         );
-        let kf = contacts::kinetic(&o.masses, fin);
-        let mut e = Block::new("Energy, sequential");
-        e.row("KE_FIN", style.show(&style.energy(&kf), a), "");
-        e.row(
-            "lost = KE_IN - KE_FIN",
-            style.show(&style.energy(&(&ki - &kf)), a),
-            "",
-        );
-        e.render(&mut out);
+        energy(&mut out, "Energy, sequential", &ki, fin, o, style);
     }
     out
+}
+
+/// KE_IN, KE_FIN of `fin` and what was lost, under `title`.
+fn energy(out: &mut String, title: &str, ki: &Q, fin: &[Vec<Q>], o: &Outcome, style: &Style) {
+    let kf = contacts::kinetic(&o.masses, fin);
+    let mut e = Block::new(title);
+    for (label, q) in [
+        ("KE_IN", ki.clone()),
+        ("KE_FIN", kf.clone()),
+        ("lost = KE_IN - KE_FIN", ki - &kf),
+    ] {
+        e.row(label, style.show(&style.energy(&q), o.approx), "");
+    }
+    e.render(out);
 }
 
 /// The table of each body's velocity before and after.

@@ -7,11 +7,11 @@
 use num_traits::Signed;
 
 use crate::values::number::{Given, Number};
-use crate::values::rational::{Q, from_f64};
+use crate::values::rational::Q;
 use crate::values::units::{Dimension, Quantity};
 
 use super::contacts::{Contact, ContactsError, named, touching};
-use super::pose::{Input, PoseError, Posed};
+use super::pose::{Input, PoseError, Posed, q_of};
 use super::solve::Velocity;
 use super::typed::{Typed, parse_list, split_bodies};
 
@@ -67,15 +67,6 @@ pub struct Balls {
     pub contacts: Vec<Contact>,
     /// A typed angle entered rounded (its cosine and sine).
     pub rounded: bool,
-}
-
-/// A typed number as the laws take it: typed (`--exact`) or its binary64 value.
-fn q_of(n: &Number, typed: bool) -> Q {
-    if typed {
-        n.exact()
-    } else {
-        from_f64(n.value())
-    }
 }
 
 impl BallsInput {

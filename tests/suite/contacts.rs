@@ -265,11 +265,11 @@ fn a_rotated_frame_gives_the_answer_rotated() {
     }
 }
 
-/// The scene's rack (`scenarios/contacts-rack.toml`) as command-line arguments: masses,
-/// velocities, positions, radii. A cue ball at (0, 0) moving at 2 touches the apex at (2, 0);
+/// The scene's rack (`scenarios/contacts-rack.toml`) as `collide solve` arguments, with
+/// `--sequential`. A cue ball at (0, 0) moving at 2 touches the apex at (2, 0);
 /// row k of the triangle is at x = 2 + 1.7320508 k (2 sqrt(3) within the touching tolerance),
 /// its balls at y = -k, -k + 2, ..., k.
-fn rack() -> [String; 4] {
+fn rack() -> Vec<String> {
     let xs = ["2", "3.7320508", "5.4641016", "7.1961524", "8.9282032"];
     let mut pos = vec!["(0,0)".to_string()];
     for (k, x) in xs.iter().enumerate() {
@@ -279,23 +279,26 @@ fn rack() -> [String; 4] {
     }
     let ones = vec!["1"; 16].join(",");
     let v = format!("(2,0){}", ",0".repeat(15));
-    [ones.clone(), v, pos.join(","), ones]
-}
-
-#[test]
-fn the_rack_keeps_momentum_and_energy_and_its_mirror() {
-    let [m, v, p, r] = rack();
-    let args = [
+    let p = pos.join(",");
+    [
         "-m",
-        &m,
+        &ones,
         "-v",
         &v,
         "--positions",
         &p,
         "--radii",
-        &r,
+        &ones,
         "--sequential",
-    ];
+    ]
+    .map(String::from)
+    .to_vec()
+}
+
+#[test]
+fn the_rack_keeps_momentum_and_energy_and_its_mirror() {
+    let owned = rack();
+    let args: Vec<&str> = owned.iter().map(String::as_str).collect();
     // Exact: momentum 16 V_COM = (2, 0) and KE = 2 exactly (e = 1: sum P_k (w_k + w'_k)/2 = 0),
     // in both answers.
     let (code, j) = solve_json(&[&args[..], &["--exact"]].concat());
@@ -348,20 +351,9 @@ fn the_contact_scenes_pass() {
 
 #[test]
 fn the_text_fits_80_columns() {
-    let [m, v, p, r] = rack();
     let out = crate::common::collide_at_default_width()
-        .args([
-            "solve",
-            "-m",
-            &m,
-            "-v",
-            &v,
-            "--positions",
-            &p,
-            "--radii",
-            &r,
-            "--sequential",
-        ])
+        .arg("solve")
+        .args(rack())
         .output()
         .unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
@@ -418,6 +410,23 @@ fn bad_input_exits_2_naming_it() {
         &["--exact", "irrational", "1-2"],
     );
     refused(&["--sequential"], &["--sequential needs the contacts"]);
+    let many = 102;
+    let chain: Vec<String> = (0..many).map(|i| format!("({},0)", 2 * i)).collect();
+    let ones = vec!["1"; many].join(",");
+    let v = format!("(1,0){}", ",0".repeat(many - 1));
+    solve_refused(
+        &[
+            "-m",
+            &ones,
+            "-v",
+            &v,
+            "--positions",
+            &chain.join(","),
+            "--radii",
+            &ones,
+        ],
+        &["101 contacts", "at most 100"],
+    );
     refused(
         &["--radii", "1,1,1"],
         &["--radii needs --impact-parameter", "--positions"],
