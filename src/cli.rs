@@ -6,9 +6,11 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod balls;
 mod knowns;
 mod runs;
 mod tables;
+pub use balls::BallsArgs;
 pub use knowns::KnownArgs;
 pub use runs::*;
 pub use tables::*;
@@ -496,14 +498,11 @@ pub struct CaseArgs {
     pub normal: Option<collide::space::pose::NormalGiven>,
 
     /// Radii of two smooth disks (with --impact-parameter): the line of impact from the
-    /// geometry; numbers, or lengths with a unit ('2.5 cm,2.5 cm') like the impact parameter
-    #[arg(long, value_name = "R1,R2", requires = "impact_parameter", allow_hyphen_values = true,
-          value_parser = |s: &str| -> Result<[Quantity; 2], String> {
-              let [a, b] = collide::values::number::split_fields::<2>(s, "radii R1,R2").map_err(|e| e.to_string())?;
-              let length = |t: &str| collide::values::units::parse(t, Dimension::Length).map_err(|e| e.to_string());
-              Ok([length(a)?, length(b)?])
-          })]
-    pub radii: Option<[Quantity; 2]>,
+    /// geometry; numbers, or lengths with a unit ('2.5 cm,2.5 cm') like the impact parameter;
+    /// with --positions, one per ball (touching balls, docs/plane.md)
+    #[arg(long, value_name = "R1,R2", allow_hyphen_values = true,
+          value_parser = collide::space::balls::parse_radii)]
+    pub radii: Option<collide::space::balls::Radii>,
 
     /// Distance from body 2's centre to the line of body 1's relative motion (positive: to its
     /// left): sin(phi) = B / (R1 + R2), the line of impact at phi from the relative velocity
@@ -578,6 +577,9 @@ pub struct SolveArgs {
 
     #[command(flatten)]
     pub knowns: KnownArgs,
+
+    #[command(flatten)]
+    pub balls: BallsArgs,
 
     #[command(flatten)]
     pub rigid: RigidArgs,

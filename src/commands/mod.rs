@@ -4,6 +4,7 @@
 //! write files atomically).
 
 mod accuracy;
+mod balls;
 mod contact;
 mod frames;
 mod pi;
@@ -129,9 +130,20 @@ impl CaseArgs {
         )>,
     > {
         match (&self.radii, &self.impact_parameter) {
-            (Some([r1, r2]), Some(b)) => space::pose::geometry([r1, r2], b)
-                .map(Some)
-                .map_err(|e| anyhow::anyhow!("--radii, --impact-parameter: {e}")),
+            (Some(r), Some(b)) => match r.0.as_slice() {
+                [r1, r2] => space::pose::geometry([r1, r2], b)
+                    .map(Some)
+                    .map_err(|e| anyhow::anyhow!("--radii, --impact-parameter: {e}")),
+                _ => anyhow::bail!(
+                    "--radii with --impact-parameter takes two radii R1,R2 (got {}); one per \
+                     ball is for touching balls, with --positions",
+                    r.0.len()
+                ),
+            },
+            (Some(_), None) => anyhow::bail!(
+                "--radii needs --impact-parameter (two disks) or --positions (touching balls, \
+                 one radius each)"
+            ),
             _ => Ok(None),
         }
     }

@@ -86,6 +86,7 @@ pub fn run(args: SceneArgs) -> Result<Outcome> {
                 AnyScene::Track(scene) => Some(solve_track(scene)?),
                 AnyScene::Contact(scene) => Some(solve_contact(scene)?),
                 AnyScene::Space(scene) => Some(solve_space(scene)?),
+                AnyScene::Balls(scene) => Some(solve_balls(scene)?),
                 AnyScene::Rigid(scene) => Some(solve_rigid(scene)?),
                 AnyScene::Stages(scene) => Some(solve_stages(scene)?),
             })
@@ -340,6 +341,13 @@ fn solve_space(scene: collide::scene::SpaceScene) -> Result<Checked> {
     let mut checked = check(scene.about, rendered.text, rendered.json)?;
     checked.inconsistent = rendered.inconsistent;
     Ok(checked)
+}
+
+fn solve_balls(scene: collide::scene::BallsScene) -> Result<Checked> {
+    let at = || format!("{}", scene.about.path.display());
+    let r = collide::report::simultaneous::run(&scene.input, scene.sequential, None)
+        .with_context(at)?;
+    check(scene.about, r.text, r.json)
 }
 
 fn solve_rigid(scene: RigidScene) -> Result<Checked> {

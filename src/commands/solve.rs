@@ -18,6 +18,9 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
              use --plot FILE.svg"
         );
     }
+    if args.balls.active() {
+        return super::balls::run(&args);
+    }
     // With --show slides, --friction is the floor's (two bodies on a rail), not a contact's.
     let slides = args.show.contains(&collide::report::Section::Slides);
     let floor = slides.then_some(args.rigid.friction.as_ref()).flatten();

@@ -378,6 +378,11 @@ fn from_scene(setup: &mut Setup, path: &std::path::Path) -> Result<()> {
             };
             setup.focus = Focus::Stack;
         }
+        AnyScene::Balls(_) => bail!(
+            "{}: touching balls (several contacts at once): the page has no panel for them; run \
+             it with collide scene",
+            path.display()
+        ),
         AnyScene::Rigid(_) => bail!(
             "{}: rigid bodies at impact: the page has no panel for them; run it with collide \
              scene",

@@ -18,6 +18,7 @@ pub mod rigid;
 pub mod scene;
 pub mod sections;
 pub mod separation;
+pub mod simultaneous;
 pub mod solved;
 pub mod space;
 pub mod special;

@@ -1,9 +1,10 @@
 //! Scene files: a case in TOML, with the sections to show and the numbers to expect. One file
 //! per kind of scene: a two-body collision, separation or wall case (`two_body`, also `[sweep]`
 //! and `[plot]`), bodies on a track (`track`, `[track]`) and contact forces (`contact`,
-//! `[contact]`), the plane, space and N bodies (`space`), rigid bodies (`rigid`, `[[body]]`) and
-//! chains of two-body stages (`stages`, `[[stage]]`); this module holds what they share: reading
-//! a file, locating a problem in it, the `[expect]` table and a layout of bodies.
+//! `[contact]`), the plane, space and N bodies (`space`), rigid bodies (`rigid`, `[[body]]`),
+//! chains of two-body stages (`stages`, `[[stage]]`) and touching balls (`balls`, `positions`
+//! or `contacts`); this module holds what they share: reading a file, locating a problem in it,
+//! the `[expect]` table and a layout of bodies.
 //!
 //! ```toml
 //! title = "60 mph 4-ton SUV rear-ends 10 mph 1-ton VW"
@@ -19,6 +20,7 @@
 //! Every problem (unknown key, wrong type, bad value, missing field) is reported with the file,
 //! line and column.
 
+mod balls;
 mod contact;
 mod rigid;
 mod space;
@@ -36,6 +38,7 @@ use toml::Spanned;
 use crate::expect::{ExpectError, Expectation};
 use crate::values::number::{Number, NumberError};
 
+pub use balls::{BALLS_KEYS, BallsScene};
 pub use contact::{CONTACT_KEYS, ContactScene};
 pub use rigid::{RIGID_KEYS, RigidScene};
 pub use space::{SPACE_KEYS, SpaceScene, Texts as SpaceTexts, show_of};
@@ -221,6 +224,8 @@ pub enum AnyScene {
     Space(SpaceScene),
     /// Rigid bodies at impact.
     Rigid(RigidScene),
+    /// Touching balls: several contacts at once.
+    Balls(BallsScene),
     /// A chain of two-body stages (`[[stage]]`).
     Stages(StagesScene),
 }
@@ -282,6 +287,8 @@ impl Scene {
             ContactScene::parse(path, &text).map(AnyScene::Contact)
         } else if has_table(&text, "track") {
             TrackScene::parse(path, &text).map(AnyScene::Track)
+        } else if balls::is_balls(&text) {
+            BallsScene::parse(path, &text).map(AnyScene::Balls)
         } else if space::is_space(&text) {
             SpaceScene::parse(path, &text).map(AnyScene::Space)
         } else {

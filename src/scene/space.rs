@@ -54,7 +54,7 @@ struct SpaceFile {
 /// vector's components: `[4, 0]`, `["?", 3]`).
 #[derive(Clone, Debug, Deserialize)]
 #[serde(untagged)]
-enum Value {
+pub(super) enum Value {
     Text(String),
     Integer(i64),
     Float(f64),
@@ -63,7 +63,7 @@ enum Value {
 
 impl Value {
     /// The text the command line would take: `[4, 0]` is `(4,0)`.
-    fn text(&self) -> String {
+    pub(super) fn text(&self) -> String {
         match self {
             Value::Text(s) => s.clone(),
             Value::Integer(i) => i.to_string(),

@@ -6,11 +6,16 @@
 //!
 //! - `angle`: angles and compass bearings;
 //! - `algebra`: the laws as polynomials in the unknowns, solved exactly;
-//! - `solve`: the laws of a problem and its solutions.
+//! - `solve`: the laws of a problem and its solutions;
+//! - `lcp`, `contacts`, `balls`: several contacts at once (Newton's law as a linear
+//!   complementarity problem, solved by Lemke's method), and touching balls as typed.
 
 pub mod algebra;
 pub mod angle;
+pub mod balls;
+pub mod contacts;
 pub mod impact;
+pub mod lcp;
 pub mod outcome;
 pub mod pose;
 pub mod solve;

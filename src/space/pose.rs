@@ -162,7 +162,7 @@ pub struct Posed {
 }
 
 /// How a typed number enters the laws: its typed value or its binary64 value.
-fn q_of(n: &Number, typed: bool) -> Q {
+pub(crate) fn q_of(n: &Number, typed: bool) -> Q {
     if typed {
         n.exact()
     } else {

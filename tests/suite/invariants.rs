@@ -762,6 +762,25 @@ fn every_scene_report_satisfies_the_invariants() {
         holds(all_real(r), &s["scene"]);
         if r.get("inertia").is_some() {
             holds(two_body(&TwoBody::of_report(r)), &s["scene"]);
+        } else if r["law"] == "newton-simultaneous" {
+            // Several contacts at once: energy never created, no pair approaching after
+            // (exact scenes print fractions, `≈` digits where irrational).
+            let q = |v: &Value| -> f64 {
+                v.as_f64().unwrap_or_else(|| {
+                    let t = v.as_str().unwrap_or_default().trim_start_matches('≈');
+                    let x: collide::values::rational::Q = t.parse().unwrap();
+                    collide::values::rational::to_f64(&x).unwrap()
+                })
+            };
+            let (a, b) = (q(&r["energy"]["in"]), q(&r["energy"]["fin"]));
+            assert!(b <= a, "{}: energy {a} -> {b}", s["scene"]);
+            for c in r["contacts"].as_array().unwrap() {
+                assert!(
+                    q(&c["normal_velocity"]["fin"]) >= 0.0,
+                    "{}: {c}",
+                    s["scene"]
+                );
+            }
         } else if r.get("contacts").is_some() || r.get("collisions").is_some() {
             // Track and contact: the centres in order, energy never created (every scene's
             // law and restitution dissipates or keeps it).

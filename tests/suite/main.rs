@@ -7,6 +7,7 @@ mod accuracy;
 mod asked;
 mod cli;
 mod contact;
+mod contacts;
 mod exact_and_accuracy;
 mod frames;
 mod grammar;

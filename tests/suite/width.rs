@@ -52,6 +52,9 @@ const COMMANDS: &[&str] = &[
     "collide solve -m 1,1 -v (5,0),0 --fin '3 @ ?,?' -e 1",
     "collide frames -m 1,3 -v (1,2),0 --normal 45deg",
     "collide scene scenarios/plane-car-and-van.toml",
+    // Several contacts at once (issue 42 section 4): 15-digit vectors in the tables.
+    "collide solve -m 1,1,1 -v (3.8,0),0,0 --positions (0,0),(1.732,1),(1.732,-1) --radii 1,1,1 --sequential",
+    "collide scene scenarios/contacts-rack.toml",
     // A chain of stages: exact, and binary64 with units (long decimals).
     "collide scene scenarios/stages-no-further.toml",
     "collide scene scenarios/stages-three-particles.toml",
