@@ -81,7 +81,7 @@ pub fn run(
         fin: solved.fin.clone(),
         normal: None,
         e: Some(balls.e.clone()),
-        approx: balls.rounded,
+        approx: crate::space::outcome::Marks::uniform(balls.rounded),
     };
     let text = text(&o, &balls, &solved, seq.as_ref(), &style, &units);
     let json = json(&o, &balls, &solved, seq.as_ref(), &style)?;
@@ -125,7 +125,7 @@ fn text(
     style: &Style,
     units: &crate::values::units::Units,
 ) -> String {
-    let a = o.approx;
+    let a = o.approx.any();
     let show = |(q, r): (Q, bool)| style.show(&q, a || r);
     let mut out = header(o, style, units);
     out.push_str(&super::block::paragraph(&format!("Law: {LAW}.")));
@@ -192,7 +192,7 @@ fn energy(out: &mut String, title: &str, ki: &Q, fin: &[Vec<Q>], o: &Outcome, st
         ("KE_FIN", kf.clone()),
         ("lost = KE_IN - KE_FIN", ki - &kf),
     ] {
-        e.row(label, style.show(&style.energy(&q), o.approx), "");
+        e.row(label, style.show(&style.energy(&q), o.approx.any()), "");
     }
     e.render(out);
 }
@@ -231,7 +231,7 @@ fn json(
     seq: Option<&Sequential>,
     style: &Style,
 ) -> Result<Value, Overflow> {
-    let a = o.approx;
+    let a = o.approx.any();
     let base = super::space::json(o, super::space::Show::default(), style)?;
     let mut m: Map<String, Value> = match base {
         Value::Object(m) => m,
