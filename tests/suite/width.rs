@@ -244,3 +244,33 @@ fn a_narrow_terminal_is_honoured_by_contact_and_scene_summaries() {
     );
     assert_eq!(columns.len(), 1, "{out}");
 }
+
+/// Many bodies' masses wrap at the width with the report's indent (60 bodies on a line ran to
+/// 317 columns, 300 to 1,500), every mass still printed once, in order.
+#[test]
+fn many_bodies_masses_wrap_and_keep_every_mass() {
+    let masses: Vec<String> = (1..=60).map(|i| format!("{i}.5")).collect();
+    let velocities: Vec<&str> = std::iter::once("2")
+        .chain(std::iter::repeat_n("0", 59))
+        .collect();
+    let line = format!(
+        "collide solve -m {} -v {} -e 0",
+        masses.join(","),
+        velocities.join(",")
+    );
+    assert_fits(&line, None, 80);
+    let (out, _) = run(&args(&line), None);
+    let header: String = out
+        .lines()
+        .take_while(|l| !l.starts_with("e = "))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let listed: Vec<&str> = header
+        .split("masses ")
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(str::trim)
+        .collect();
+    assert_eq!(listed, masses, "{out}");
+}

@@ -268,11 +268,16 @@ pub fn header(o: &Outcome, style: &Style, units: &Units) -> String {
         .enumerate()
         .map(|(i, m)| style.show(m, o.approx.mass(i)))
         .collect();
-    let mut out = format!(
-        "{} bodies {space}: masses {}{}\n",
-        o.bodies(),
-        masses.join(", "),
-        units.mass.map(|u| format!(" {u}")).unwrap_or_default()
+    // Many bodies' masses wrap (300 bodies on a line ran to 1,500 columns).
+    let mut out = crate::values::terminal::wrap(
+        &format!(
+            "{} bodies {space}: masses {}{}",
+            o.bodies(),
+            masses.join(", "),
+            units.mass.map(|u| format!(" {u}")).unwrap_or_default()
+        ),
+        crate::values::terminal::width(),
+        "  ",
     );
     if let Some(e) = &o.e {
         let kind = if e.is_zero() {
