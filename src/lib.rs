@@ -16,7 +16,11 @@
 //! 6. what is printed: `report`, `plot`, `view` (the web page's requests and answers);
 //! 7. files: `scene`.
 //!
-//! The binary (`src/main.rs`, `src/cli.rs`, `src/commands/`) sits on top. The feature `cli`
+//! 8. the command line (feature `cli`): `cli` (its flags), `usage` (its usage errors) and
+//!    `commands` (one per subcommand: parse, solve, render), under the thin binary `src/main.rs`
+//!    and linked by the Python module (`python/`) too, so that both run one build of them.
+//!
+//! The feature `cli`
 //! (default) adds what only the command line needs (`output`, `accuracy`, `contact`, `expect`,
 //! `table`, `plot`, `scene` and their crates); without it the library is the part that `wasm/`
 //! compiles to WebAssembly for `collide view`.
@@ -64,3 +68,14 @@ pub mod view;
 // 7. files
 #[cfg(feature = "cli")]
 pub mod scene;
+
+// 8. the command line: its flags, usage errors and commands (written as the binary's code, naming
+// the library `collide::`, hence the alias)
+#[cfg(feature = "cli")]
+extern crate self as collide;
+#[cfg(feature = "cli")]
+pub mod cli;
+#[cfg(feature = "cli")]
+pub mod commands;
+#[cfg(feature = "cli")]
+pub mod usage;

@@ -1,9 +1,5 @@
 //! `collide`: parse, dispatch, print, exit. Exit 0 ok, 1 a scene's check failed, 2 bad input.
 
-mod cli;
-mod commands;
-mod usage;
-
 use std::ffi::OsString;
 use std::io::Write;
 use std::process::ExitCode;
@@ -11,6 +7,7 @@ use std::process::ExitCode;
 use clap::{CommandFactory, FromArgMatches};
 use collide::values::output::diagnostic;
 use collide::values::terminal;
+use collide::{cli, commands, usage};
 
 fn main() -> ExitCode {
     // Signals remove partial output files; a file-size limit is an error, not a silent death.

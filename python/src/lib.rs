@@ -19,18 +19,10 @@ mod report;
 mod sweep;
 mod values;
 
-/// The command line's own flags and commands, compiled into the module from the binary's files
-/// (`src/cli.rs`, `src/commands/`, `src/usage.rs`): one parser and one renderer for both, so a
-/// report is the command's JSON by construction. The binary's code names its flags as
-/// `crate::cli`, hence the `use` below.
-#[path = "../../src"]
-#[allow(dead_code, unused_imports)]
-mod binary {
-    pub mod cli;
-    pub mod commands;
-    pub mod usage;
-}
-use binary::{cli, commands, usage};
+/// The command line's own flags and commands, from the library (`collide::cli`,
+/// `collide::commands`, `collide::usage`; the binary runs the same build of them): one parser and
+/// one renderer for both, so a report is the command's JSON by construction.
+use collide::{cli, commands, usage};
 
 pyo3::create_exception!(
     collide,

@@ -14,7 +14,7 @@ mod scene;
 mod shell;
 mod solve;
 mod space_solve;
-pub(crate) mod table;
+pub mod table;
 mod track;
 mod view;
 
