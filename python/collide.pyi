@@ -154,6 +154,19 @@ def plot(
     True
     """
 
+@overload
+def track(
+    m: Optional[Values] = None,
+    x: Optional[Values] = None,
+    v: Optional[Values] = None,
+    *,
+    vary: Union[str, Sequence[str]],
+    to: Literal["polars", "pandas", "numpy"] = "polars",
+    columns: Optional[Sequence[str]] = None,
+    skip_bad: bool = False,
+    **flags: Flag,
+) -> Any: ...
+@overload
 def track(
     m: Optional[Values] = None,
     x: Optional[Values] = None,
@@ -170,12 +183,30 @@ def track(
     **flags: Flag,
 ) -> Report:
     """Repeated collisions on a track between walls, as `collide track --format json` runs
-    them: `m`, `x`, `v` are the masses, positions and velocities.
+    them: `m`, `x`, `v` are the masses, positions and velocities. With `vary=` (the command's
+    `--vary`), the table of runs `collide track --vary` writes, one row a run, as a Polars
+    DataFrame (`to="pandas"`, or `to="numpy"` for a dict of arrays), every value the command's.
 
     >>> track(m=(1, 100), x=(1, 2), v=(0, -1), left_wall=0).collisions
     31
+    >>> track(m=(1, 100), x=(1, 2), v=(0, -1), left_wall=0, vary="m2=1,100,10000",
+    ...       columns=["m2", "collisions"], to="numpy")["collisions"]
+    array([  3,  31, 314])
     """
 
+@overload
+def contact(
+    m: Optional[Values] = None,
+    x: Optional[Values] = None,
+    v: Optional[Values] = None,
+    *,
+    vary: Union[str, Sequence[str]],
+    to: Literal["polars", "pandas", "numpy"] = "polars",
+    columns: Optional[Sequence[str]] = None,
+    skip_bad: bool = False,
+    **flags: Flag,
+) -> Any: ...
+@overload
 def contact(
     m: Optional[Values] = None,
     x: Optional[Values] = None,
@@ -191,7 +222,8 @@ def contact(
     **flags: Flag,
 ) -> Report:
     """Collisions in time with contact forces, as `collide contact --format json` integrates
-    them."""
+    them; with `vary=`, the table of runs of `collide contact --vary` as a DataFrame (as
+    `track`)."""
 
 def pi(n: int, *, simulate: bool = False, no_simulate: bool = False) -> Report:
     """Pi from collisions, as `collide pi N --format json` counts them.
@@ -226,9 +258,11 @@ def sweep(
     skip_bad: bool = False,
     **flags: Flag,
 ) -> Any:
-    """A sweep on a rail, as `collide sweep --vary ...` computes it, as a Polars DataFrame
-    (pandas with `to="pandas"`, a dict of NumPy arrays with `to="numpy"`), bit for bit the
-    command's rows, with no text between.
+    """A sweep, as `collide sweep --vary ...` computes it, as a Polars DataFrame (pandas with
+    `to="pandas"`, a dict of NumPy arrays with `to="numpy"`), bit for bit the command's rows,
+    with no text between: on a rail, or in the plane (vectors and `normal=`, or `radii=` and
+    `b=`; its parameters `b`, `normal_deg`, `v1x`, ... and columns as the command's, with an
+    `error` column for a run that failed).
 
     >>> df = sweep(m=(4, 1), v=(60, 10), vary="e=0:1:3", columns=["e", "fin1", "fin2"], to="numpy")
     >>> df["fin1"], df["fin2"]

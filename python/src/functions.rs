@@ -33,11 +33,11 @@ pub(crate) fn words_of(
                      write files with the command line"
                 )));
             }
-            if key == "vary" {
-                return Err(refused(
-                    "vary=: a table of runs is for the command line (`collide track --vary`); \
-                     collide.sweep takes --vary for two bodies",
-                ));
+            if key == "vary" && !["sweep", "track", "contact"].contains(&command) {
+                return Err(refused(format!(
+                    "vary=: {command} gives one report; tables over a grid are collide.sweep, \
+                     collide.track(vary=...) and collide.contact(vary=...)"
+                )));
             }
             all.set_item(k, v)?;
         }
@@ -45,7 +45,7 @@ pub(crate) fn words_of(
     // `frames`' `frame=` is a list of extra rows (`solve`'s and `plot`'s is one frame), and
     // `sweep`'s `vary=` a list of parameters.
     let repeated: &[&str] = match command {
-        "frames" | "sweep" => &REPEATED,
+        "frames" | "sweep" | "track" | "contact" => &REPEATED,
         _ => &[],
     };
     let mut out = vec![command.to_string()];
@@ -59,6 +59,35 @@ fn report(py: Python<'_>, args: Vec<String>) -> PyResult<Py<Report>> {
     full.extend(["--format".to_string(), "json".to_string()]);
     let printed = run(py, &full)?;
     Report::new(py, args, printed)
+}
+
+/// The report of `collide COMMAND ...`, or, for `track` and `contact` with `vary=`, their table
+/// of runs (`collide track --vary ...`) as a DataFrame: Polars, or `to="pandas"`, or
+/// `to="numpy"` for a dict of NumPy arrays.
+fn report_or_runs(
+    py: Python<'_>,
+    command: &str,
+    leading: &[(&str, Option<&Bound<'_, PyAny>>)],
+    flags: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Py<PyAny>> {
+    let runs = ["track", "contact"].contains(&command);
+    match flags {
+        Some(flags) if runs && flags.contains("vary")? => {
+            let flags = flags.copy()?;
+            let to: String = match flags.get_item("to")? {
+                Some(to) => {
+                    flags.del_item("to")?;
+                    to.extract()?
+                }
+                None => "polars".into(),
+            };
+            let frame = crate::sweep::frame_module(py, &to)?;
+            let args = words_of(py, command, leading, Some(&flags))?;
+            let cli = crate::command::parse(&args)?;
+            Ok(crate::sweep::runs_frame(py, cli.command, frame)?.unbind())
+        }
+        _ => Ok(report(py, words_of(py, command, leading, flags)?)?.into_any()),
+    }
 }
 
 /// A function of the module for `collide COMMAND`, whose report it returns, with three leading
@@ -76,9 +105,9 @@ macro_rules! command {
             $b: Option<&Bound<'_, PyAny>>,
             $c: Option<&Bound<'_, PyAny>>,
             flags: Option<&Bound<'_, PyDict>>,
-        ) -> PyResult<Py<Report>> {
+        ) -> PyResult<Py<PyAny>> {
             let leading = [($fa, $a), ($fb, $b), ($fc, $c)];
-            report(py, words_of(py, $command, &leading, flags)?)
+            report_or_runs(py, $command, &leading, flags)
         }
     };
 }
@@ -120,7 +149,9 @@ command!(
     /// Repeated collisions of bodies on a track between walls, as `collide track ... --format
     /// json` runs them: `m`, `x` and `v` are the masses, positions and velocities (`-m`, `-x`,
     /// `-v`); `left_wall=`, `right_wall=`, `sizes=`, `e=`, `gravity=`, `until=`, ... the other
-    /// flags.
+    /// flags. With `vary=` (`--vary`, one text or a list), the table of runs that `collide track
+    /// --vary` writes, as a Polars DataFrame (`to="pandas"`, or `to="numpy"` for a dict of
+    /// arrays), every value the command's.
     ///
     /// >>> track(m=(1, 100), x=(1, 2), v=(0, -1), left_wall=0).collisions
     /// 31
@@ -130,7 +161,8 @@ command!(
 command!(
     /// Collisions in time with contact forces, as `collide contact ... --format json`
     /// integrates them: `m`, `x`, `v` as for `track`, and `sizes=`, `law=` (`"linear"`,
-    /// `"hertz"`, ...), `stiffness=`, `zeta=`, `damping=`, `method=`, ... as the command's flags.
+    /// `"hertz"`, ...), `stiffness=`, `zeta=`, `damping=`, `method=`, ... as the command's flags;
+    /// with `vary=`, the table of runs of `collide contact --vary`, as `track`'s.
     contact, "contact", m => "m", x => "positions", v => "v"
 );
 

@@ -18,8 +18,8 @@ use crate::cli::Command;
 use crate::commands::table::{RailSweep, rail_sweep};
 use crate::refused;
 
-/// A sweep of collisions on a rail over a grid of parameters, as `collide sweep` computes it, as
-/// a DataFrame: Polars (`to="polars"`, the default), pandas (`to="pandas"`), or a dict of NumPy
+/// A sweep of collisions over a grid of parameters, on a rail or in the plane, as `collide
+/// sweep` computes it, as a DataFrame: Polars (`to="polars"`, the default), pandas (`to="pandas"`), or a dict of NumPy
 /// arrays (`to="numpy"`).
 ///
 /// `vary` is `--vary` (one text or a list: `"e=0:1:11"`, `"m2=1e-3:1e3:7:log"`,
@@ -42,26 +42,14 @@ pub fn sweep<'py>(
     to: &str,
     flags: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let frame = match to {
-        "polars" | "pandas" => Some(import(py, to)?),
-        "numpy" => None,
-        _ => {
-            return Err(refused(format!(
-                "to='{to}': a sweep is a 'polars' or a 'pandas' DataFrame, or 'numpy' (a dict of \
-                 arrays)"
-            )));
-        }
-    };
+    let frame = frame_module(py, to)?;
     let leading = [("m", m), ("v", v), ("e", e), ("vary", Some(vary))];
     let args = crate::functions::words_of(py, "sweep", &leading, flags)?;
     let Command::Sweep(args) = crate::command::parse(&args)?.command else {
         unreachable!("the words are a sweep's")
     };
     if args.case.spatial() {
-        return Err(refused(
-            "a sweep in the plane is for the command line (collide sweep with vectors); \
-             collide.sweep takes two bodies on a rail",
-        ));
+        return runs_frame(py, Command::Sweep(args), frame);
     }
     let RailSweep {
         case,
@@ -114,6 +102,57 @@ pub fn sweep<'py>(
     for (col, values) in columns.iter().zip(out) {
         dict.set_item(col.name, PyArray1::from_vec(py, values))?;
     }
+    finish(dict, frame)
+}
+
+/// A table of runs (`collide sweep` in the plane, `collide track --vary`, `collide contact
+/// --vary`: `command`), run by the command's own code (`commands::table::columns_of`) with the
+/// GIL released, as a DataFrame of `frame`'s module or a dict of NumPy arrays. Counts
+/// (collisions, steps) are int64 where every run has one, as the command writes them as
+/// integers; the `error` column holds the failed runs' messages (None for the others).
+pub fn runs_frame<'py>(
+    py: Python<'py>,
+    command: Command,
+    frame: Option<Bound<'py, PyModule>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let table = py
+        .detach(|| crate::commands::table::columns_of(command))
+        .map_err(|e| refused(format!("{e:#}")))?
+        .expect("a table of runs");
+    let dict = PyDict::new(py);
+    let mut values = table.values.into_iter();
+    let mut errors = table.errors;
+    for (name, integer) in table.names.iter().zip(table.integers) {
+        let column = values.next().unwrap_or_default();
+        if name == collide::table::runs::ERROR {
+            dict.set_item(name, errors.take().unwrap_or_default())?;
+        } else if integer && column.iter().all(|x| x.is_finite()) {
+            let counts: Vec<i64> = column.iter().map(|&x| x as i64).collect();
+            dict.set_item(name, PyArray1::from_vec(py, counts))?;
+        } else {
+            dict.set_item(name, PyArray1::from_vec(py, column))?;
+        }
+    }
+    finish(dict, frame)
+}
+
+/// `to=`'s module: Polars or pandas (imported), or `None` for a dict of NumPy arrays.
+pub fn frame_module<'py>(py: Python<'py>, to: &str) -> PyResult<Option<Bound<'py, PyModule>>> {
+    match to {
+        "polars" | "pandas" => Ok(Some(import(py, to)?)),
+        "numpy" => Ok(None),
+        _ => Err(refused(format!(
+            "to='{to}': a table is a 'polars' or a 'pandas' DataFrame, or 'numpy' (a dict of \
+             arrays)"
+        ))),
+    }
+}
+
+/// The columns as `frame`'s DataFrame, or the dict itself.
+fn finish<'py>(
+    dict: Bound<'py, PyDict>,
+    frame: Option<Bound<'py, PyModule>>,
+) -> PyResult<Bound<'py, PyAny>> {
     match frame {
         Some(module) => module.call_method1("DataFrame", (dict,)),
         None => Ok(dict.into_any()),

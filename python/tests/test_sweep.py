@@ -120,10 +120,8 @@ def test_refusals_are_the_cli_message(kwargs, args):
 
 
 def test_what_it_needs_and_refuses(monkeypatch):
-    with pytest.raises(collide.CollideError, match="to='arrow': a sweep is a 'polars' or a 'pandas'"):
+    with pytest.raises(collide.CollideError, match="to='arrow': a table is a 'polars' or a 'pandas'"):
         collide.sweep(m=(4, 1), v=(60, 10), vary="e=0:1:3", to="arrow")
-    with pytest.raises(collide.CollideError, match="collide.sweep takes two bodies on a rail"):
-        collide.sweep(m=(1, 1), v=((1, 0), (0, 0)), normal="30deg", vary="e=0:1:3")
     # Polars or pandas missing: a clear ImportError (sys.modules[name] = None makes the import fail).
     for name in ("polars", "pandas"):
         monkeypatch.setitem(sys.modules, name, None)

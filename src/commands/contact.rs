@@ -93,12 +93,17 @@ pub fn run(args: ContactArgs) -> Result<Outcome> {
 
 /// `--vary`: a table of runs, one row each (`collide::table::runs::contact`).
 fn sweep(args: ContactArgs) -> Result<Outcome> {
+    super::table::run_table(&sweep_kind(&args)?, &args.table, args.format)
+}
+
+/// The base run that `--vary` changes (`collide::table::runs::contact`).
+pub fn sweep_kind(args: &ContactArgs) -> Result<ContactSweep> {
     let damping = |c, z, e| Damping::given(c, z, e);
     let base = ContactSweep {
         bodies: args.layout.bodies()?,
         walls: (
-            args.layout.left_wall.map(|x| x.value()),
-            args.layout.right_wall.map(|x| x.value()),
+            args.layout.left_wall.as_ref().map(|x| x.value()),
+            args.layout.right_wall.as_ref().map(|x| x.value()),
         ),
         laws: Laws {
             kind: args.law,
@@ -111,10 +116,10 @@ fn sweep(args: ContactArgs) -> Result<Outcome> {
             method: args.method.method(),
             dt: args.dt,
             tol: args.tol,
-            until: args.until.map(|t| t.value()),
+            until: args.until.as_ref().map(|t| t.value()),
             max_steps: args.max_steps,
             trace: false,
         },
     };
-    super::table::run_table(&base, &args.table, args.format)
+    Ok(base)
 }

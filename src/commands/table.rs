@@ -14,7 +14,7 @@ use collide::values::output::{Output, Progress};
 use collide::table::runs::{self, Kind};
 
 use super::Outcome;
-use crate::cli::{BatchArgs, RunFormat, RunTableArgs, SweepArgs, TableArgs};
+use crate::cli::{BatchArgs, Command, RunFormat, RunTableArgs, SweepArgs, TableArgs};
 
 pub fn sweep(args: SweepArgs) -> Result<Outcome> {
     if args.case.spatial() {
@@ -62,6 +62,18 @@ pub fn rail_sweep(args: &SweepArgs) -> Result<RailSweep> {
 /// `collide sweep` in the plane: two bodies with 2-vectors and a line of impact
 /// (`table::runs::plane`), one row per point of the grid.
 fn plane_sweep(args: SweepArgs) -> Result<Outcome> {
+    let (kind, runs, format) = plane_runs(args)?;
+    run_table(&kind, &runs, format)
+}
+
+/// The runs of a sweep in the plane: its kind, its table's arguments and its format.
+fn plane_runs(
+    args: SweepArgs,
+) -> Result<(
+    collide::table::runs::plane::PlaneSweep,
+    RunTableArgs,
+    Option<RunFormat>,
+)> {
     use collide::table::runs::plane::{Line, PlaneSweep};
     let posed = args.case.space_input(None, false)?.pose()?;
     let st = &posed.statement;
@@ -127,7 +139,26 @@ fn plane_sweep(args: SweepArgs) -> Result<Outcome> {
         skip_bad: args.table.skip_bad,
         header: args.table.header,
     };
-    run_table(&kind, &runs, format)
+    Ok((kind, runs, format))
+}
+
+/// The table of runs `command` asks for, as columns (`run_columns`): a sweep in the plane,
+/// `track --vary` or `contact --vary`; `None` for any other command (a sweep on a rail is the
+/// table engine's, `SweepRows`).
+pub fn columns_of(command: Command) -> Result<Option<runs::columns::RunColumns>> {
+    Ok(Some(match command {
+        Command::Sweep(args) if args.case.spatial() => {
+            let (kind, runs, _) = plane_runs(args)?;
+            run_columns(&kind, &runs)?
+        }
+        Command::Track(args) if !args.table.vary.is_empty() => {
+            run_columns(&super::track::sweep_kind(&args)?, &args.table)?
+        }
+        Command::Contact(args) if !args.table.vary.is_empty() => {
+            run_columns(&super::contact::sweep_kind(&args)?, &args.table)?
+        }
+        _ => return Ok(None),
+    }))
 }
 
 /// Writes the table of a sweep of `case` over `grid` (the rows of `shard`).
@@ -385,13 +416,16 @@ fn finish(
     Ok(Outcome::print(String::new()))
 }
 
-/// `collide track --vary`, `collide contact --vary`: the table of runs of `kind` over the grid
-/// of `args.vary`.
-pub fn run_table<K: Kind>(
-    kind: &K,
-    args: &RunTableArgs,
-    format: Option<RunFormat>,
-) -> Result<Outcome> {
+/// A table of runs checked against its kind: the grid of `--vary`, the columns and their names.
+pub struct RunGrid<C> {
+    pub grid: Grid<runs::Knob>,
+    pub cells: Vec<runs::Cell<C>>,
+    pub names: Vec<String>,
+}
+
+/// The grid and columns of a table of runs of `kind` (`--vary`, `--columns`, `--max-rows`),
+/// checked before anything runs.
+pub fn run_grid<K: Kind>(kind: &K, args: &RunTableArgs) -> Result<RunGrid<K::Col>> {
     let vary = args
         .vary
         .iter()
@@ -418,6 +452,32 @@ pub fn run_table<K: Kind>(
     let grid = Grid::new(vary, args.max_rows)?;
     let params: Vec<runs::Knob> = grid.vary.iter().map(|v| v.param).collect();
     let (cells, names) = runs::cells(kind, &params, &args.columns).map_err(anyhow::Error::msg)?;
+    Ok(RunGrid { grid, cells, names })
+}
+
+/// The table of runs of `kind` over `args`' grid as columns (`table::runs::columns`): what
+/// `run_table` writes, every value the same binary64, for the Python module's DataFrames.
+pub fn run_columns<K: Kind>(kind: &K, args: &RunTableArgs) -> Result<runs::columns::RunColumns> {
+    let RunGrid { grid, cells, names } = run_grid(kind, args)?;
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    runs::columns::run_columns(kind, &grid, shard, &cells, names, args.skip_bad).map_err(|e| {
+        let hint = if args.skip_bad {
+            ""
+        } else {
+            " (--skip-bad reports bad rows and goes on)"
+        };
+        anyhow::anyhow!("{e}{hint}")
+    })
+}
+
+/// `collide track --vary`, `collide contact --vary`: the table of runs of `kind` over the grid
+/// of `args.vary`.
+pub fn run_table<K: Kind>(
+    kind: &K,
+    args: &RunTableArgs,
+    format: Option<RunFormat>,
+) -> Result<Outcome> {
+    let RunGrid { grid, cells, names } = run_grid(kind, args)?;
     let table = TableArgs {
         columns: Vec::new(),
         format: match format {

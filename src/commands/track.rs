@@ -39,13 +39,17 @@ pub fn run(args: TrackArgs) -> Result<Outcome> {
 
 /// `--vary`: a table of runs, one row each (`collide::table::runs::track`).
 fn sweep(args: TrackArgs) -> Result<Outcome> {
-    let (track, limits) = base(&args)?;
-    let sweep = TrackSweep {
+    super::table::run_table(&sweep_kind(&args)?, &args.table, args.format)
+}
+
+/// The base run that `--vary` changes (`collide::table::runs::track`).
+pub fn sweep_kind(args: &TrackArgs) -> Result<TrackSweep> {
+    let (track, limits) = base(args)?;
+    Ok(TrackSweep {
         track,
         limits,
-        wall_restitution: wall_restitution(&args),
-    };
-    super::table::run_table(&sweep, &args.table, args.format)
+        wall_restitution: wall_restitution(args),
+    })
 }
 
 /// `--wall-restitution` as given (`None`: the walls take `-e`).

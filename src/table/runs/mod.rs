@@ -18,6 +18,7 @@
 //! - `contact`: the parameters and summary columns of `collide contact`;
 //! - `track`: those of `collide track`.
 
+pub mod columns;
 pub mod contact;
 pub mod plane;
 pub mod track;
@@ -657,6 +658,36 @@ mod tests {
         let (r, out) = table("x1=1,-1,2", &["x1", "y"], true);
         assert_eq!(out, "x1,y\n1.0,2.0\n2.0,4.0\n");
         assert_eq!(r.unwrap().skipped, 1);
+    }
+
+    /// `columns::run_columns` gives the rows `write_runs` writes: the same values, the same
+    /// failures (an error row, a stop, a skip).
+    #[test]
+    fn columns_are_the_written_rows() {
+        let run = |vary: &str, chosen: &[&str], skip_bad: bool| {
+            let grid = Grid::new(vec![super::vary(&Double, vary).unwrap()], 100).unwrap();
+            let chosen: Vec<String> = chosen.iter().map(|s| s.to_string()).collect();
+            let params: Vec<Knob> = grid.vary.iter().map(|v| v.param).collect();
+            let (cells, names) = cells(&Double, &params, &chosen).unwrap();
+            columns::run_columns(&Double, &grid, Shard::WHOLE, &cells, names, skip_bad)
+        };
+        let t = run("x1=-1:2:4", &[], false).unwrap();
+        assert_eq!(t.names, ["x1", "y", "error"]);
+        assert_eq!(t.values[0], [-1.0, 0.0, 1.0, 2.0]);
+        assert!(t.values[1][0].is_nan());
+        assert_eq!(t.values[1][1..], [0.0, 2.0, 4.0]);
+        assert!(t.values[2].is_empty());
+        let errors = t.errors.unwrap();
+        assert_eq!(errors, [Some("x1 = -1 < 0".to_string()), None, None, None]);
+        let e = run("x1=1,-1,2", &["x1", "y"], false).unwrap_err();
+        assert_eq!(e.to_string(), "run 2 (x1=-1.0): x1 = -1 < 0");
+        let t = run("x1=1,-1,2", &["x1", "y"], true).unwrap();
+        assert_eq!(
+            (t.values[0].clone(), t.values[1].clone()),
+            (vec![1.0, 2.0], vec![2.0, 4.0])
+        );
+        assert_eq!(t.skipped.len(), 1);
+        assert!(t.errors.is_none());
     }
 
     #[test]
