@@ -191,6 +191,15 @@ impl Outcome {
             * half()
     }
 
+    /// Each body's `KE_i = 1/2 m_i v_i.v_i` (exact; they add up to [`Outcome::kinetic`]).
+    pub fn kinetic_each(&self, v: &[Vec<Q>]) -> Vec<Q> {
+        self.masses
+            .iter()
+            .zip(v)
+            .map(|(m, vi)| m * dot(vi, vi) * half())
+            .collect()
+    }
+
     pub fn ke_in(&self) -> Q {
         self.kinetic(&self.v_in)
     }

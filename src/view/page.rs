@@ -13,10 +13,11 @@ use super::input::{CaseInput, PlaneInput, TrackInput};
 const TEMPLATE: &str = include_str!("assets/page.html");
 const STYLE: &str = include_str!("assets/page.css");
 /// The page's script, in parts by job, run in this order inside one function (they share its
-/// scope): the core and drawing helpers, the velocity plane and dual panel, the plane, the stack,
-/// and the start.
-const SCRIPTS: [&str; 5] = [
+/// scope): the core and drawing helpers, the momentum and energy bars and the live regions'
+/// sentences, the velocity plane and dual panel, the plane, the stack, and the start.
+const SCRIPTS: [&str; 6] = [
     include_str!("assets/page.js"),
+    include_str!("assets/bars.js"),
     include_str!("assets/two_body.js"),
     include_str!("assets/plane.js"),
     include_str!("assets/stack.js"),

@@ -68,6 +68,10 @@ pub struct PlanePicture {
     pub p_in: [[f64; 2]; 2],
     pub p_fin: Option<[[f64; 2]; 2]>,
     pub p_total: [f64; 2],
+    /// Each body's kinetic energy `1/2 m_i |v_i|^2` before and after (exact, rounded once):
+    /// the page's energy bars (they add up to the report's `energy.in` and `energy.fin`).
+    pub ke_in: [f64; 2],
+    pub ke_fin: Option<[f64; 2]>,
     /// The impulse on body 2, `m2 (v2' - v2)`.
     pub impulse: Option<[f64; 2]>,
     /// Whether the pucks approach along the line of impact, `n.(v1 - v2) > 0`.
@@ -409,6 +413,8 @@ impl PlaneInput {
             p_in: momenta(&o.v_in),
             p_fin: collides.then(|| momenta(&o.fin)),
             p_total: pair(&o.momentum(&o.v_in)),
+            ke_in: pair(&o.kinetic_each(&o.v_in)),
+            ke_fin: collides.then(|| pair(&o.kinetic_each(&o.fin))),
             impulse: collides.then(|| pair(&o.impulse(1))),
             approaching,
             phi_deg: o.normal.as_ref().and_then(|n| angle_between(&relative, n)),

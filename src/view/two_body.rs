@@ -58,6 +58,31 @@ pub struct Picture {
     /// The time-reversed collision (`--reverse`): `IN' = -FIN`, `FIN' = -IN`, `e' = 1/e`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reverse: Option<Reversed>,
+    /// The bodies' momenta `P = M V` before and after, as `collide solve --show momentum` prints
+    /// them (the page's momentum bars).
+    pub momentum: Momenta,
+    /// The bodies' kinetic energies `1/2 M_i V_i^2` before and after (the page's energy bars;
+    /// they add up to the ellipses' `ke`). `None` for a general tensor, whose energy
+    /// `1/2 V.M.V` has cross terms that belong to neither body.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kinetic: Option<Kinetic>,
+}
+
+/// Each body's momentum before and after, and the total (the same before and after).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Momenta {
+    #[serde(rename = "in")]
+    pub p_in: [f64; 2],
+    pub fin: [f64; 2],
+    pub total: f64,
+}
+
+/// Each body's kinetic energy before and after.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Kinetic {
+    #[serde(rename = "in")]
+    pub ke_in: [f64; 2],
+    pub fin: [f64; 2],
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -282,6 +307,11 @@ pub(super) fn picture(
         axes: e.axes.unwrap_or([[1.0, 0.0], [0.0, 1.0]]),
     };
     let (k1, k2, _) = r.notes.line;
+    let momentum = Momenta {
+        p_in: m.p_in,
+        fin: m.fin,
+        total: m.total,
+    };
     let frames = Frame::standard()
         .into_iter()
         .map(|f| {
@@ -319,6 +349,23 @@ pub(super) fn picture(
             fin: x.fin,
             equals_original: x.equals_original,
         }),
+        kinetic: kinetic(&r.inertia, &momentum, &v.v_in, &v.fin),
+        momentum,
+    })
+}
+
+/// `KE_i = 1/2 P_i V_i` of each body before and after, from the report's momenta `P_i = M_i V_i`
+/// (a product, nothing cancels; halving `V_i` first is exact, and `P_i V_i` never passes through
+/// `V_i^2`, which overflows for `V = 1e308` while `1/2 M V^2` with `M = 1e-308` does not), for
+/// diagonal masses; `None` for a general tensor.
+fn kinetic(m: &[[f64; 2]; 2], p: &Momenta, v_in: &[f64; 2], fin: &[f64; 2]) -> Option<Kinetic> {
+    if m[0][1] != 0.0 || m[1][0] != 0.0 {
+        return None;
+    }
+    let each = |p: &[f64; 2], v: &[f64; 2]| [p[0] * (0.5 * v[0]), p[1] * (0.5 * v[1])];
+    Some(Kinetic {
+        ke_in: each(&p.p_in, v_in),
+        fin: each(&p.fin, fin),
     })
 }
 

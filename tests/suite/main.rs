@@ -44,6 +44,7 @@ mod tables;
 mod track;
 mod units;
 mod view;
+mod view_bars;
 mod view_hostile;
 mod view_layout;
 mod view_node;

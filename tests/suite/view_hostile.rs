@@ -41,8 +41,9 @@ fn typed_pair(text: &str) -> [f64; 2] {
 )]
 fn browser_an_input_error_greys_out_and_labels_the_last_valid_case() {
     let Some(b) = browser() else { return };
-    // m1 = -1 in the plane panel: the pucks, the numbers, the momentum triangle and the normal
-    // parts are the previous case's, so each is marked and labelled; a valid m1 takes it away.
+    // m1 = -1 in the plane panel: the pucks, the numbers, the momentum triangle, the energy
+    // bars and the normal parts are the previous case's, so each is marked and labelled (five
+    // notes); a valid m1 takes it away.
     let bad = read(b, "p1_bad");
     assert_eq!(
         bad["stale"],
@@ -50,7 +51,7 @@ fn browser_an_input_error_greys_out_and_labels_the_last_valid_case() {
         "{bad}"
     );
     let notes = bad["notes"].as_array().unwrap();
-    assert_eq!(notes.len(), 4, "{bad}");
+    assert_eq!(notes.len(), 5, "{bad}");
     assert!(
         notes
             .iter()

@@ -18,33 +18,40 @@ use crate::common::collide;
 /// What the browser did, once for all these tests.
 fn layout() -> &'static Value {
     static RUN: OnceLock<Value> = OnceLock::new();
-    RUN.get_or_init(|| {
-        let dir = scratch("layout");
-        let page = dir.join("view.html");
-        collide()
-            .args(["view", "-o", page.to_str().unwrap()])
-            .assert()
-            .success();
-        let driver = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/suite/view_layout.py");
-        let out = StdCommand::new("python3")
-            .arg(driver)
-            .arg(&page)
-            .arg(&dir)
-            .output()
-            .expect("python3 runs");
-        assert!(
-            out.status.success(),
-            "the layout driver failed: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
-        eprintln!(
-            "layout: {:.1} s in the browser; screenshots in {}",
-            v["seconds"].as_f64().unwrap_or(0.0),
-            dir.display()
-        );
-        v
-    })
+    RUN.get_or_init(|| drive("layout", "view_layout.py"))
+}
+
+/// `collide view`'s first page written to `target/tmp/view/<name>/view.html` and driven in the
+/// browser by `tests/suite/<driver> PAGE OUT_DIR` (its screenshots left beside the page): the
+/// JSON it printed.
+pub(crate) fn drive(name: &str, driver: &str) -> Value {
+    let dir = scratch(name);
+    let page = dir.join("view.html");
+    collide()
+        .args(["view", "-o", page.to_str().unwrap()])
+        .assert()
+        .success();
+    let script = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/suite")
+        .join(driver);
+    let out = StdCommand::new("python3")
+        .arg(script)
+        .arg(&page)
+        .arg(&dir)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        out.status.success(),
+        "{driver} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    eprintln!(
+        "{name}: {:.1} s in the browser; screenshots in {}",
+        v["seconds"].as_f64().unwrap_or(0.0),
+        dir.display()
+    );
+    v
 }
 
 fn f(v: &Value) -> f64 {

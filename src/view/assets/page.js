@@ -2,7 +2,7 @@
 // collide's Rust core, compiled to WebAssembly and embedded in this page (see docs/view.md).
 // The script is in parts by job (src/view/page.rs runs them in order, inside one function whose
 // scope they share): this one (the core, drawing helpers, the velocity plane, players, copy
-// buttons), two_body.js (the velocity plane and the dual panel), plane.js (two pucks in the
+// buttons), bars.js (the momentum and energy bars, the sentences said), two_body.js (the velocity plane and the dual panel), plane.js (two pucks in the
 // plane), stack.js (the superball stack) and start.js.
   const $ = (id) => document.getElementById(id);
   const NS = "http://www.w3.org/2000/svg";

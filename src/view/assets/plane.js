@@ -50,8 +50,9 @@
   function showPlaneError(answer) {
     const ids = {};
     for (const f of planeFields.concat(["frame", "reverse", "exact"])) ids[f] = "p-" + f;
-    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene"],
-      ["pucks-svg", "plane-numbers", "momentum-svg", "normal-svg"]);
+    showError(answer, ids, "p-m1", "plane-error", ["plane-state", "plane-command", "plane-scene", "plane-said"],
+      ["pucks-svg", "plane-numbers", "momentum-svg", "normal-svg", "plane-bars-svg"]);
+    if (!answer.ok) clearTimeout(sayTimers["plane-said"]);
   }
 
 
@@ -62,7 +63,9 @@
     drawMomentum(a.picture);
     drawNormalParts(a.picture);
     drawPlaneNumbers(a.picture);
+    drawPlaneBars(a.picture, planeState);
     syncPlaneSliders(a.picture);
+    if (pucks.dragging < 0) sayLater("plane-said", planeSentence);
     $("plane-state").textContent = a.state;
     $("plane-command").textContent = a.command;
     $("plane-scene").textContent = a.scene;
@@ -493,6 +496,7 @@
         pucks.dragging = -1;
         svg.classList.remove("dragging");
       }
+      say("plane-said", planeSentence());
       // Rescaled once the drag ends if an arrow left the picture.
       if (!pucksFit(pucks.map, planeAnswer.picture)) drawPucks(planeAnswer.picture);
     };

@@ -39,8 +39,9 @@
   function showCaseError(answer) {
     const ids = {};
     for (const f of caseFields.concat(["inertia", "reverse"])) ids[f] = f;
-    showError(answer, ids, "m1", "case-error", ["state", "command", "scene"],
-      ["plane-svg", "case-numbers", "rail-svg", "newton-svg", "minkowski-svg", "space-svg"]);
+    showError(answer, ids, "m1", "case-error", ["state", "command", "scene", "case-said"],
+      ["plane-svg", "case-numbers", "rail-svg", "newton-svg", "minkowski-svg", "space-svg", "bars-svg"]);
+    if (!answer.ok) clearTimeout(sayTimers["case-said"]);
   }
 
 
@@ -52,6 +53,8 @@
     $("state").textContent = caseAnswer.state;
     $("command").textContent = caseAnswer.command;
     $("scene").textContent = caseAnswer.scene;
+    // Said once the drag or the typing ends (a drag's end says it at once).
+    if (!plane.dragging) sayLater("case-said", caseSentence);
   }
 
   // The data box the plane shows: square, around the origin and everything drawn.
@@ -226,8 +229,10 @@
     return [c[0] * d + w, c[1] * d + w];
   }
 
-  // Moves IN to a point of the plane (in the frame on screen), snapped to the step.
-  function moveIn(x, y) {
+  // Moves IN to a point of the plane (in the frame on screen), snapped to the step. `only` (0 or
+  // 1, a car dragged on the rail) rewrites that body's velocity alone where the other's lab
+  // velocity cannot change (the lab, an observer): its typed text stays as it was.
+  function moveIn(x, y, only) {
     const t0 = performance.now();
     const map = plane.map;
     const step = snapStep(map);
@@ -235,8 +240,10 @@
     // In the unit typed (`72 km/h` stays km/h: the core's velocities are in it).
     const unit = splitUnit($("v1").value)[1] || splitUnit($("v2").value)[1];
     const typed = (x) => snapText(x, step) + (unit ? " " + unit : "");
-    $("v1").value = typed(v[0]);
-    $("v2").value = typed(v[1]);
+    const f = currentFrame();
+    const one = (only === 0 || only === 1) && (f === "lab" || Number.isFinite(Number(f)));
+    if (!one || only === 0) $("v1").value = typed(v[0]);
+    if (!one || only === 1) $("v2").value = typed(v[1]);
     const answer = solveCase(true);
     const ms = performance.now() - t0;
     view.lastUpdateMs = ms;
@@ -288,6 +295,7 @@
       flush();
       plane.dragging = false;
       svg.classList.remove("dragging");
+      say("case-said", caseSentence());
     };
     svg.addEventListener("pointerup", end);
     svg.addEventListener("pointercancel", end);
@@ -349,12 +357,15 @@
   }
 
   // ---------------------------------------------------------------- the dual panel
-  const dual = { t: -1, picture: null };
+  const dual = { t: -1, picture: null, dragging: -1, reach: 0, rail: null };
 
   function drawDual(p) {
     dual.picture = p;
     const v = p.in, f = p.fin;
-    const reach = Math.max(Math.abs(v[0]), Math.abs(v[1]), Math.abs(f[0]), Math.abs(f[1])) * 1.1 || 1;
+    // A car dragged on the rail keeps the scale it was grabbed at.
+    const reach = dual.dragging >= 0 && dual.reach ? dual.reach
+      : Math.max(Math.abs(v[0]), Math.abs(v[1]), Math.abs(f[0]), Math.abs(f[1])) * 1.1 || 1;
+    dual.reach = reach;
     const tBox = [-1.1, 1.1];
     const x = (i, t) => (t < 0 ? v[i] * t : f[i] * t);
     const colours = ["var(--body1)", "var(--body2)"];
@@ -399,6 +410,7 @@
       : p.e === 1 ? "e = 1: the path reflects in the dashed line" : "only e = 1 reflects the path in the line";
     el(svg, "text", { x: sq.x + 6, y: sq.y + sq.h - 8, class: "tick", "paint-order": "stroke", stroke: "#fff", "stroke-width": 3 }, note);
     dual.map = { reach, x, map2, space: a, axes: axesOf, area };
+    drawRailBars(p);
     drawDualTime();
   }
 
@@ -445,6 +457,7 @@
     if (W !== svg.viewBox.baseVal.width) { svg.setAttribute("viewBox", "0 0 " + W + " 132"); scaleText(svg); }
     const L = 30, R = W - 30, car = 84, D = 22;
     const X = (u) => L + car + (u / reach + 1) * (R - L - 2 * car) / 2;
+    dual.rail = { X, u: (sx) => ((sx - L - car) * 2 / (R - L - 2 * car) - 1) * reach };
     el(svg, "line", { x1: L, x2: R, y1: D + 86, y2: D + 86, stroke: "#6b7280", "stroke-width": 3 });
     for (const u of ticks(-reach, reach, (R - L) / kOf(svg) > 600 ? 8 : 4)) {
       el(svg, "line", { x1: r2(X(u)), x2: r2(X(u)), y1: D + 86, y2: D + 92, stroke: "#6b7280" });
@@ -459,10 +472,11 @@
       mass: m[i][i], v: t < 0 ? p.in[i] : p.fin[i],
     }));
     for (const b of bodies) {
-      el(svg, "rect", { x: r2(b.left), y: D + 46, width: car, height: 36, rx: 7, fill: b.colour });
-      el(svg, "circle", { cx: r2(b.left + 18), cy: D + 84, r: 6, fill: "#1f2937" });
-      el(svg, "circle", { cx: r2(b.left + car - 18), cy: D + 84, r: 6, fill: "#1f2937" });
-      el(svg, "text", { x: r2(b.left + car / 2), y: D + 69, "text-anchor": "middle", fill: "#fff", class: "label" }, "M" + (b.name === "1" ? "\u2081" : "\u2082") + " " + short(b.mass));
+      el(svg, "rect", { x: r2(b.left), y: D + 46, width: car, height: 36, rx: 7, fill: b.colour, class: t < 0 ? "car handle" : "car", "data-body": b.name });
+      // The wheels and the name are part of the car to a pointer (the car's rectangle takes it).
+      el(svg, "circle", { cx: r2(b.left + 18), cy: D + 84, r: 6, fill: "#1f2937", "pointer-events": "none" });
+      el(svg, "circle", { cx: r2(b.left + car - 18), cy: D + 84, r: 6, fill: "#1f2937", "pointer-events": "none" });
+      el(svg, "text", { x: r2(b.left + car / 2), y: D + 69, "text-anchor": "middle", fill: "#fff", class: "label", "pointer-events": "none" }, "M" + (b.name === "1" ? "\u2081" : "\u2082") + " " + short(b.mass));
       const dir = b.v >= 0 ? 1 : -1;
       const cx = b.left + car / 2;
       if (b.v !== 0) {
@@ -475,7 +489,63 @@
   }
 
 
+  // PhET's starting positions: before the collision (t < 0 on screen) a car dragged along the
+  // rail moves to where the pointer is. The cars meet at x = 0 at t = 0, so car i at x at time t
+  // moves with V_i = x / t (in the frame on screen); the other body's velocity stays, and the
+  // case is solved again as a drag of IN is (`moveIn`: the step, the unit, the frame). The rail
+  // keeps its scale during the drag. Near t = 0 every position would need a huge velocity: a
+  // car is dragged from t <= -0.1.
+  function setupRailDrag() {
+    const svg = $("rail-svg");
+    let grab = 0, pending = null, queued = false;
+    const railX = (ev) => { const r = svg.getBoundingClientRect(); return (ev.clientX - r.left) * svg.viewBox.baseVal.width / r.width; };
+    const flush = () => {
+      queued = false;
+      if (!pending || dual.dragging < 0) return;
+      const u = dual.rail.u(railX(pending) - grab);
+      pending = null;
+      const p = caseAnswer.picture, v = u / dual.t;
+      if (!isFinite(v)) return;
+      moveIn(dual.dragging === 0 ? v : p.in[0], dual.dragging === 1 ? v : p.in[1], dual.dragging);
+    };
+    holdHandles(svg);
+    svg.addEventListener("pointerdown", (ev) => {
+      const target = ev.target;
+      if (!core || ev.button !== 0 || !target.classList || !target.classList.contains("car") || !(dual.t <= -0.1)) return;
+      const i = Number(target.dataset.body) - 1;
+      cancelAnimationFrame(plane.animation);
+      dual.dragging = i;
+      plane.dragging = true;
+      plane.dragW = caseAnswer.picture.w;
+      grab = railX(ev) - dual.rail.X(caseAnswer.picture.in[i] * dual.t);
+      svg.setPointerCapture(ev.pointerId);
+      svg.classList.add("dragging");
+      ev.preventDefault();
+    });
+    svg.addEventListener("pointermove", (ev) => {
+      if (dual.dragging < 0) return;
+      pending = ev;
+      if (!queued) { queued = true; requestAnimationFrame(flush); }
+    });
+    const end = (ev) => {
+      if (dual.dragging < 0) return;
+      if (ev.type === "pointerup") pending = ev;
+      try {
+        flush();
+      } finally {
+        dual.dragging = -1;
+        plane.dragging = false;
+        svg.classList.remove("dragging");
+      }
+      drawDual(caseAnswer.picture);
+      say("case-said", caseSentence());
+    };
+    svg.addEventListener("pointerup", end);
+    svg.addEventListener("pointercancel", end);
+  }
+
   function setupDual() {
+    setupRailDrag();
     // Two units of time (t from -1 to 1) in four seconds at 1x, round and round; 40 steps.
     animation("dual", { start: -1, end: () => 1, rate: 0.5, step: () => 0.05, get: () => dual.t,
       set: (t) => { dual.t = t; drawDualTime(); } });
