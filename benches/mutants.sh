@@ -10,6 +10,7 @@
 #   benches/mutants.sh motion columns        # some of them
 #   benches/mutants.sh impact solve          # one file each: rigid/impact.rs, space/solve.rs
 #                                            # (areas rigid and space: every file of the folder)
+#   benches/mutants.sh view engine           # src/view/*.rs (tests view*), table/engine.rs
 #   MUTANTS_SHARD=3/8 benches/mutants.sh contact   # one eighth of an area (to pause between)
 #   MUTANTS_SHARD=0/12 MUTANTS_SHARDING=round-robin benches/mutants.sh contact
 #                                            # every twelfth mutant: a sample of the whole area
@@ -41,9 +42,11 @@ declare -A FILES=(
     [impact]="src/rigid/impact.rs"
     [space]="src/space/*.rs"
     [solve]="src/space/solve.rs"
+    [view]="src/view/*.rs"
+    [engine]="src/table/engine.rs"
 )
 declare -A TESTS=(
-    [contact]="contact::"
+    [contact]="contact:: contact_methods:: contact_outputs:: contact_refusals::"
     [units]="units homework:: problems:: cli:: properties::hostile properties::parsers --skip view_"
     [motion]="track::"
     [columns]="tables:: table::"
@@ -51,6 +54,8 @@ declare -A TESTS=(
     [impact]="rigid"
     [space]="space:: plane frames:: metamorphic:: one_answer:: knowns::"
     [solve]="space:: plane knowns:: asked::"
+    [view]="view --skip browser --skip view_node"
+    [engine]="tables:: table:: sweeps:: parquet"
 )
 areas=("$@")
 [ ${#areas[@]} -eq 0 ] && areas=(motion columns units contact)
@@ -60,7 +65,8 @@ here=$(pwd)
 tree=${COLLIDE_MUTANTS_TREE:-/tmp/collide-mutants}
 mkdir -p "$tree"
 [ -d "$tree/target" ] || { [ -d target ] && cp -a target "$tree/"; }
-for part in Cargo.toml Cargo.lock README.md src tests benches scenarios examples docs wasm; do
+# (every workspace member and build.rs: cargo metadata reads them all)
+for part in Cargo.toml Cargo.lock README.md build.rs src tests benches scenarios examples docs wasm python; do
     rm -rf "${tree:?}/$part"
     cp -a "$part" "$tree/"
 done

@@ -7,12 +7,13 @@
 //! 4.5e-13). The bound docs/rigid.md states, and this test checks in every case, is
 //! `2 estimate + 1e-13`.
 
-use collide::rigid::algebra::Mat;
+use collide::rigid::algebra::{Mat, apply, mul, transpose};
 use collide::rigid::body::{Body, Mobility, Motion};
 use collide::rigid::impact::Problem;
 use collide::rigid::jacobian::{Contact, Pair};
-use collide::rigid::laws::{Law, Tangential};
-use collide::values::rational::{Q, from_f64, to_f64};
+use collide::rigid::laws::{Law, Mode, Tangential};
+use collide::rigid::slip::Slip;
+use collide::values::rational::{Q, from_f64, int, ratio, to_f64};
 
 /// A small deterministic generator (xorshift64*): a number in `(-3, 3)`.
 struct Draw(u64);
@@ -109,6 +110,7 @@ fn problem(d: &[f64], dim: usize, mu: f64, e: f64, law: Law) -> Problem {
 fn the_ode_error_is_within_twice_its_estimate_plus_1e_13_of_routh() {
     let mut draw = Draw(0x0DE5_0046_2026_1126);
     let (mut cases, mut over, mut worst, mut largest) = (0, 0, 0.0f64, 0.0f64);
+    let mut compression = 0.0f64;
     let mut beyond = Vec::new();
     let laws = [Law::Poisson, Law::Newton, Law::Stronge];
     while cases < 300 {
@@ -129,6 +131,12 @@ fn the_ode_error_is_within_twice_its_estimate_plus_1e_13_of_routh() {
         }) / size;
         assert_eq!(to_f64(&got[2]).unwrap(), 0.0);
         let estimate = space.impact.ode.as_ref().unwrap().error;
+        // The compression impulse (item 5c) against Routh's exact one.
+        let lc = to_f64(&plane.impact.compression).unwrap();
+        let c = (to_f64(&space.impact.compression).unwrap() - lc).abs() / lc;
+        // Measured: at most 4.4e-12 (relative); allowed 1e-11, as the impulse.
+        assert!(c <= 1e-11, "{law:?} mu {mu} e {e}: compression {c:e}");
+        compression = compression.max(c);
         if err > 2.0 * estimate + 1e-13 {
             beyond.push(format!(
                 "{law:?} mu {mu} e {e}: error {err:e}, estimate {estimate:e}"
@@ -143,9 +151,260 @@ fn the_ode_error_is_within_twice_its_estimate_plus_1e_13_of_routh() {
     }
     eprintln!(
         "{cases} planar cases: the error exceeded the estimate in {over} (at most {worst:.2}x); \
-         largest error {largest:.2e}"
+         largest error {largest:.2e}; compression {compression:.2e}"
     );
     assert!(beyond.is_empty(), "{beyond:#?}");
     // The measurement above, as it stands: most cases are at the rounding floor.
     assert!(over > 0 && largest < 1e-11, "{over} {largest}");
+}
+
+/// The rotation of the quaternion `(1, 2, 2, 4) / 5`, exact in rationals:
+/// `R = [[-15, 0, 20], [16, -15, 12], [12, 20, 9]] / 25` (each row of length 25, `R R^T = 1`).
+fn turned() -> Mat {
+    let rows = [[-15, 0, 20], [16, -15, 12], [12, 20, 9]];
+    rows.iter()
+        .map(|r| r.iter().map(|&x| ratio(x, 25)).collect())
+        .collect()
+}
+
+/// A standing contact pushed sideways (issue 46 item 5d): a body of mass 1 with `I_zz = 1/3`
+/// centred at (0, 1) touches the floor at (1/2, 0) moving at `v = (-1, -1)`, `omega = 1`: the
+/// contact point moves at `v + omega (-r_y, r_x) = (-1, -1) + (1, 1/2) = (0, -1/2)`, so it does
+/// not slip, but `K = 1 + 3 (1, 1/2)(1, 1/2)^T` has `K_tn / K_tt = (3/2) / 4 = 3/8`: the normal
+/// impulse pushes the contact sideways, and it sticks for `mu >= 3/8` and slips (one way)
+/// below. In the plane (`dim = 2`) Routh's answer is exact; in space (`dim = 3`, `I = diag(1,
+/// 1, 1/3)`, every z zero) the ODE starts from a stopped slip; `turn` rotates every vector and
+/// the inertia tensor (`R I R^T`) of the space scene.
+fn standing(dim: usize, turn: Option<&Mat>, mu: Q, law: Law) -> Problem {
+    let vec3 = |x: Vec<Q>| -> Vec<Q> {
+        let mut x = x;
+        if dim == 3 {
+            x.push(Q::ZERO);
+        }
+        turn.map_or(x.clone(), |r| apply(r, &x))
+    };
+    let third = ratio(1, 3);
+    let (omega, inertia) = if dim == 2 {
+        (vec![int(1)], vec![vec![third]])
+    } else {
+        let i = vec![
+            vec![int(1), Q::ZERO, Q::ZERO],
+            vec![Q::ZERO, int(1), Q::ZERO],
+            vec![Q::ZERO, Q::ZERO, third],
+        ];
+        let i = turn.map_or(i.clone(), |r| mul(&mul(r, &i), &transpose(r)));
+        let w = vec![Q::ZERO, Q::ZERO, int(1)];
+        (turn.map_or(w.clone(), |r| apply(r, &w)), i)
+    };
+    let rod = Body::new(
+        1,
+        Some(int(1)),
+        vec3(vec![Q::ZERO, int(1)]),
+        Mobility::Free {
+            inertia: Some(inertia),
+        },
+        None,
+    )
+    .unwrap();
+    let floor = Body::new(
+        2,
+        None,
+        vec3(vec![Q::ZERO, Q::ZERO]),
+        Mobility::Immovable { word: "floor" },
+        None,
+    )
+    .unwrap();
+    let rest = Motion {
+        v: vec3(vec![Q::ZERO, Q::ZERO]),
+        omega: vec![Q::ZERO; if dim == 2 { 1 } else { 3 }],
+    };
+    Problem {
+        pair: Pair {
+            bodies: [rod, floor],
+            contact: Contact {
+                point: vec3(vec![ratio(1, 2), Q::ZERO]),
+                normal: vec3(vec![Q::ZERO, int(-1)]),
+            },
+        },
+        motions: [
+            Motion {
+                v: vec3(vec![int(-1), int(-1)]),
+                omega,
+            },
+            rest,
+        ],
+        e: ratio(1, 2),
+        law,
+        tangential: Tangential::Coulomb(mu),
+        approx: false,
+        rtol: 1e-10,
+        si: false,
+    }
+}
+
+/// `|a - b| / |b|` of two impulses.
+fn relative(a: &[f64], b: &[f64]) -> f64 {
+    let size = b.iter().fold(0.0f64, |s, x| s.hypot(*x));
+    a.iter().zip(b).fold(0.0f64, |s, (x, y)| s.hypot(x - y)) / size
+}
+
+fn floats(v: &[Q]) -> Vec<f64> {
+    v.iter().map(|x| to_f64(x).unwrap()).collect()
+}
+
+#[test]
+fn a_standing_contact_pushed_sideways_is_routh_in_space_and_turned() {
+    // Worst relative error measured over the twelve cases below: 5.8e-15 (space) and 6.1e-15
+    // (turned); the issue asks for 1e-12, a margin of over 150.
+    let r = turned();
+    let mut worst = [0.0f64; 2];
+    for (mu, mode) in [(ratio(1, 2), Mode::Stick), (ratio(1, 5), Mode::Slip)] {
+        for law in [Law::Poisson, Law::Newton, Law::Stronge] {
+            let plane = collide::rigid::solve(standing(2, None, mu.clone(), law)).unwrap();
+            assert_eq!(plane.impact.mode, mode, "{law:?}");
+            if law == Law::Poisson {
+                // By hand, with w_n = 1/2, K_nn = 7/4, K_tn = 3/2 (sign aside), K_tt = 4.
+                // Stick: K_nn - K_tn^2 / K_tt = 19/16, l_c = (1/2) / (19/16) = 8/19, P_n =
+                // (3/2) l_c = 12/19, |P_t| = (3/8) P_n = 9/38. Slip (mu = 1/5, the way that
+                // K_tn pushes): K_nn - mu K_tn = 29/20, l_c = 10/29, P_n = 15/29, |P_t| = 3/29.
+                let (lc, pn, pt) = if mode == Mode::Stick {
+                    (ratio(8, 19), ratio(12, 19), ratio(9, 38))
+                } else {
+                    (ratio(10, 29), ratio(15, 29), ratio(3, 29))
+                };
+                let p = &plane.impact.impulse;
+                let abs = |x: &Q| if *x < Q::ZERO { -x.clone() } else { x.clone() };
+                assert_eq!((abs(&p[0]), abs(&p[1])), (pt, pn));
+                assert_eq!(plane.impact.compression, lc);
+            }
+            let mut exact = floats(&plane.impact.impulse);
+            exact.push(0.0);
+            let lc = to_f64(&plane.impact.compression).unwrap();
+            let space = collide::rigid::solve(standing(3, None, mu.clone(), law)).unwrap();
+            let rotated = collide::rigid::solve(standing(3, Some(&r), mu.clone(), law)).unwrap();
+            // The turned scene's impulse turned back: R^T P.
+            let back = apply(&transpose(&r), &rotated.impact.impulse);
+            for (k, (got, o)) in [(&space.impact.impulse, &space), (&back, &rotated)]
+                .into_iter()
+                .enumerate()
+            {
+                assert_eq!(o.impact.mode, mode, "{law:?} {k}");
+                let err = relative(&floats(got), &exact);
+                assert!(err <= 1e-12, "{law:?} mu {mu}: {k}: {err:e}");
+                worst[k] = worst[k].max(err);
+                // The compression impulse (item 5c): l_c with |n| = 1.
+                let c = to_f64(&o.impact.compression).unwrap();
+                assert!((c - lc).abs() <= 1e-12 * lc, "{law:?} {k}: {c} {lc}");
+            }
+        }
+    }
+    eprintln!(
+        "standing contact: worst relative error {:.2e} (space), {:.2e} (turned)",
+        worst[0], worst[1]
+    );
+}
+
+/// The slip ODE `dw/dP_n = -K (1, mu s)`, `s = w_t / |w_t|`, `dP_t/dP_n = mu s`, in the contact
+/// frame, written again here: the state `(w_n, w_t1, w_t2, P_t1, P_t2)`.
+fn slip_rate(k: &[[f64; 3]; 3], mu: f64, y: [f64; 5]) -> [f64; 5] {
+    let s = y[1].hypot(y[2]);
+    let f = [1.0, mu * y[1] / s, mu * y[2] / s];
+    let dw = |r: usize| -(k[r][0] * f[0] + k[r][1] * f[1] + k[r][2] * f[2]);
+    [dw(0), dw(1), dw(2), f[1], f[2]]
+}
+
+/// One classical fourth-order Runge-Kutta step of length `h`.
+fn rk4(k: &[[f64; 3]; 3], mu: f64, y: [f64; 5], h: f64) -> [f64; 5] {
+    let at = |y: [f64; 5], d: [f64; 5], c: f64| std::array::from_fn(|i| y[i] + c * d[i]);
+    let k1 = slip_rate(k, mu, y);
+    let k2 = slip_rate(k, mu, at(y, k1, h / 2.0));
+    let k3 = slip_rate(k, mu, at(y, k2, h / 2.0));
+    let k4 = slip_rate(k, mu, at(y, k3, h));
+    std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+}
+
+/// The reference of the turning slip: RK4 with `n` steps of `1/n` while `w_n > 0`, the last
+/// step's length bisected until `w_n` changes sign at adjacent binary64 lengths (the
+/// compression `P_c`), then `n` equal steps to Poisson's end `(1 + e) P_c`. Returns `P_c` and
+/// the state there.
+fn reference(k: &[[f64; 3]; 3], mu: f64, e: f64, w0: [f64; 3], n: usize) -> (f64, [f64; 5]) {
+    let mut y = [w0[0], w0[1], w0[2], 0.0, 0.0];
+    let mut x = 0.0;
+    let h = 1.0 / n as f64;
+    while rk4(k, mu, y, h)[0] > 0.0 {
+        y = rk4(k, mu, y, h);
+        x += h;
+    }
+    let (mut lo, mut hi) = (0.0, h);
+    while lo + (hi - lo) / 2.0 > lo && lo + (hi - lo) / 2.0 < hi {
+        let mid = lo + (hi - lo) / 2.0;
+        if rk4(k, mu, y, mid)[0] > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    y = rk4(k, mu, y, hi);
+    let pc = x + hi;
+    let h = e * pc / n as f64;
+    for _ in 0..n {
+        y = rk4(k, mu, y, h);
+    }
+    (pc, y)
+}
+
+#[test]
+fn a_turning_slip_follows_a_fixed_step_rk4_of_the_slip_ode() {
+    // K couples the normal to t1 and t1 to t2, and the slip starts along t2 + a bit of t1: the
+    // push K_tn (along t1) and the friction (against the slip) turn the slip during the impact (by
+    // 23.2 degrees), which slips throughout (mu = 0.3 is too little to stop it), Poisson e
+    // = 1/2. The reference: compression where w_n = 0 (a last RK4 step whose length is bisected
+    // until w_n changes sign at adjacent binary64 lengths), then RK4 to P_n = 3/2 P_c, 20,000
+    // steps each: good to about 1e-13 (the one at 2,000 steps is 8.9e-14 from it).
+    // Measured at the default rtol 1e-10: the impulse 4.1e-12 (relative) from the reference,
+    // the compression 1.35e-12, the error estimate 1.8e-10 (here the truncation, which the
+    // estimate sees, dominates the rounding); the checks allow 1e-11 (a margin of 2.4) and the
+    // bound docs/rigid.md states, 2 estimate + 1e-13, at rtol 1e-10 and 1e-12 (there: 8.9e-14,
+    // the reference's own level, estimate 4.1e-12).
+    let k = [[2.0, 0.8, 0.0], [0.8, 3.0, 0.5], [0.0, 0.5, 2.5]];
+    let (mu, e) = (0.3, 0.5);
+    let w0 = [1.0, 0.3, 2.0];
+    let slip = Slip {
+        k,
+        w0,
+        mu,
+        e,
+        law: Law::Poisson,
+    };
+    let (pc, y) = reference(&k, mu, e, w0, 20_000);
+    let (pc_coarse, y_coarse) = reference(&k, mu, e, w0, 2_000);
+    let reference = [(1.0 + e) * pc, y[3], y[4]];
+    // The reference's own error: RK4's falls 10^4-fold from 2,000 to 20,000 steps a phase, so
+    // the coarser run's distance is about its error.
+    let own = relative(
+        &[(1.0 + e) * pc_coarse, y_coarse[3], y_coarse[4]],
+        &reference,
+    );
+    // It truly turns: the angle between the slip before and after.
+    let turn = (w0[1] * y[2] - w0[2] * y[1]).atan2(w0[1] * y[1] + w0[2] * y[2]);
+    assert!(turn.abs().to_degrees() > 20.0, "{}", turn.to_degrees());
+
+    let got = slip.estimated(1e-10).unwrap();
+    assert_eq!((got.run.mode, got.run.stick), (Mode::Slip, None));
+    let err = relative(&got.run.impulse, &reference);
+    let compression = (got.run.compression - pc).abs() / pc;
+    let fine = slip.estimated(1e-12).unwrap();
+    let fine_err = relative(&fine.run.impulse, &reference);
+    eprintln!(
+        "turning slip: turned {:.1} degrees; impulse error {err:.2e}, compression \
+         {compression:.2e}, estimate {:.2e}; at rtol 1e-12 {fine_err:.2e}, estimate {:.2e}; \
+         the reference's own error {own:.2e}",
+        turn.to_degrees(),
+        got.error,
+        fine.error
+    );
+    assert!(own <= 1e-13, "{own:e}");
+    assert!(err <= 1e-11 && err <= 2.0 * got.error + 1e-13, "{err:e}");
+    assert!(compression <= 1e-11, "{compression:e}");
+    assert!(fine_err <= 2.0 * fine.error + 1e-13, "{fine_err:e}");
 }

@@ -520,9 +520,11 @@ fn a_scene_in_space_turns_with_its_axes() {
     for mu in ["0", "0.4"] {
         let (_, a) = scene("axes", &scene_of(false, mu));
         let (_, b) = scene("axes-cycled", &scene_of(true, mu));
-        // Each run is within 2 estimate + 1e-13 of the truth (relative, docs/rigid.md), and the
-        // values here are of size 1 to 10.
-        let tol = if mu == "0" { 0.0 } else { 1e-11 };
+        // With friction the ODE runs in a contact frame built from the normal and the slip,
+        // which the cycle permutes like every vector: measured, the answers are equal bit for
+        // bit (the error estimate, 3.7e-12, is the same too). 1e-14 (a few ulps of values of
+        // size 1 to 10) lets a frame built in another order round differently, nothing more.
+        let tol = if mu == "0" { 0.0 } else { 1e-14 };
         for body in 0..2 {
             for key in ["v", "omega"] {
                 let x = &a["fin"][body][key];
