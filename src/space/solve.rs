@@ -573,15 +573,15 @@ fn impulse_restitution(v_in: &[Vec<Exact>], fin: &[Vec<Exact>]) -> Option<Q> {
     Some(-along(&fin[0], &fin[1]) / approach)
 }
 
+/// A solution point: the unknowns' values, and per unknown whether it hangs on an irrational
+/// root.
+type Point = (Vec<Q>, Vec<bool>);
+
 /// The solutions of the equations in `m` unknowns: the values, and per unknown whether it is
 /// approximate. The linear laws leave `x = x0 + sum t_k z_k`; where a parameter `t_k` is an
 /// irrational root, exactly the unknowns with `z_k[i] != 0` hang on it, and the others are
 /// `x0[i]`, fixed exactly by the linear laws alone.
-fn solve_system(
-    eqs: &[(Law, Poly)],
-    m: usize,
-    last: &[usize],
-) -> Result<Vec<(Vec<Q>, Vec<bool>)>, SolveError> {
+fn solve_system(eqs: &[(Law, Poly)], m: usize, last: &[usize]) -> Result<Vec<Point>, SolveError> {
     let mut linear: Vec<(Law, &Poly)> = eqs
         .iter()
         .filter(|(_, p)| p.is_linear())
