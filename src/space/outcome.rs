@@ -118,6 +118,13 @@ impl Marks {
         self.all || self.mass(i) || Marks::body(&self.v_in, i) || Marks::body(&self.fin, i)
     }
 
+    /// Component `k` of body `i`'s change (`dv`, `dp`, the impulse): its mass and that
+    /// component before and after (`J_y = m2 (v2'y - v2y)` is exact when momentum fixes
+    /// `v2'y` exactly, whatever a root does to `v2'x`).
+    pub fn change_at(&self, i: usize, k: usize) -> bool {
+        self.mass(i) || self.v_in(i, k) || self.fin(i, k)
+    }
+
     /// Before and after swapped (the event reversed in time).
     fn reversed(&self) -> Marks {
         Marks {

@@ -428,17 +428,20 @@ fn solve_with(given: &Statement, closed_forms: bool) -> Result<Solved, SolveErro
         .collect();
     let stick = e_value.as_ref().is_some_and(Zero::is_zero) && given.normal.is_none();
     let xs = match stuck_together(given, &b.unknowns, stick && closed_forms) {
-        Some(x) => vec![(x, false)],
+        Some(x) => vec![(x, vec![false; m])],
         None => solve_system(&eqs, m, &last)?,
     };
     let solutions = xs
         .into_iter()
-        .map(|(x, approx)| {
-            // A value that involves no unknown (a typed velocity, a given e) is exact whatever
-            // the roots are: `≈4` beside a typed 4, or `e = ≈1 (elastic)`, would contradict it.
+        .map(|(x, rooted)| {
+            // Only a value that involves an unknown the root moves is approximate: a typed
+            // velocity, a given e, or an unknown that the linear laws fix alone (momentum's
+            // v2'y = -1/2 beside an irrational v1'x) is exact whatever the roots are: `≈4`
+            // beside a typed 4, or `e = ≈1 (elastic)`, would contradict it.
+            let approx = rooted.iter().any(|r| *r);
             let value = |p: &Poly| {
                 let q = p.eval(&x);
-                if approx && p.vars().next().is_some() {
+                if p.vars().any(|i| rooted[i]) {
                     Exact::Approx(q)
                 } else {
                     Exact::Rational(q)
@@ -570,13 +573,15 @@ fn impulse_restitution(v_in: &[Vec<Exact>], fin: &[Vec<Exact>]) -> Option<Q> {
     Some(-along(&fin[0], &fin[1]) / approach)
 }
 
-/// The solutions of the equations in `m` unknowns: the values, and whether they are
-/// approximate (an irrational root).
-fn solve_system(
-    eqs: &[(Law, Poly)],
-    m: usize,
-    last: &[usize],
-) -> Result<Vec<(Vec<Q>, bool)>, SolveError> {
+/// A solution point: the unknowns' values, and per unknown whether it hangs on an irrational
+/// root.
+type Point = (Vec<Q>, Vec<bool>);
+
+/// The solutions of the equations in `m` unknowns: the values, and per unknown whether it is
+/// approximate. The linear laws leave `x = x0 + sum t_k z_k`; where a parameter `t_k` is an
+/// irrational root, exactly the unknowns with `z_k[i] != 0` hang on it, and the others are
+/// `x0[i]`, fixed exactly by the linear laws alone.
+fn solve_system(eqs: &[(Law, Poly)], m: usize, last: &[usize]) -> Result<Vec<Point>, SolveError> {
     let mut linear: Vec<(Law, &Poly)> = eqs
         .iter()
         .filter(|(_, p)| p.is_linear())
@@ -605,6 +610,12 @@ fn solve_system(
         x
     };
     let free = affine.basis.len();
+    // Which unknowns a parameter moves, if its value is approximate.
+    let rooted = |approx: bool| -> Vec<bool> {
+        (0..m)
+            .map(|i| approx && affine.basis.iter().any(|z| !z[i].is_zero()))
+            .collect()
+    };
     let in_t: Vec<(Law, Poly)> = quadratic
         .iter()
         .map(|(law, p)| (*law, p.substitute(&affine.x0, &affine.basis)))
@@ -636,7 +647,7 @@ fn solve_system(
         }
     };
     match free {
-        0 => Ok(vec![(affine.x0.clone(), false)]),
+        0 => Ok(vec![(affine.x0.clone(), vec![false; m])]),
         1 => {
             let Some((_, p)) = in_t.first() else {
                 return Err(too_few(0));
@@ -647,7 +658,7 @@ fn solve_system(
                 .into_iter()
                 .map(|r| {
                     let approx = matches!(r, Root::Approx(_));
-                    (point(&[r.value().clone()]), approx)
+                    (point(&[r.value().clone()]), rooted(approx))
                 })
                 .collect())
         }
@@ -668,7 +679,7 @@ fn solve_system(
             };
             Ok(roots
                 .into_iter()
-                .map(|(t, exact)| (point(&t), !exact))
+                .map(|(t, exact)| (point(&t), rooted(!exact)))
                 .collect())
         }
         _ => Err(too_few(in_t.len().min(free))),

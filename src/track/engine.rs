@@ -28,6 +28,9 @@ pub(super) struct Sim<'a> {
     /// Half the sum of each adjacent pair's sizes: their centres' distance at contact.
     reach: Vec<f64>,
     slots: Slots,
+    /// The track's starting extent: the largest magnitude of a wall or of a body's edge. Every
+    /// position was computed from one of these, and keeps its rounding (see `check`).
+    extent: f64,
     collisions: u64,
     /// Whether pi billiards may take the unrolled loop (tests compare it with the general one).
     unrolled: bool,
@@ -52,6 +55,12 @@ impl<'a> Sim<'a> {
                 .map(|p| (p[0].size + p[1].size) / 2.0)
                 .collect(),
             slots: Slots::new(n + 1),
+            extent: b
+                .iter()
+                .map(|b| b.x.abs() + b.size / 2.0)
+                .chain(track.left_wall.map(f64::abs))
+                .chain(track.right_wall.map(f64::abs))
+                .fold(0.0, f64::max),
             collisions: 0,
             unrolled: true,
         };
@@ -259,7 +268,14 @@ impl<'a> Sim<'a> {
     }
 
     /// Checks, at time `t`, that bodies `lo..=hi` are in order with their neighbours and inside
-    /// the walls, allowing rounding (see `motion::slack`).
+    /// the walls, allowing rounding (see `motion::slack`): of the positions' magnitudes now and
+    /// at the start (the track's extent, from which every position was computed), and of the
+    /// time, where each body moves by `|v| slack(t)`. An event's time is rounded to an ulp of
+    /// `t`: a body put exactly onto a wall at it stands where its neighbour, computed at that
+    /// rounded time with the speed it had then, may be `|v| ulp(t)` away; near the origin the
+    /// positions' magnitudes now allow nothing, and a pair at the left wall at 0 was "broken"
+    /// by 2e-17 after 16 collisions (`-m 1,3 -x 1,3 -v -1,1 --left-wall 0 --right-wall 4
+    /// -e 0.03`), and three bodies collapsing onto it by 1.2e-15 (issue 41).
     fn check(&self, lo: usize, hi: usize, t: f64) -> Result<(), Broken> {
         let n = self.n();
         let broken = |what: String| Broken {
@@ -268,11 +284,16 @@ impl<'a> Sim<'a> {
             what,
         };
         let pos = |i: usize| self.at(i, t).0;
+        // Body `i`'s rounding beyond its position's magnitude now: what the time's rounding
+        // moves it by, and the track's extent.
+        let drift = |i: usize| self.at(i, t).1.abs() * slack(t.abs()) + slack(self.extent);
         for i in lo.saturating_sub(1)..(hi + 1).min(n - 1) {
             let (x1, x2) = (pos(i), pos(i + 1));
             let gap = x2 - x1 - self.reach[i];
             let room = slack(x1.abs() + x2.abs() + self.x[i].abs() + self.x[i + 1].abs())
-                + slack(self.reach[i]);
+                + slack(self.reach[i])
+                + drift(i)
+                + drift(i + 1);
             if gap.is_nan() || gap < -room {
                 return Err(broken(format!(
                     "bodies {} and {} overlap (x = {}, {})",
@@ -287,7 +308,8 @@ impl<'a> Sim<'a> {
             && lo == 0
         {
             let x = pos(0);
-            if x - self.half(0) - w < -slack(x.abs() + self.x[0].abs() + w.abs() + self.half(0)) {
+            let room = slack(x.abs() + self.x[0].abs() + w.abs() + self.half(0)) + drift(0);
+            if x - self.half(0) - w < -room {
                 return Err(broken(format!(
                     "body 1 is left of the left wall at {w} (x = {x})"
                 )));
@@ -298,7 +320,7 @@ impl<'a> Sim<'a> {
         {
             let x = pos(n - 1);
             let h = self.half(n - 1);
-            if w - x - h < -slack(x.abs() + self.x[n - 1].abs() + w.abs() + h) {
+            if w - x - h < -(slack(x.abs() + self.x[n - 1].abs() + w.abs() + h) + drift(n - 1)) {
                 return Err(broken(format!(
                     "body {n} is right of the right wall at {w} (x = {x})"
                 )));

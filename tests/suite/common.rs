@@ -97,10 +97,9 @@ pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
     }
 }
 
-/// proptest configuration for a run that draws new cases each time: `cases` cases from a seed
-/// taken from the clock (or `COLLIDE_PROPTEST_SEED`). The seed goes to stderr, which the test
-/// harness prints with a failure, so the failing run can be replayed.
-pub fn proptest_config_fresh(cases: u32) -> proptest::test_runner::Config {
+/// A seed taken from the clock (or `COLLIDE_PROPTEST_SEED`), printed to stderr, which the test
+/// harness shows with a failure, so the failing run can be replayed.
+pub fn fresh_seed() -> u64 {
     let seed = std::env::var("COLLIDE_PROPTEST_SEED")
         .ok()
         .and_then(|s| s.parse().ok())
@@ -109,6 +108,14 @@ pub fn proptest_config_fresh(cases: u32) -> proptest::test_runner::Config {
             now.map_or(0, |d| d.as_nanos() as u64 ^ u64::from(std::process::id()))
         });
     eprintln!("proptest seed {seed} (COLLIDE_PROPTEST_SEED={seed} replays this run)");
+    seed
+}
+
+/// proptest configuration for a run that draws new cases each time: `cases` cases from a seed
+/// taken from the clock (or `COLLIDE_PROPTEST_SEED`). The seed goes to stderr, which the test
+/// harness prints with a failure, so the failing run can be replayed.
+pub fn proptest_config_fresh(cases: u32) -> proptest::test_runner::Config {
+    let seed = fresh_seed();
     proptest::test_runner::Config {
         cases,
         rng_seed: proptest::test_runner::RngSeed::Fixed(seed),

@@ -475,3 +475,37 @@ fn exact_output_marks_only_what_hangs_on_an_irrational_root() {
     );
     assert!(plain.get("approx").is_none(), "{plain}");
 }
+
+/// A solved component that momentum fixes alone is exact beside an irrational one (issue 41:
+/// the solver marked the whole solution point, so `v2' = (≈0.0973..., ≈-0.5)` and
+/// `J = (≈0.1946..., ≈-1)`).
+///
+/// By hand (as above): m = (1, 2), v1 = (4, 0), v2 = 0, v1' = (x, 1), elastic. Momentum along
+/// y: 0 = 1 + 2 v2'y, so v2'y = -1/2 whatever x is; along x: x + 2 v2'x = 4, so
+/// v2'x = (4 - x)/2 = (8 - sqrt 55)/6 = 0.09730025215072284188... with x = (4 + sqrt 55)/3: it
+/// hangs on the root. The impulse on body 2 is m2 (v2' - v2) = ((8 - sqrt 55)/3, -1): its y part
+/// exact too.
+#[test]
+fn a_component_that_momentum_fixes_is_exact_beside_a_root() {
+    let case = [
+        "-m", "1,2", "-v", "(4,0),0", "--fin", "(?,1),?", "-e", "1", "--exact",
+    ];
+    let out = text_of("solve", &case);
+    let y = (8.0 - 55f64.sqrt()) / 6.0;
+    let line = out.lines().find(|l| l.starts_with("  v2'    (≈")).unwrap();
+    let digits: String = line["  v2'    (≈".len()..].chars().take(16).collect();
+    assert_eq!(&digits[..15], &format!("{y:.15}")[..15], "{line}");
+    assert!(line.contains(", -1/2)"), "{line}");
+    let solved = out.lines().find(|l| l.starts_with("  v2' = (≈")).unwrap();
+    assert!(solved.contains(", -1/2)"), "{solved}");
+    let j_line = out.lines().find(|l| l.starts_with("  J ")).unwrap();
+    assert!(j_line.contains(", -1)"), "{j_line}");
+    assert!(!out.contains("≈-0.5") && !out.contains("≈-1)"), "{out}");
+    let j = json_of("solve", &case);
+    for s in j["solutions"].as_array().unwrap() {
+        assert_eq!(s["solved"]["v2'"][1], "-1/2", "{s}");
+        assert_eq!(s["fin"][1][1], "-1/2", "{s}");
+        assert_eq!(s["impulse"][1], "-1", "{s}");
+        assert_eq!(s["approx"], true, "{s}");
+    }
+}

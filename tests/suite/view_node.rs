@@ -122,9 +122,28 @@ fn plane_cases(d: &mut Draw, n: usize) -> Vec<(Value, Vec<String>)> {
 #[cfg_attr(not(has_node), ignore = "needs Node.js (apt-get install nodejs)")]
 fn the_committed_module_under_node_answers_as_the_command_line() {
     let mut d = Draw(0x5EED_CA5E_2026_0046);
-    let mut cases: Vec<(Value, Vec<String>)> = cases()
+    the_module_answers_as_the_command_line(&mut d, true);
+}
+
+/// The same comparison on cases drawn afresh each run (issue 41 §4: the page's answers in the
+/// cross-path test), from a seed taken from the clock and printed (`COLLIDE_PROPTEST_SEED`
+/// replays it); every failure names its request.
+#[test]
+#[cfg_attr(not(has_node), ignore = "needs Node.js (apt-get install nodejs)")]
+fn the_committed_module_answers_fresh_random_cases_as_the_command_line() {
+    // xorshift needs a seed that is not 0.
+    let mut d = Draw(crate::common::fresh_seed() | 1);
+    the_module_answers_as_the_command_line(&mut d, false);
+}
+
+/// Runs the lecture's cases (`lecture`) and 40 random rail and 40 random plane cases through
+/// the module under Node, each answer against the library's and its state against `collide
+/// solve --format json`, byte for byte.
+fn the_module_answers_as_the_command_line(d: &mut Draw, lecture: bool) {
+    let lectures = if lecture { cases() } else { Vec::new() };
+    let mut cases: Vec<(Value, Vec<String>)> = lectures
         .into_iter()
-        .chain(rail_cases(&mut d, 40))
+        .chain(rail_cases(d, 40))
         .map(|c| {
             let args = solve_args(&c);
             let mut r = c;
@@ -132,7 +151,7 @@ fn the_committed_module_under_node_answers_as_the_command_line() {
             (r, args)
         })
         .collect();
-    cases.extend(plane_cases(&mut d, 40));
+    cases.extend(plane_cases(d, 40));
     let requests: Vec<Value> = cases.iter().map(|c| c.0.clone()).collect();
     let answers = node_answers(&requests);
     assert_eq!(answers.len(), cases.len());
@@ -159,10 +178,12 @@ fn the_committed_module_under_node_answers_as_the_command_line() {
         solved += 1;
     }
     // Refusals are rare here (a plane case whose bodies separate along the line is still an
-    // answer): nearly every case compares a solved state.
+    // answer): nearly every case compares a solved state (of fresh cases, most: a rare draw
+    // may refuse more than one in ten).
     eprintln!("{solved} of {} cases solved and compared", cases.len());
+    let (k, of) = if lecture { (9, 10) } else { (3, 4) };
     assert!(
-        solved * 10 >= cases.len() * 9,
+        solved * of >= cases.len() * k,
         "{solved} of {}",
         cases.len()
     );

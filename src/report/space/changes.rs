@@ -6,7 +6,7 @@
 
 use serde_json::{Map, Value};
 
-use super::{Style, vector};
+use super::{Style, vector_each};
 use crate::report::text::Block;
 use crate::space::outcome::{Outcome, dot, sub};
 use crate::values::rational::{Q, half};
@@ -56,7 +56,7 @@ pub fn text(o: &Outcome, style: &Style, units: &Units) -> Block {
         let k = i + 1;
         b.row(
             format!("dv{k} = v{k}' - v{k}"),
-            vector(style, &c.dv, m.change(i)),
+            vector_each(style, &c.dv, |k| m.change_at(i, k)),
             "",
         );
     }
@@ -65,7 +65,7 @@ pub fn text(o: &Outcome, style: &Style, units: &Units) -> Block {
         let note = if k == n { "the impulses sum to 0" } else { "" };
         b.row(
             format!("dp{k} = m{k} dv{k}"),
-            vector(style, &c.dp, m.change(i)),
+            vector_each(style, &c.dp, |k| m.change_at(i, k)),
             note,
         );
     }
@@ -112,8 +112,13 @@ pub fn json(o: &Outcome, style: &Style) -> Value {
             all.iter()
                 .enumerate()
                 .map(|(i, c)| {
-                    let a = marks.change(i);
-                    Value::Array(pick(c).iter().map(|x| style.json(x, a)).collect())
+                    Value::Array(
+                        pick(c)
+                            .iter()
+                            .enumerate()
+                            .map(|(k, x)| style.json(x, marks.change_at(i, k)))
+                            .collect(),
+                    )
                 })
                 .collect(),
         )

@@ -354,7 +354,10 @@ pub fn text(o: &Outcome, show: Show, style: &Style, units: &Units) -> Result<Str
             };
             b.row(
                 "J",
-                format!("{}{unit}", vector(style, &j, marks.change(1))),
+                format!(
+                    "{}{unit}",
+                    vector_each(style, &j, |k| marks.change_at(1, k))
+                ),
                 "impulse on body 2, m2 (v2' - v2)",
             );
         }
@@ -636,7 +639,10 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
         }
         m.insert("v_com".into(), vec1(&o.v_com(), marks.before()));
         if o.bodies() == 2 {
-            m.insert("impulse".into(), vec1(&o.impulse(1), marks.change(1)));
+            m.insert(
+                "impulse".into(),
+                json_each(style, &o.impulse(1), |k| marks.change_at(1, k)),
+            );
         }
         if let Some(parts) = o.normal_parts() {
             let a = a || !parts.exact;
