@@ -254,7 +254,13 @@ fn solve_stages(scene: StagesScene) -> Result<Checked> {
                     render_special(Special::Wall(wall), &run.show, scene.exact, solved.as_ref());
                 ("wall", rendered.with_context(at)?)
             }
-            Posed::Separation(..) | Posed::Separations(..) => {
+            Posed::Separation(s, solved) => {
+                inconsistent |= solved.inconsistent();
+                let rendered =
+                    render_special(Special::Separation(s), &run.show, scene.exact, Some(solved));
+                ("pass-through", rendered.with_context(at)?)
+            }
+            Posed::Separations(..) => {
                 unreachable!("a separation is refused when solved")
             }
         };
@@ -293,6 +299,7 @@ fn solve_stages(scene: StagesScene) -> Result<Checked> {
         meetings: &solved.meetings,
         velocity_unit: solved.velocity_unit,
         exact: scene.exact,
+        fixed: &solved.fixed,
     };
     let mut checked = check(scene.about, chain.text(), chain.json())?;
     checked.checks.extend(stage_checks);

@@ -95,6 +95,28 @@ impl Line {
         Ok(())
     }
 
+    /// Records that `left` passes through `right` at event `at` (a bullet through a block):
+    /// they meet as in [`Line::collide`], then swap places, so `X left right Y` becomes
+    /// `X right left Y`.
+    pub fn pass(&mut self, left: Object, right: Object, at: usize) -> Result<(), OrderError> {
+        self.collide(left, right, at)?;
+        let outer_left = self.left.remove(&left);
+        let outer_right = self.right.remove(&right);
+        self.right.remove(&left);
+        self.left.remove(&right);
+        if let Some((x, since)) = outer_left {
+            self.right.insert(x, (right, since));
+            self.left.insert(right, (x, since));
+        }
+        if let Some((y, since)) = outer_right {
+            self.left.insert(y, (left, since));
+            self.right.insert(left, (y, since));
+        }
+        self.right.insert(right, (left, at));
+        self.left.insert(left, (right, at));
+        Ok(())
+    }
+
     /// `from` and the objects known to be on its right, nearest first.
     fn rightward(&self, from: Object) -> Vec<Object> {
         let mut out = vec![from];
@@ -218,5 +240,23 @@ mod tests {
         );
         // Moving apart, or together: no meeting.
         assert!(line.meetings(|_| int(1)).is_empty());
+    }
+
+    #[test]
+    fn a_body_that_passes_through_another_changes_places_with_it() {
+        // C meets A from the left, then A passes through B (on its right): C A B becomes
+        // C B A.
+        let mut line = Line::default();
+        line.collide(C, A, 0).unwrap();
+        line.pass(A, B, 1).unwrap();
+        assert_eq!(line.neighbours(), vec![(C, B, 0), (B, A, 1)]);
+        // A cannot meet C now without passing through B.
+        assert!(line.collide(C, A, 2).is_err());
+        // Two free bodies: they swap.
+        let mut line = Line::default();
+        line.pass(A, B, 0).unwrap();
+        assert_eq!(line.neighbours(), vec![(B, A, 0)]);
+        line.collide(A, C, 1).unwrap();
+        assert_eq!(line.neighbours(), vec![(B, A, 0), (A, C, 1)]);
     }
 }

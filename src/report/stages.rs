@@ -5,7 +5,9 @@
 //! JSON: `{"event": "stages", "stages": [{"name", "event": "collision" | "wall", "bodies",
 //! "takes": {"v1" | "v2": "stage1.fin2"}, "report"}], "after": {BODY: v}, "next": [{"bodies":
 //! [LEFT, RIGHT], "closing_speed"}], "collide_again", "units": {"velocity"}}`; a wall is named
-//! `left wall` or `right wall`.
+//! `left wall` or `right wall`. A chain solved as one system adds `"system": {"fixed":
+//! [{"velocity": "stage1.fin1", "by": "stage2", "value"}], "check": true}`; a stage's `event`
+//! may be `pass-through`.
 
 use serde_json::{Map, Value, json};
 
@@ -20,13 +22,25 @@ pub struct StagePart {
     pub name: String,
     /// The name is the default `stageN`.
     pub numbered: bool,
-    /// `collision` or `wall`.
+    /// `collision`, `pass-through` or `wall`.
     pub event: &'static str,
     pub objects: [Object; 2],
     /// The velocities taken from earlier stages: `(body, "stage1.fin2")`.
     pub takes: Vec<(usize, String)>,
     pub text: String,
     pub json: Value,
+}
+
+/// A velocity an earlier stage leaves with that a later stage fixed (the chain solved as one
+/// system, issue 42 §5): `stage1.fin1` fixed by `stage2`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Fixed {
+    /// The reference, as written (`stage1.fin1`).
+    pub text: String,
+    /// The later stage that fixed it.
+    pub by: String,
+    /// Its value, exactly.
+    pub value: Q,
 }
 
 /// A chain solved, for the report.
@@ -40,6 +54,8 @@ pub struct Chain<'a> {
     pub velocity_unit: Option<&'a str>,
     /// Values as fractions (`exact = true`), or binary64.
     pub exact: bool,
+    /// The taken velocities later stages fixed (none: solved in stage order).
+    pub fixed: &'a [Fixed],
 }
 
 /// A body's name, or `the wall on the right`.
@@ -120,7 +136,27 @@ impl Chain<'_> {
         }
         b.render(&mut out);
         out.push_str(&paragraph(&self.answer()));
+        if !self.fixed.is_empty() {
+            out.push('\n');
+            out.push_str(&paragraph(&self.system()));
+        }
         out
+    }
+
+    /// `Solved as one system: stage2 fixes stage1.fin1 = 720, and ... Check: ...`, for a chain
+    /// whose later stages fixed an earlier one's unknowns.
+    fn system(&self) -> String {
+        let each: Vec<String> = self
+            .fixed
+            .iter()
+            .map(|f| format!("{} fixes {} = {}", f.by, f.text, self.show(&f.value)))
+            .collect();
+        format!(
+            "Solved as one system: {}, and the stage that leaves it is solved with it as a \
+             given FIN. Check: every stage again with these values: each FIN worked out forward \
+             is what the next stage takes, and momentum holds, exactly.",
+            each.join("; ")
+        )
     }
 
     /// `Another collision: yes; A catches B, closing at 5/2`, or `no; ...`.
@@ -199,6 +235,14 @@ impl Chain<'_> {
         });
         if let Some(u) = self.velocity_unit {
             out["units"] = json!({ "velocity": u });
+        }
+        if !self.fixed.is_empty() {
+            let fixed: Vec<Value> = self
+                .fixed
+                .iter()
+                .map(|f| json!({"velocity": f.text, "by": f.by, "value": self.value(&f.value)}))
+                .collect();
+            out["system"] = json!({ "fixed": fixed, "check": true });
         }
         out
     }

@@ -44,6 +44,7 @@ mod rigid_symmetry;
 mod rigid_unknowns;
 mod shell;
 mod stages;
+mod stages_system;
 mod sweeps;
 mod tables;
 mod track;

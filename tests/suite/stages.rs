@@ -15,12 +15,12 @@ use proptest::prelude::*;
 use serde_json::{Value, json};
 
 /// The exact value of a number as written (`"-3/4"`).
-fn q(s: &str) -> Q {
+pub fn q(s: &str) -> Q {
     s.parse::<Number>().unwrap().exact()
 }
 
 /// A scratch file holding `text`, named `name` (unique to this test process).
-fn file(name: &str, text: &str) -> PathBuf {
+pub fn file(name: &str, text: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("collide-stages-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
@@ -29,7 +29,7 @@ fn file(name: &str, text: &str) -> PathBuf {
 }
 
 /// `collide scene PATH --format json`: its report, the scene's checks all passed.
-fn report(path: &str) -> Value {
+pub fn report(path: &str) -> Value {
     let out = collide()
         .args(["scene", path, "--format", "json"])
         .output()
@@ -42,7 +42,7 @@ fn report(path: &str) -> Value {
 }
 
 /// The scene `text` (written to a scratch file `name`) solved: its report.
-fn report_of(name: &str, text: &str) -> Value {
+pub fn report_of(name: &str, text: &str) -> Value {
     report(&file(name, text).display().to_string())
 }
 
@@ -462,6 +462,23 @@ fn invariants(r: &Value) {
                         "{stage}"
                     );
                 }
+            }
+            "pass-through" => {
+                // Momentum alone, and the body behind comes out ahead with energy lost.
+                let (m, v, f) = (
+                    nums(&stage["masses"]),
+                    nums(&stage["in"]),
+                    nums(&stage["fin"]),
+                );
+                let (p_in, p_fin) = (m[0] * v[0] + m[1] * v[1], m[0] * f[0] + m[1] * f[1]);
+                assert!(
+                    (p_in - p_fin).abs() <= 4.0 * f64::EPSILON * p_in.abs(),
+                    "{stage}"
+                );
+                assert!(
+                    f[0] > f[1] && num(&stage["energy"]["lost"]) >= 0.0,
+                    "{stage}"
+                );
             }
             other => panic!("unknown stage event {other}"),
         }

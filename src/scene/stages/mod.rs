@@ -30,6 +30,7 @@
 
 mod read;
 mod solve;
+mod system;
 
 use std::path::Path;
 
@@ -37,6 +38,7 @@ use super::{About, SceneError};
 use crate::expect::Expectation;
 use crate::line::chain::{Meeting, Object};
 use crate::line::problem::{Posed, Problem};
+use crate::report::stages::Fixed;
 use crate::report::{Section, Sections};
 use crate::values::rational::Q;
 
@@ -48,7 +50,14 @@ pub const STAGE_SHOW: [Section; 2] = [Section::Vectors, Section::Energy];
 pub const MAX_STAGES: usize = 100;
 
 /// Top-level keys of a chain's report (`[expect]` at the top addresses them).
-pub const STAGES_KEYS: [&str; 5] = ["collide_again", "next", "after", "stages", "units"];
+pub const STAGES_KEYS: [&str; 6] = [
+    "collide_again",
+    "next",
+    "after",
+    "stages",
+    "units",
+    "system",
+];
 
 /// A velocity taken from an earlier stage's result (`"stage1.fin2"`).
 #[derive(Clone, Debug)]
@@ -111,6 +120,8 @@ pub struct SolvedStages {
     pub meetings: Vec<Meeting>,
     /// The velocity unit of every stage, when they have one.
     pub velocity_unit: Option<&'static str>,
+    /// The taken velocities a later stage fixed (the chain solved as one system), exactly.
+    pub fixed: Vec<Fixed>,
 }
 
 impl StagesScene {

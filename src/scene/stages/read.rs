@@ -40,6 +40,8 @@ struct StageTable {
     velocities: Spanned<Two<Spanned<Typed>>>,
     fin: Option<Spanned<Two<Typed>>>,
     restitution: Option<Spanned<Typed>>,
+    /// Body 1 passes through body 2 (a bullet through a block): momentum alone.
+    pass_through: Option<bool>,
     si: Option<bool>,
     gravity: Option<Number>,
     energy_unit: Option<Spanned<String>>,
@@ -397,7 +399,10 @@ impl Reader<'_> {
             gravity: t.gravity,
             energy_unit,
             exact: false,
-            knowns: Default::default(),
+            knowns: crate::line::problem::Knowns {
+                pass_through: t.pass_through.unwrap_or(false),
+                ..Default::default()
+            },
             velocity_unit: None,
         };
         self.stages.push(Stage {

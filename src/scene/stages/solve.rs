@@ -5,19 +5,17 @@
 use std::collections::BTreeMap;
 
 use super::super::SceneError;
+use super::system::{Carried, velocities_in};
 use super::{SolvedStages, Stage, StageRun, StagesScene};
 use crate::line::chain::{Line, Object, OrderError, Side};
 use crate::line::problem::Posed;
-use crate::report::Sections;
 use crate::report::stages::object_name;
-use crate::solver::exact::ExactCollision;
-use crate::values::number::{EXACT_MAX_CHARS, Given, Number};
-use crate::values::quantity::{fraction, from_f64, to_f64};
+use crate::values::quantity::fraction;
 use crate::values::rational::Q;
-use crate::values::units::{Dimension, Quantity, lookup};
+use crate::values::units::{Dimension, lookup};
 
 impl StagesScene {
-    fn at(&self, stage: &Stage, message: String) -> SceneError {
+    pub(super) fn at(&self, stage: &Stage, message: String) -> SceneError {
         SceneError {
             path: self.about.path.clone(),
             at: Some((stage.line, 1)),
@@ -29,16 +27,18 @@ impl StagesScene {
     /// arithmetic, with every decision (the stage happens, the order holds, what comes next)
     /// made on the exact chain.
     pub fn solve(&self) -> Result<SolvedStages, SceneError> {
-        let exact = self.carry(true)?;
+        let Carried { runs: exact, fixed } = self.carry(true)?;
         let mut line = Line::default();
         let mut walls: BTreeMap<Side, (Q, usize)> = BTreeMap::new();
         for (i, (stage, run)) in self.stages.iter().zip(&exact).enumerate() {
             self.decide(i, stage, run, (&exact, &mut line, &mut walls))?;
         }
+        // Every stage in one velocity unit (decided above): the values compare.
+        self.check(&exact)?;
         let runs = if self.exact {
             exact.clone()
         } else {
-            self.carry(false)?
+            self.carry(false)?.runs
         };
         let latest = |runs: &[StageRun], b: usize| {
             let (i, slot) = self.latest(b);
@@ -53,6 +53,7 @@ impl StagesScene {
             meetings,
             velocity_unit: exact.first().and_then(|r| r.posed.units().velocity),
             runs,
+            fixed,
         })
     }
 
@@ -69,78 +70,6 @@ impl StagesScene {
                     .map(|slot| (i, slot))
             })
             .expect("every body is in a stage")
-    }
-
-    /// Each stage posed and solved in turn, its taken velocities the FIN of the stages they
-    /// name: exactly (`exact`), or as the binary64 values printed.
-    fn carry(&self, exact: bool) -> Result<Vec<StageRun>, SceneError> {
-        let mut runs: Vec<StageRun> = Vec::with_capacity(self.stages.len());
-        for stage in &self.stages {
-            let mut problem = stage.problem.clone();
-            for (slot, taken) in stage.takes.iter().enumerate() {
-                let Some(t) = taken else { continue };
-                let from = &runs[t.stage];
-                let q = &from.fin[t.body];
-                let number = if exact {
-                    let f = fraction(q);
-                    let chars = f.chars().count();
-                    if self.exact && chars > EXACT_MAX_CHARS {
-                        return Err(self.at(
-                            stage,
-                            format!(
-                                "{} is a fraction of {chars} characters: exact arithmetic carries \
-                                 at most {EXACT_MAX_CHARS} (its cost grows faster than the \
-                                 length); set exact = false to carry the binary64 value printed",
-                                t.text
-                            ),
-                        ));
-                    }
-                    f.parse::<Number>().or_else(|_| Number::solved(&f))
-                } else {
-                    Number::from_f64(to_f64(q).unwrap_or(f64::NAN))
-                }
-                .map_err(|e| self.at(stage, format!("{} = {}: {e}", t.text, fraction(q))))?;
-                let unit = from
-                    .posed
-                    .units()
-                    .velocity
-                    .and_then(|u| lookup(u, Dimension::Velocity).ok());
-                problem.velocities.0[slot] = Given::Known(Quantity {
-                    number,
-                    unit,
-                    height: false,
-                });
-            }
-            let posed = problem
-                .solve(None)
-                .map_err(|e| self.at(stage, format!("{e:#}")))?;
-            let fin = match &posed {
-                Posed::Collision(case, _) if exact => ExactCollision::from_case(case).v_fin_q(),
-                Posed::Collision(case, _) => {
-                    let f = case.collision.v_fin();
-                    [from_f64(f.x), from_f64(f.y)]
-                }
-                Posed::Wall(w, _) if exact => w.fin(),
-                Posed::Wall(w, _) => w.fin().map(|q| from_f64(to_f64(&q).unwrap_or(f64::NAN))),
-                Posed::Separation(..) | Posed::Separations(..) => {
-                    return Err(self.at(
-                        stage,
-                        "the bodies start together and are pushed apart (a separation): a stage \
-                         is a collision or a bounce off a wall"
-                            .into(),
-                    ));
-                }
-            };
-            let units = posed.units().clone();
-            let mut show = Sections::new(stage.show.iter().copied());
-            show.contact_time = stage.contact_time.clone();
-            show.heights = Some(crate::values::units::HeightScale::new(
-                stage.problem.gravity.as_ref(),
-                &units,
-            ));
-            runs.push(StageRun { posed, fin, show });
-        }
-        Ok(runs)
     }
 
     /// The checks of stage `i` on the exact chain: it happens (body 1 catches body 2), its
@@ -253,7 +182,12 @@ impl StagesScene {
                 }
             }
         }
-        line.collide(left, right, i).map_err(|e| {
+        let through = matches!(&run.posed, Posed::Separation(_, s) if s.pass_through);
+        let met = match through {
+            true => line.pass(left, right, i),
+            false => line.collide(left, right, i),
+        };
+        met.map_err(|e| {
             let m = match e {
                 OrderError::Reversed { left, right } => format!(
                     "{} is on the right of {} since earlier stages, but here {} catches {} \
@@ -280,16 +214,6 @@ impl StagesScene {
             };
             self.at(stage, m)
         })
-    }
-}
-
-/// IN of a posed stage, exactly (a wall's entry is its velocity).
-fn velocities_in(posed: &Posed) -> [Q; 2] {
-    match posed {
-        Posed::Collision(case, _) => case.velocities.each_ref().map(Number::exact),
-        Posed::Wall(w, _) => w.v(),
-        Posed::Separation(s, _) => s.velocities.each_ref().map(Number::exact),
-        Posed::Separations(pair) => pair[0].0.velocities.each_ref().map(Number::exact),
     }
 }
 
