@@ -282,7 +282,11 @@ proptest! {
                 let inner = &l[l.find('(').unwrap() + 1..l.find(')').unwrap()];
                 inner.split(',').map(|s| s.trim().to_string()).collect()
             };
-            let (fin_row, in_row) = (row("FIN "), row("IN "));
+            // A sticking FIN reads "= COM" (the bodies move together): its values are the COM
+            // row's.
+            let fin_line = text.lines().find(|l| l.trim_start().starts_with("FIN ")).unwrap();
+            let fin_row = if fin_line.contains('(') { row("FIN ") } else { row("COM ") };
+            let in_row = row("IN ");
             for (shown, want) in [
                 (grab(solved, "v1"), &j["solved"]["v1"]),
                 (grab(solved, "e"), &j["solved"]["e"]),
