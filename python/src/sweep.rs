@@ -118,7 +118,9 @@ pub fn runs_frame<'py>(
     let table = py
         .detach(|| crate::commands::table::columns_of(command))
         .map_err(|e| refused(format!("{e:#}")))?
-        .expect("a table of runs");
+        .ok_or_else(|| {
+            refused("vary= names no parameter: give at least one, as NAME=RANGE (\"e=0:1:11\")")
+        })?;
     let dict = PyDict::new(py);
     let mut values = table.values.into_iter();
     let mut errors = table.errors;

@@ -139,6 +139,9 @@ def test_failed_runs_as_the_command_has_them():
 
 
 def test_vary_where_one_report_is_asked():
+    # An empty vary= is a clear refusal, not a crash (it once reached an expect()).
+    with pytest.raises(collide.CollideError, match="vary= names no parameter"):
+        collide.track(m=(1, 100), x=(1, 2), v=(0, -1), left_wall=0, vary=[])
     with pytest.raises(collide.CollideError, match="vary=: solve gives one report"):
         collide.solve(m=(4, 1), v=(60, 10), vary="e=0:1:3")
     with pytest.raises(collide.CollideError, match="to='arrow': a table is a 'polars' or a 'pandas'"):
