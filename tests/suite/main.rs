@@ -31,6 +31,7 @@ mod parquet_errors;
 mod plane;
 mod plane_edges;
 mod plane_exact;
+mod plane_reports;
 mod plane_sweeps;
 mod plot;
 mod problems;

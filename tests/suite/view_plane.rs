@@ -587,11 +587,9 @@ fn browser_plane_drag_moves_the_arrow_and_fin_follows_the_impulse() {
         d["after"].as_str().unwrap(),
         "{command}"
     );
-    let median = drag_timings(&d["timings"], "plane drag");
-    assert!(
-        median < 16.0,
-        "a drag update takes more than a frame: {median} ms"
-    );
+    // Measured and printed, not asserted: the guide keeps wall-clock limits out of tests (a
+    // loaded machine is slower, not wrong); docs/benchmarks.md reports the figures.
+    drag_timings(&d["timings"], "plane drag");
 }
 
 #[test]
