@@ -74,7 +74,8 @@ pub struct TrackArgs {
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub until: Option<Number>,
 
-    /// Stop after this many collisions
+    /// Stop after this many collisions (not given: 1e6 for a motion that never ends, elastic
+    /// and held by gravity or two walls)
     #[arg(long, value_name = "N", default_value_t = collide::track::DEFAULT_MAX_COLLISIONS)]
     pub max_collisions: u64,
 
