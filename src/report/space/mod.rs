@@ -96,15 +96,70 @@ pub struct Style {
     pub bearings: bool,
     /// Set when a value is beyond binary64 (the report is then refused).
     overflow: Cell<bool>,
+    /// Set by [`Style::energy`] when the energy it returns underflows: the value written next
+    /// is that energy, marked beyond binary64 in JSON.
+    underflow: Cell<bool>,
 }
 
-/// A result beyond binary64, where the report would print inf.
+/// A result beyond binary64, where the report would print inf (or 0 for a nonzero energy),
+/// named by its place in the JSON report (`energy.in`, `fin[0][0]`), as the rail's reports
+/// name theirs ([`Style::checked_json`]).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
-    "a result is beyond binary64 (|x| above 1.8e308, or an energy below 4.9e-324 and not \
-     zero): rescale the units, or use --exact"
+    "{} beyond binary64 (|x| above 1.8e308, or an energy below 4.9e-324 and not zero): rescale \
+     the units, or use --exact",
+    match quantity { Some(q) => format!("{q} is"), None => "a result is".to_string() }
 )]
-pub struct Overflow;
+pub struct Overflow {
+    /// The JSON path of the first value beyond binary64, when a JSON report holds it.
+    pub quantity: Option<String>,
+}
+
+/// What [`Style::json`] writes before the decimal text of a value beyond binary64 (`≈3.4e308`),
+/// in place of the number: found to name the quantity ([`Style::checked_json`]), and taken
+/// away where a report prints such a value as text ([`unmarked`]).
+const BEYOND: char = '\u{1}';
+
+/// The path (`energy.in`, `fin[0][1]`) of the first value marked [`BEYOND`] in `v`.
+fn beyond_at(v: &Value, path: &str) -> Option<String> {
+    match v {
+        Value::String(s) if s.starts_with(BEYOND) => Some(path.to_string()),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(i, x)| beyond_at(x, &format!("{path}[{i}]"))),
+        Value::Object(o) => o.iter().find_map(|(k, x)| {
+            let p = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            beyond_at(x, &p)
+        }),
+        _ => None,
+    }
+}
+
+/// `v` with the values beyond binary64 as their decimal text (`"≈3.4e308"`), as a report that
+/// prints them (given values that contradict each other, exit 1) shows them: never 0 or inf.
+pub fn unmarked(v: Value) -> Value {
+    match v {
+        Value::String(s) => Value::String(s.trim_start_matches(BEYOND).to_string()),
+        Value::Array(a) => Value::Array(a.into_iter().map(unmarked).collect()),
+        Value::Object(o) => Value::Object(o.into_iter().map(|(k, x)| (k, unmarked(x))).collect()),
+        other => other,
+    }
+}
+
+/// Renders `text` only once `json`, the same quantities under their names, is within binary64:
+/// an overflow then names the quantity, whichever format was asked for.
+pub fn named<T>(
+    json: impl FnOnce() -> Result<Value, Overflow>,
+    text: impl FnOnce() -> Result<T, Overflow>,
+) -> Result<T, Overflow> {
+    json()?;
+    text()
+}
 
 impl Style {
     pub fn new(exact: bool, energy_scale: Option<Q>) -> Style {
@@ -113,6 +168,7 @@ impl Style {
             energy_scale,
             bearings: false,
             overflow: Cell::new(false),
+            underflow: Cell::new(false),
         }
     }
 
@@ -138,6 +194,7 @@ impl Style {
 
     /// A value for people.
     pub fn show(&self, q: &Q, approx: bool) -> String {
+        self.underflow.set(false);
         // An approximation carries relative digits, so a zero among them is exactly zero (a
         // body at rest's part along an irrational unit normal): `0`, never `≈0`.
         let approx = approx && !q.is_zero();
@@ -162,7 +219,17 @@ impl Style {
     }
 
     /// A value for JSON: a number, or in exact mode a fraction string.
+    /// Beyond binary64 (or an energy [`Style::energy`] found to underflow) it is marked, to
+    /// be named by [`Style::checked_json`].
     pub fn json(&self, q: &Q, approx: bool) -> Value {
+        let beyond = || Value::from(format!("{BEYOND}{}", Exact::Approx(q.clone()).show()));
+        if self.underflow.replace(false) {
+            return beyond();
+        }
+        if !self.exact && to_f64(q).is_none() {
+            self.overflow.set(true);
+            return beyond();
+        }
         let approx = approx && !q.is_zero();
         if self.exact {
             let e = if approx {
@@ -186,15 +253,28 @@ impl Style {
         };
         if !self.exact && !q.is_zero() && to_f64(&q) == Some(0.0) {
             self.overflow.set(true);
+            self.underflow.set(true);
         }
         q
     }
 
+    /// `t`, unless a value written with this style was beyond binary64.
     pub fn checked<T>(&self, t: T) -> Result<T, Overflow> {
         if self.overflow.get() {
-            Err(Overflow)
+            Err(Overflow { quantity: None })
         } else {
             Ok(t)
+        }
+    }
+
+    /// A JSON report, unless a value in it was beyond binary64: then the error names the first
+    /// such value by its path.
+    pub fn checked_json(&self, v: Value) -> Result<Value, Overflow> {
+        match beyond_at(&v, "") {
+            Some(path) => Err(Overflow {
+                quantity: Some(path),
+            }),
+            None => self.checked(v),
         }
     }
 }
@@ -574,7 +654,7 @@ pub fn reverse_json(o: &Outcome, style: &Style) -> Result<Value, Overflow> {
     if let Some(e) = &r.e {
         m.insert("restitution".into(), style.json(e, r.approx.e()));
     }
-    style.checked(Value::Object(m))
+    style.checked_json(Value::Object(m))
 }
 
 /// Every body's velocity before (or after, `fin`), each component marked as it is.
@@ -692,7 +772,7 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
     if show.changes {
         m.insert("changes".into(), changes::json(o, style));
     }
-    style.checked(Value::Object(m))
+    style.checked_json(Value::Object(m))
 }
 
 #[cfg(test)]
