@@ -16,7 +16,7 @@ use collide::values::number::{Number, NumberList};
 #[derive(Args, Debug)]
 pub struct LayoutArgs {
     /// Masses, left to right, e.g. 1,100
-    #[arg(short, long, value_name = "M1,M2,...")]
+    #[arg(short, long, value_name = "M1,M2,...", allow_hyphen_values = true)]
     pub masses: NumberList,
 
     /// Positions of the bodies' centres, increasing left to right, e.g. 1,2
@@ -33,7 +33,7 @@ pub struct LayoutArgs {
     pub velocities: NumberList,
 
     /// Sizes (lengths along the track) [default: 0, points]
-    #[arg(long, value_name = "S1,S2,...")]
+    #[arg(long, value_name = "S1,S2,...", allow_hyphen_values = true)]
     pub sizes: Option<NumberList>,
 
     /// A wall (an immovable body) at this position, left of every body; the floor under gravity
@@ -50,15 +50,21 @@ pub struct LayoutArgs {
 pub struct TrackRules {
     /// Restitution between bodies: a number in [0, 1], 'elastic' or 'inelastic'
     #[arg(short = 'e', long, value_name = "E", default_value = "elastic",
-          value_parser = Restitution::parse_dissipative)]
+          value_parser = Restitution::parse_dissipative, allow_hyphen_values = true)]
     pub restitution: Restitution,
 
     /// Restitution at the walls [default: the same as between bodies]
-    #[arg(long, value_name = "E", value_parser = Restitution::parse_dissipative)]
+    #[arg(long, value_name = "E", value_parser = Restitution::parse_dissipative,
+          allow_hyphen_values = true)]
     pub wall_restitution: Option<Restitution>,
 
     /// Uniform acceleration toward the left (the left wall is a floor, positions are heights)
-    #[arg(long, value_name = "G", default_value = "0")]
+    #[arg(
+        long,
+        value_name = "G",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
     pub gravity: Number,
 }
 
@@ -74,7 +80,8 @@ pub struct TrackArgs {
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub until: Option<Number>,
 
-    /// Stop after this many collisions
+    /// Stop after this many collisions (not given: 1e6 for a motion that never ends, elastic
+    /// and held by gravity or two walls)
     #[arg(long, value_name = "N", default_value_t = collide::track::DEFAULT_MAX_COLLISIONS)]
     pub max_collisions: u64,
 

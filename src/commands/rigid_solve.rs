@@ -331,7 +331,11 @@ pub fn report_of(
     let status = u8::from(outcome.paradox().is_some());
     let out = match format {
         Format::Text => {
-            report::header(&outcome, &style, &u) + &report::text(&outcome, show, &style, &u)?
+            let text = collide::report::space::named(
+                || report::json(&outcome, show, &style, &u),
+                || report::text(&outcome, show, &style, &u),
+            )?;
+            report::header(&outcome, &style, &u) + &text
         }
         Format::Json => json::render(&report::json(&outcome, show, &style, &u)?),
     };

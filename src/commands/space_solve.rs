@@ -124,9 +124,13 @@ pub fn frames(args: &crate::cli::FramesArgs) -> Result<Outcome> {
         .collect();
     let stdout = match args.format {
         Format::Text => {
+            let text = report::named(
+                || report::frames::json(&views, args.reverse, &style),
+                || report::frames::text(&views, args.reverse, &style, &units),
+            )?;
             report::header(lab, &style, &units)
                 + &collide::report::text::header_units(&units)
-                + &report::frames::text(&views, args.reverse, &style, &units)?
+                + &text
         }
         Format::Json => json::render(&report::frames::json(&views, args.reverse, &style)?),
     };

@@ -306,5 +306,5 @@ fn json(
             }),
         );
     }
-    style.checked(Value::Object(m))
+    style.checked_json(Value::Object(m))
 }

@@ -84,6 +84,11 @@ pub fn text(t: &Track, r: &TrackReport, limits: Limits) -> String {
                 ""
             }
         ),
+        Stop::Endless { cap } => format!(
+            "the motion never ends (every collision elastic, the bodies held by gravity or \
+             walls), so it stops at {cap} collisions, the cap for such a run: give --until T \
+             for the state at a time T, or a --max-collisions N to go further"
+        ),
         Stop::Zeno {
             at,
             accumulation,

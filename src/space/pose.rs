@@ -397,11 +397,11 @@ impl Input {
                             hint: "--normal '(3,4)'",
                         });
                     }
-                    // c: the square root of (1 - s^2) rounded once, within an ulp.
-                    None => (
-                        from_f64(crate::values::rational::to_f64(&c2).unwrap_or(0.0).sqrt()),
-                        true,
-                    ),
+                    // c: the square root of (1 - s^2) held to 40 digits, as an unknown
+                    // direction is: every value of the report is then the exact one rounded
+                    // once (docs/plane.md). The square root of the binary64 value of 1 - s^2
+                    // was within an ulp, and FIN 69 of its own ulps off (issue 41).
+                    None => (crate::values::quantity::sqrt(&c2, 40), true),
                 };
                 let (c, sin) = if rounded { (c, s) } else { (c, b_q.clone()) };
                 let perp = [-d[1].clone(), d[0].clone()];

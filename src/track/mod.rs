@@ -62,6 +62,13 @@ pub struct Track {
 /// Default cap on collisions (`--max-collisions`): enough for pi billiards with N = 8.
 pub const DEFAULT_MAX_COLLISIONS: u64 = 1_000_000_000;
 
+/// The cap that takes the default's place for a motion that cannot end ([`Track::endless`]):
+/// such a run reaches any cap, and at the default it ran for minutes (the superball preset,
+/// 0.3 us a collision) until an ulp of the time outgrew the spacing of its collisions (t =
+/// 4.1e8, 853 million collisions). A million collisions take half a second (the preset: t =
+/// 4.8e5, energy kept to 1.5e-14); `--until` or `--max-collisions` bound it otherwise.
+pub const ENDLESS_MAX_COLLISIONS: u64 = 1_000_000;
+
 /// When to stop.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Limits {
@@ -102,6 +109,9 @@ pub enum Stop {
     Until,
     /// `--max-collisions` was reached.
     MaxCollisions,
+    /// The motion cannot end ([`Track::endless`]) and no `--max-collisions` was given: the run
+    /// stopped at `cap` ([`ENDLESS_MAX_COLLISIONS`]) instead of the default.
+    Endless { cap: u64 },
     /// The next collision would leave binary64 (inelastic bounces slowing geometrically spread
     /// collisions out without end): its time (`next`, absent when beyond 1.8e308), the
     /// positions there, or the energy after it (below 2.2e-308, where it underflows), as
@@ -408,19 +418,46 @@ impl Track {
             .sum()
     }
 
+    /// Whether the motion can never end: every collision elastic (`e = 1` between bodies and
+    /// at the walls) and the bodies confined (gravity toward a floor, or walls on both sides),
+    /// so energy is kept and nothing escapes; unless everything is at rest, collisions go on
+    /// without end. (An open elastic track ends: pi billiards; a dissipative one ends at rest,
+    /// in a Zeno sequence or at the horizon.)
+    pub fn endless(&self) -> bool {
+        self.e == 1.0
+            && self.e_wall == 1.0
+            && (self.gravity > 0.0 || (self.left_wall.is_some() && self.right_wall.is_some()))
+    }
+
     /// Runs the track through the one engine (`engine`); `log` sees every collision. A state
     /// that cannot be (bodies through each other or a wall beyond rounding, an elastic run that
     /// changed its energy) stops the run with [`Broken`] instead of being reported.
     ///
-    /// A jammed layout ([`Track::jammed`]) is refused before anything runs.
+    /// A jammed layout ([`Track::jammed`]) is refused before anything runs. A motion that
+    /// cannot end ([`Track::endless`]) left at the default cap ([`DEFAULT_MAX_COLLISIONS`])
+    /// stops at [`ENDLESS_MAX_COLLISIONS`] ([`Stop::Endless`]).
     pub fn run(
         &self,
         limits: Limits,
         log: Option<&mut dyn FnMut(&Event)>,
     ) -> Result<Run, TrackError> {
         self.jammed()?;
-        let run = engine::Sim::new(self).run(limits, log)?;
+        let endless = self.endless() && limits.max_collisions == DEFAULT_MAX_COLLISIONS;
+        let capped = Limits {
+            max_collisions: if endless {
+                ENDLESS_MAX_COLLISIONS
+            } else {
+                limits.max_collisions
+            },
+            ..limits
+        };
+        let mut run = engine::Sim::new(self).run(capped, log)?;
         budget::budgets_hold(self, &run)?;
+        if endless && run.stop == Stop::MaxCollisions {
+            run.stop = Stop::Endless {
+                cap: ENDLESS_MAX_COLLISIONS,
+            };
+        }
         Ok(run)
     }
 

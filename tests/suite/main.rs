@@ -62,4 +62,5 @@ mod view_layout;
 mod view_node;
 mod view_open;
 mod view_plane;
+mod view_tokens;
 mod width;

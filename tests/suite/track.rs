@@ -1689,3 +1689,101 @@ fn an_elastic_stack_keeps_its_energy_to_the_stated_tolerance() {
         "{text}"
     );
 }
+
+#[test]
+fn a_motion_that_never_ends_stops_at_its_own_cap_and_says_how_to_bound_it() {
+    use collide::track::{ENDLESS_MAX_COLLISIONS, energy_tolerance};
+    // The page's superball preset at the default --max-collisions ran for minutes (853 million
+    // collisions, then "please report this case" where an ulp of t = 4.1e8 outgrew the spacing
+    // of its collisions; issue 41). Elastic under gravity it cannot end: it stops at a million
+    // collisions (0.5 s measured), exit 0, with the reason and how to bound it.
+    assert_eq!(ENDLESS_MAX_COLLISIONS, 1_000_000);
+    let started = std::time::Instant::now();
+    let j = json(&SUPERBALL_STACK);
+    let seconds = started.elapsed().as_secs_f64();
+    assert!(seconds < 30.0, "{seconds} s");
+    assert_eq!(j["stop"]["reason"], "endless");
+    assert_eq!(j["stop"]["cap"], ENDLESS_MAX_COLLISIONS);
+    assert_eq!(j["collisions"], ENDLESS_MAX_COLLISIONS);
+    // E at rest = 9.81 (1 * 1.5 + 0.01 * 2.25) = 14.935725 (derived by hand); the change is
+    // within the tolerance docs/track.md states (1e-9 up to 562,950 collisions, 8 ulps of 1 a
+    // collision beyond: 1.78e-9 here). Measured -1.5e-14.
+    let (e0, e1) = (
+        j["energy"]["start"].as_f64().unwrap(),
+        j["energy"]["end"].as_f64().unwrap(),
+    );
+    assert!((e0 - 14.935725).abs() <= 4.0 * f64::EPSILON * e0, "{e0}");
+    let rel = (e1 - e0) / e0;
+    assert!(
+        rel.abs() <= energy_tolerance(ENDLESS_MAX_COLLISIONS),
+        "{rel:e}"
+    );
+    let mut args = vec!["track"];
+    args.extend(SUPERBALL_STACK);
+    let out = collide().args(&args).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout).replace('\n', " ");
+    for said in [
+        "Stopped: the motion never ends (every collision elastic",
+        "it stops at 1000000 collisions, the cap for such a run",
+        "give --until T for the state at a time T, or a --max-collisions N to go further",
+        "After 1000000 collisions",
+    ] {
+        assert!(text.contains(said), "{said}: {text}");
+    }
+    // An explicit cap is the user's, even at the default's value; --until still bounds by time.
+    let mut capped = SUPERBALL_STACK.to_vec();
+    capped.extend(["--max-collisions", "2000"]);
+    let j = json(&capped);
+    assert_eq!(j["stop"]["reason"], "max-collisions");
+    assert_eq!(j["collisions"], 2000);
+    let mut until = SUPERBALL_STACK.to_vec();
+    until.extend(["--until", "10"]);
+    assert_eq!(json(&until)["stop"]["reason"], "until");
+    // Walls on both sides hold an elastic body as well; an open elastic track (pi billiards,
+    // one wall) ends by itself and keeps the 1e9 default (31415 collisions for 100^4).
+    let walls = json(&[
+        "-m",
+        "1",
+        "-x",
+        "0",
+        "-v",
+        "1",
+        "--left-wall",
+        "-1",
+        "--right-wall",
+        "1",
+    ]);
+    assert_eq!(walls["stop"]["reason"], "endless");
+    assert_eq!(walls["collisions"], ENDLESS_MAX_COLLISIONS);
+    // One bounce from wall to wall takes 2 (a distance 2 at speed 1); the first at t = 1.
+    assert_eq!(walls["time"].as_f64().unwrap(), 1.0 + 2.0 * 999_999.0);
+    let pi = json(&["-m", "1,1e8", "-x", "1,2", "-v", "0,-1", "--left-wall", "0"]);
+    assert_eq!(
+        (pi["stop"]["reason"].clone(), pi["collisions"].clone()),
+        ("done".into(), 31415.into())
+    );
+}
+
+#[test]
+fn which_motions_never_end() {
+    let track = |e: f64, e_wall: f64, gravity: f64, right: Option<f64>| Track {
+        bodies: vec![Body {
+            m: Mass::from_f64(1.0).unwrap(),
+            x: 1.0,
+            v: 0.0,
+            size: 0.0,
+        }],
+        left_wall: Some(0.0),
+        right_wall: right,
+        e,
+        e_wall,
+        gravity,
+    };
+    // Elastic and held (gravity, or two walls): endless. Open, or losing energy: it ends.
+    assert!(track(1.0, 1.0, 9.81, None).endless());
+    assert!(track(1.0, 1.0, 0.0, Some(2.0)).endless());
+    assert!(!track(1.0, 1.0, 0.0, None).endless());
+    assert!(!track(1.0, 0.5, 9.81, None).endless());
+    assert!(!track(0.9, 1.0, 0.0, Some(2.0)).endless());
+}

@@ -257,7 +257,7 @@ pub fn json(
             }),
         );
     }
-    style.checked(Value::Object(m))
+    style.checked_json(Value::Object(m))
 }
 
 fn mat_json(style: &Style, m: &Mat, a: bool) -> Value {

@@ -179,5 +179,5 @@ pub fn json(frames: &[FrameView], reverse: bool, style: &Style) -> Result<Value,
             );
         }
     }
-    style.checked(json!({"frames": list, "invariants": inv}))
+    style.checked_json(json!({"frames": list, "invariants": inv}))
 }

@@ -28,7 +28,11 @@ use super::text::Block;
 
 pub mod changes;
 pub mod frames;
+mod overflow;
 pub mod solved;
+
+use overflow::{BEYOND, beyond_at};
+pub use overflow::{Overflow, named, unmarked};
 
 /// What a planar report shows (`--show`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -96,15 +100,10 @@ pub struct Style {
     pub bearings: bool,
     /// Set when a value is beyond binary64 (the report is then refused).
     overflow: Cell<bool>,
+    /// Set by [`Style::energy`] when the energy it returns underflows: the value written next
+    /// is that energy, marked beyond binary64 in JSON.
+    underflow: Cell<bool>,
 }
-
-/// A result beyond binary64, where the report would print inf.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "a result is beyond binary64 (|x| above 1.8e308, or an energy below 4.9e-324 and not \
-     zero): rescale the units, or use --exact"
-)]
-pub struct Overflow;
 
 impl Style {
     pub fn new(exact: bool, energy_scale: Option<Q>) -> Style {
@@ -113,6 +112,7 @@ impl Style {
             energy_scale,
             bearings: false,
             overflow: Cell::new(false),
+            underflow: Cell::new(false),
         }
     }
 
@@ -138,6 +138,7 @@ impl Style {
 
     /// A value for people.
     pub fn show(&self, q: &Q, approx: bool) -> String {
+        self.underflow.set(false);
         // An approximation carries relative digits, so a zero among them is exactly zero (a
         // body at rest's part along an irrational unit normal): `0`, never `≈0`.
         let approx = approx && !q.is_zero();
@@ -162,7 +163,17 @@ impl Style {
     }
 
     /// A value for JSON: a number, or in exact mode a fraction string.
+    /// Beyond binary64 (or an energy [`Style::energy`] found to underflow) it is marked, to
+    /// be named by [`Style::checked_json`].
     pub fn json(&self, q: &Q, approx: bool) -> Value {
+        let beyond = || Value::from(format!("{BEYOND}{}", Exact::Approx(q.clone()).show()));
+        if self.underflow.replace(false) {
+            return beyond();
+        }
+        if !self.exact && to_f64(q).is_none() {
+            self.overflow.set(true);
+            return beyond();
+        }
         let approx = approx && !q.is_zero();
         if self.exact {
             let e = if approx {
@@ -186,15 +197,28 @@ impl Style {
         };
         if !self.exact && !q.is_zero() && to_f64(&q) == Some(0.0) {
             self.overflow.set(true);
+            self.underflow.set(true);
         }
         q
     }
 
+    /// `t`, unless a value written with this style was beyond binary64.
     pub fn checked<T>(&self, t: T) -> Result<T, Overflow> {
         if self.overflow.get() {
-            Err(Overflow)
+            Err(Overflow { quantity: None })
         } else {
             Ok(t)
+        }
+    }
+
+    /// A JSON report, unless a value in it was beyond binary64: then the error names the first
+    /// such value by its path.
+    pub fn checked_json(&self, v: Value) -> Result<Value, Overflow> {
+        match beyond_at(&v, "") {
+            Some(path) => Err(Overflow {
+                quantity: Some(path),
+            }),
+            None => self.checked(v),
         }
     }
 }
@@ -574,7 +598,7 @@ pub fn reverse_json(o: &Outcome, style: &Style) -> Result<Value, Overflow> {
     if let Some(e) = &r.e {
         m.insert("restitution".into(), style.json(e, r.approx.e()));
     }
-    style.checked(Value::Object(m))
+    style.checked_json(Value::Object(m))
 }
 
 /// Every body's velocity before (or after, `fin`), each component marked as it is.
@@ -692,7 +716,7 @@ pub fn json(o: &Outcome, show: Show, style: &Style) -> Result<Value, Overflow> {
     if show.changes {
         m.insert("changes".into(), changes::json(o, style));
     }
-    style.checked(Value::Object(m))
+    style.checked_json(Value::Object(m))
 }
 
 #[cfg(test)]

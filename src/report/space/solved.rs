@@ -389,11 +389,13 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
             ));
             json!({ "consistent": false })
         } else {
+            // The JSON first: an overflow names the quantity (`Style::checked_json`).
+            let j = super::json(o, opts.show, &style)?;
             text.push_str(&super::text(o, opts.show, &style, &units)?);
             if opts.reverse {
                 text.push_str(&reverse_text(o, &style)?);
             }
-            super::json(o, opts.show, &style)?
+            j
         };
         let m = j.as_object_mut().expect("a report is an object");
         if *opts.frame != Frame::Lab {
@@ -437,6 +439,14 @@ pub fn render(posed: &Posed, solved: &Solved, opts: &Options) -> Result<Rendered
         list.pop().unwrap_or_default()
     };
     annotate_units(&mut json, &units);
+    // Every value of the JSON within binary64 (the solved values and the frame's too), or the
+    // quantity named; given values that contradict each other print as they are (exit 1), a
+    // value beyond binary64 as its decimal text, never 0 (text: `Style::show`).
+    let json = if inconsistent {
+        super::unmarked(json)
+    } else {
+        style.checked_json(json)?
+    };
     Ok(Rendered {
         text,
         json,
