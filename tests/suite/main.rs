@@ -56,4 +56,5 @@ mod view_layout;
 mod view_node;
 mod view_open;
 mod view_plane;
+mod view_rigid;
 mod width;
