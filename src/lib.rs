@@ -41,7 +41,6 @@ pub mod values;
 pub mod line;
 
 // 3b. the plane and space, rigid bodies
-#[cfg(feature = "cli")]
 pub mod rigid;
 pub mod space;
 

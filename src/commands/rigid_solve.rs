@@ -13,7 +13,7 @@ use collide::rigid::units::{Measure, Typed};
 use collide::rigid::unknowns::{self, Asked, Known, Unknown};
 use collide::space::typed::split_bodies;
 use collide::values::number::{Given, Number};
-use collide::values::units::{EnergyUnit, Units};
+use collide::values::units::EnergyUnit;
 
 use super::Outcome;
 use crate::cli::{CaseArgs, Format, RigidArgs, SolveArgs};
@@ -283,19 +283,11 @@ fn knowns(rigid: &RigidArgs) -> Result<Vec<Known>> {
 
 /// The units of a posed problem: SI when it had any unit.
 fn units(si: bool, energy: Option<&'static EnergyUnit>) -> Result<RigidUnits> {
-    let mut units = if si {
-        Units {
-            mass: Some("kg"),
-            velocity: Some("m/s"),
-            energy_as: None,
-        }
-    } else {
-        Units::default()
-    };
+    let mut u = RigidUnits::new(si);
     if let Some(e) = energy {
-        units = units.with_energy_unit(e)?;
+        u.units = u.units.with_energy_unit(e)?;
     }
-    Ok(RigidUnits { si, units })
+    Ok(u)
 }
 
 /// The report of a rigid problem in `format`, and its exit status (1: energy created).
@@ -311,10 +303,7 @@ pub fn report_of(
     let outcome = match collide::rigid::solve(problem) {
         Ok(o) => o,
         Err(ImpactError::NotApproaching(along)) => {
-            let note = format!(
-                "Note: the bodies do not approach at the contact: n.w = {along} <= 0 (w the \
-                 relative velocity of the contact points), so they do not collide (no FIN)."
-            );
+            let note = report::not_approaching(&along);
             return Ok(match format {
                 Format::Text => (
                     collide::report::text::wrap(&note, collide::values::terminal::width(), "  "),

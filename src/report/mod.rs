@@ -12,7 +12,6 @@ pub mod frames;
 pub mod json;
 pub mod not_shown;
 pub mod pi;
-#[cfg(feature = "cli")]
 pub mod rigid;
 #[cfg(feature = "cli")]
 pub mod scene;

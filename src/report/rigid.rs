@@ -60,6 +60,20 @@ pub struct RigidUnits {
 }
 
 impl RigidUnits {
+    /// SI (kg, m/s) when `si`, else the numbers as typed; no energy unit.
+    pub fn new(si: bool) -> RigidUnits {
+        let units = if si {
+            Units {
+                mass: Some("kg"),
+                velocity: Some("m/s"),
+                energy_as: None,
+            }
+        } else {
+            Units::default()
+        };
+        RigidUnits { si, units }
+    }
+
     fn suffix(&self, unit: &str) -> String {
         if self.si {
             format!(" {unit}")
@@ -67,6 +81,15 @@ impl RigidUnits {
             String::new()
         }
     }
+}
+
+/// What is said, in place of a report, of bodies that do not approach at the contact (`n.w =
+/// along`, `w` the relative velocity of the contact points): `collide solve` and the page.
+pub fn not_approaching(along: &impl std::fmt::Display) -> String {
+    format!(
+        "Note: the bodies do not approach at the contact: n.w = {along} <= 0 (w the relative \
+         velocity of the contact points), so they do not collide (no FIN)."
+    )
 }
 
 /// The text of a body's kind: "a point particle", "rod 1.2 m on a pivot at (0, -0.6)".

@@ -5,13 +5,14 @@
 //! Requests are tagged by `op`: `{"op": "solve", "m1": "4", "m2": "1", "v1": "60", "v2": "10",
 //! "e": "2/3", "frame": "com", "reverse": false}` (a `two_body::CaseInput`), `{"op": "plane",
 //! "m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(0,0)", "normal": "30deg", ...}` (a
-//! `plane::PlaneInput`), or `{"op": "track", "masses": "1,0.01", ...}` (a `stack::TrackInput`). Answers are `{"ok": true, ...}`
+//! `plane::PlaneInput`), or `{"op": "track", "masses": "1,0.01", ...}` (a `stack::TrackInput`) or `{"op": "rigid", "m1":
+//! "1", "m2": "4", "v1": "3", "target": "rod 2", "hit_at": "end", ...}` (a `rigid::RigidInput`). Answers are `{"ok": true, ...}`
 //! with the result's fields, or `{"ok": false, "field": "m1", "error": "..."}`.
 
 use serde::{Deserialize, Serialize};
 
 use super::InputError;
-use super::input::{CaseInput, PlaneInput, TrackInput};
+use super::input::{CaseInput, PlaneInput, RigidInput, TrackInput};
 
 /// What the page asks.
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
@@ -23,6 +24,8 @@ pub enum Request {
     Plane(PlaneInput),
     /// Bodies on a track, under gravity: the superball stack.
     Track(TrackInput),
+    /// A ball hits a rod, a door or a floor: the rigid panel.
+    Rigid(RigidInput),
 }
 
 /// The answer to `request` (JSON text), as JSON text.
@@ -40,6 +43,7 @@ pub fn answer(request: &Request) -> serde_json::Value {
         Request::Solve(c) => c.solve().map(serde_json::to_value),
         Request::Plane(p) => p.solve().map(serde_json::to_value),
         Request::Track(t) => t.run().map(serde_json::to_value),
+        Request::Rigid(r) => r.solve().map(serde_json::to_value),
     };
     match result {
         Ok(Ok(mut v)) => {

@@ -112,3 +112,44 @@ pub fn largest_field(fields: &[(&'static str, &String)]) -> &'static str {
         .fold(("m1", -1.0), |best, x| if x.1 > best.1 { x } else { best })
         .0
 }
+
+/// A rigid impact as the page's inputs hold it, in `collide solve`'s words for the homework
+/// shapes (docs/rigid.md): the ball (body 1) and the body it hits, `m2` a mass or `wall`,
+/// `floor`, `ceiling`; an empty text is a flag not given.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct RigidInput {
+    pub m1: String,
+    pub m2: String,
+    /// The ball's velocity: a number (along +x) or a vector `(vx,vy)`.
+    pub v1: String,
+    /// The target's velocity (free targets only), empty for at rest (`0`).
+    #[serde(default)]
+    pub v2: String,
+    /// `--target`: `rod 2`, `door 0.9 m`, `disk 1`, ...
+    #[serde(default)]
+    pub target: String,
+    /// `--pivot`: `end`, `centre`, `(x,y)`.
+    #[serde(default)]
+    pub pivot: String,
+    /// `--hit-at`: the distance along the target, or `end`.
+    #[serde(default)]
+    pub hit_at: String,
+    /// `--ball`: `sphere 1`, `shell 3 cm`.
+    #[serde(default)]
+    pub ball: String,
+    /// `--spin`: `W1` or `W1,W2`.
+    #[serde(default)]
+    pub spin: String,
+    #[serde(default = "elastic")]
+    pub e: String,
+    /// `--friction`: Coulomb's mu.
+    #[serde(default)]
+    pub friction: String,
+    /// `--tangential-restitution`: Garwin's beta.
+    #[serde(default)]
+    pub beta: String,
+    /// `--law`: `newton`, `poisson`, `stronge`.
+    #[serde(default)]
+    pub law: String,
+}

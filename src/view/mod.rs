@@ -11,6 +11,9 @@
 //! - `plane`: two pucks in the plane (issue 25's solver) for the third panel: the same JSON as
 //!   `collide solve --format json` with vectors and a line of impact, and the pucks, arrows,
 //!   momentum triangles and the velocity plane of the normal parts to draw;
+//! - `rigid`: a ball hits a rod, a door or a floor (`rigid`) for the rigid panel: the same JSON
+//!   as `collide solve --format json` with the homework flags, and the bodies, arrows and spins
+//!   at the instant of impact with the velocity plane of the contact points along the normal;
 //! - `stack`: a track under gravity (the superball stack) for the animation: the run, its
 //!   motion sampled in time, the velocity amplification;
 //! - `shell`: the `collide` command line and the scene TOML of what is on screen;
@@ -21,6 +24,7 @@ pub mod input;
 #[cfg(feature = "cli")]
 pub mod page;
 pub mod plane;
+pub mod rigid;
 pub mod shell;
 pub mod stack;
 pub mod two_body;

@@ -8,19 +8,21 @@ use serde::Serialize;
 
 use super::InputError;
 use super::api::{Request, answer};
-use super::input::{CaseInput, PlaneInput, TrackInput};
+use super::input::{CaseInput, PlaneInput, RigidInput, TrackInput};
 
 const TEMPLATE: &str = include_str!("assets/page.html");
 const STYLE: &str = include_str!("assets/page.css");
 /// The page's script, in parts by job, run in this order inside one function (they share its
 /// scope): the core and drawing helpers, the momentum and energy bars and the live regions'
-/// sentences, the velocity plane and dual panel, the plane, the stack, and the start.
-const SCRIPTS: [&str; 6] = [
+/// sentences, the velocity plane and dual panel, the plane, the stack, the rigid panel, and the
+/// start.
+const SCRIPTS: [&str; 7] = [
     include_str!("assets/page.js"),
     include_str!("assets/bars.js"),
     include_str!("assets/two_body.js"),
     include_str!("assets/plane.js"),
     include_str!("assets/stack.js"),
+    include_str!("assets/rigid.js"),
     include_str!("assets/start.js"),
 ];
 
@@ -35,6 +37,7 @@ pub struct Setup {
     pub case: CaseInput,
     pub plane: PlaneInput,
     pub track: TrackInput,
+    pub rigid: RigidInput,
     /// The part shown first: `two-body`, `plane` or `stack`.
     pub focus: Focus,
 }
@@ -51,7 +54,9 @@ impl Setup {
     /// Lecture Fig. 1.3 (a 4-ton SUV at 60 rear-ends a 1-ton VW at 10, elastic), two equal
     /// disks of radius 1, one at rest, hit at the impact parameter 1 (the line of impact at
     /// asin(1/2) = 30 degrees: they leave at right angles), and the 2-ball superball stack
-    /// dropped from rest 1 m above the floor.
+    /// dropped from rest 1 m above the floor; on the rigid panel, docs/rigid.md's ball of mass 1
+    /// hitting the end of a free rod of mass 4 and length 2 at 3 (it stops dead: the rod's
+    /// effective mass at its end is M/4).
     pub fn lecture() -> Setup {
         Setup {
             case: CaseInput {
@@ -92,6 +97,21 @@ impl Setup {
                 gravity: "9.81".into(),
                 until: String::new(),
             },
+            rigid: RigidInput {
+                m1: "1".into(),
+                m2: "4".into(),
+                v1: "3".into(),
+                v2: String::new(),
+                target: "rod 2".into(),
+                pivot: String::new(),
+                hit_at: "end".into(),
+                ball: String::new(),
+                spin: String::new(),
+                e: "elastic".into(),
+                friction: String::new(),
+                beta: String::new(),
+                law: String::new(),
+            },
             focus: Focus::TwoBody,
         }
     }
@@ -102,10 +122,11 @@ pub fn html(setup: &Setup) -> Result<String, InputError> {
     let solved = checked(answer(&Request::Solve(setup.case.clone())))?;
     let plane = checked(answer(&Request::Plane(setup.plane.clone())))?;
     let stack = checked(answer(&Request::Track(setup.track.clone())))?;
+    let rigid = checked(answer(&Request::Rigid(setup.rigid.clone())))?;
     let text = |v: &serde_json::Value, key: &str| v[key].as_str().unwrap_or_default().to_string();
     let data = serde_json::json!({
         "setup": setup,
-        "answers": {"solve": solved, "plane": plane, "track": stack},
+        "answers": {"solve": solved, "plane": plane, "track": stack, "rigid": rigid},
     });
     let script = format!(
         "\"use strict\";\n(function () {{\n{}}})();\n",
@@ -125,6 +146,8 @@ pub fn html(setup: &Setup) -> Result<String, InputError> {
         ("{{TRACK_STATE}}", escape(&text(&stack, "state"))),
         ("{{TRACK_COMMAND}}", escape(&text(&stack, "command"))),
         ("{{TRACK_SCENE}}", escape(&text(&stack, "scene"))),
+        ("{{RIGID_STATE}}", escape(&text(&rigid, "state"))),
+        ("{{RIGID_COMMAND}}", escape(&text(&rigid, "command"))),
     ];
     Ok(fill_in(TEMPLATE, &fill))
 }

@@ -2,7 +2,7 @@
 //! that a case found by playing becomes a command that reproduces it. Values go out as they were
 //! typed (`2/3` stays `2/3`), so the command computes from the same exact numbers.
 
-use super::input::{CaseInput, PlaneInput, TrackInput};
+use super::input::{CaseInput, PlaneInput, RigidInput, TrackInput};
 
 /// `text` as one shell word: as it is when no shell treats any of its characters specially,
 /// else in single quotes (a quote inside written `'\''`).
@@ -150,6 +150,35 @@ pub fn plane_command(p: &PlaneInput) -> String {
     out.push_str(&rules(&p.e, &p.frame, p.reverse));
     if p.exact {
         out.push_str(" --exact");
+    }
+    out
+}
+
+/// The `collide solve` command line of a rigid impact (docs/rigid.md): each field given as its
+/// flag, as typed.
+pub fn rigid_command(r: &RigidInput) -> String {
+    let v2 = Some(r.v2.trim()).filter(|t| !t.is_empty()).unwrap_or("0");
+    let v = format!("{},{v2}", r.v1.trim());
+    let mut out = format!(
+        "collide solve -m {} -v {}",
+        word(&format!("{},{}", r.m1.trim(), r.m2.trim())),
+        word(&v)
+    );
+    for (flag, text) in [
+        ("--target", &r.target),
+        ("--pivot", &r.pivot),
+        ("--hit-at", &r.hit_at),
+        ("--ball", &r.ball),
+        ("--spin", &r.spin),
+        ("-e", &r.e),
+        ("--friction", &r.friction),
+        ("--tangential-restitution", &r.beta),
+        ("--law", &r.law),
+    ] {
+        let t = text.trim();
+        if !(t.is_empty() || flag == "-e" && is_elastic(t)) {
+            out.push_str(&format!(" {flag} {}", word(t)));
+        }
     }
     out
 }

@@ -62,5 +62,6 @@ mod view_layout;
 mod view_node;
 mod view_open;
 mod view_plane;
+mod view_rigid;
 mod view_tokens;
 mod width;

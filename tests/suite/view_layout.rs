@@ -25,6 +25,11 @@ fn layout() -> &'static Value {
 /// browser by `tests/suite/<driver> PAGE OUT_DIR` (its screenshots left beside the page): the
 /// JSON it printed.
 pub(crate) fn drive(name: &str, driver: &str) -> Value {
+    drive_with(name, driver, &[])
+}
+
+/// `drive`, with more arguments after `PAGE OUT_DIR`.
+pub(crate) fn drive_with(name: &str, driver: &str, more: &[&str]) -> Value {
     let dir = scratch(name);
     let page = dir.join("view.html");
     collide()
@@ -38,6 +43,7 @@ pub(crate) fn drive(name: &str, driver: &str) -> Value {
         .arg(script)
         .arg(&page)
         .arg(&dir)
+        .args(more)
         .output()
         .expect("python3 runs");
     assert!(

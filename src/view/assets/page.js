@@ -72,6 +72,23 @@
   const short = (x) => fmt(x, 4);
   const num = (x) => fmt(x, 7);
 
+  // A table of numbers in `box`: its caption, the head's cells and the rows (a row's header
+  // first), as HTML for the names and text for the values.
+  function numbersTable(box, caption, head, rows) {
+    const t = document.createElement("table");
+    t.createCaption().innerHTML = caption;
+    const h = t.createTHead().insertRow();
+    for (const x of head) { const th = document.createElement("th"); th.innerHTML = x; h.appendChild(th); }
+    const body = t.createTBody();
+    for (const r of rows) {
+      const tr = body.insertRow();
+      const th = document.createElement("th");
+      th.scope = "row"; th.innerHTML = r[0]; tr.appendChild(th);
+      for (const x of r.slice(1)) tr.insertCell().textContent = x;
+    }
+    box.appendChild(t);
+  }
+
   // About `n` round ticks from lo to hi.
   // Spans are taken by halves (hi/2 - lo/2): a box from -1e308 to 1e308 is 2e308 wide, which
   // binary64 cannot hold (the valid case M 1, 1e-308; V 0, 1e308 draws such a box).

@@ -326,20 +326,7 @@
     const cell = (x) => (typeof x === "number" ? num(x) : String(x));
     const pair = (v) => "(" + cell(v[0]) + ", " + cell(v[1]) + ")";
     const polar = (speed, angle) => (speed === 0 ? "0" : num(speed) + (angle === null || angle === undefined ? "" : " @ " + num(angle) + "\u00b0"));
-    const table = (caption, head, rows) => {
-      const t = document.createElement("table");
-      t.createCaption().innerHTML = caption;
-      const h = t.createTHead().insertRow();
-      for (const x of head) { const th = document.createElement("th"); th.innerHTML = x; h.appendChild(th); }
-      const body = t.createTBody();
-      for (const r of rows) {
-        const tr = body.insertRow();
-        const th = document.createElement("th");
-        th.scope = "row"; th.innerHTML = r[0]; tr.appendChild(th);
-        for (const x of r.slice(1)) tr.insertCell().textContent = x;
-      }
-      box.appendChild(t);
-    };
+    const table = (caption, head, rows) => numbersTable(box, caption, head, rows);
     const para = (html) => { const x = document.createElement("p"); x.innerHTML = html; box.appendChild(x); };
     const unit = s.units ? " (" + s.units.velocity + ")" : "";
     const rows = [
