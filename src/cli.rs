@@ -107,6 +107,17 @@ fn parse_sig(s: &str) -> Result<u8, String> {
     }
 }
 
+/// `--fin`: final velocities, a slide whose mu is unknown (`slide 20 cm mu ?`) read as `?` (the
+/// collision solves it; `commands::solve` reads the slide again from the text as typed).
+fn fin_listed(s: &str) -> Result<Listed, collide::space::typed::ListedError> {
+    let masked = collide::line::slide::masked(s);
+    let mut listed = Listed::parse(&masked, Dimension::Velocity, "final velocities F1,F2")?;
+    if masked != s {
+        listed.text = s.trim().to_string();
+    }
+    Ok(listed)
+}
+
 #[derive(Subcommand, Debug)]
 #[allow(clippy::large_enum_variant)] // parsed once per run
 pub enum Command {
@@ -566,9 +577,9 @@ pub struct SolveArgs {
     pub contact_time: Option<collide::values::rational::Q>,
 
     /// Final velocities F1,F2 as given by a problem ('?' for unknown): collide solves for the
-    /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest
-    #[arg(long, value_name = "F1,F2", allow_hyphen_values = true,
-          value_parser = |s: &str| Listed::parse(s, Dimension::Velocity, "final velocities F1,F2"))]
+    /// unknowns (any two of m1, m2, v1, v2, f1, f2, e) and checks the rest; 'slide D mu ?'
+    /// solves the floor's mu from the collision
+    #[arg(long, value_name = "F1,F2", allow_hyphen_values = true, value_parser = fin_listed)]
     pub fin: Option<Listed>,
 
     /// Also draw the velocity diagram: to FILE.svg, or 'term' for the terminal

@@ -2,6 +2,7 @@
 
 use anyhow::Result;
 use collide::line::problem::Posed;
+use collide::line::slide;
 use collide::plot::Kind;
 use collide::report::not_shown::{self, Event};
 use collide::report::special::Special;
@@ -24,6 +25,18 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
     // With --show slides, --friction is the floor's (two bodies on a rail), not a contact's.
     let slides = args.show.contains(&collide::report::Section::Slides);
     let floor = slides.then_some(args.rigid.friction.as_ref()).flatten();
+    let slides_given = match args.fin.as_ref().filter(|f| f.pair.is_some()) {
+        Some(fin) => slide::slides(&fin.text)?,
+        None => Vec::new(),
+    };
+    let floor_unknown = matches!(floor, Some(Given::Unknown));
+    if let Some(bare) = slides_given.iter().find(|s| s.bare && !floor_unknown) {
+        anyhow::bail!(
+            "'{}': a slide with no mu is on the floor whose mu is solved for (--friction ? \
+             --show slides); give its mu ('slide D mu 0.62'), or 'slide D mu ?' to solve it",
+            bare.typed
+        );
+    }
     if slides {
         match floor {
             _ if args.rigid.active_beyond_friction() || args.case.spatial() => anyhow::bail!(
@@ -35,9 +48,11 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
                 "--friction {mu}: the floor's coefficient of kinetic friction must be above 0 \
                  (a frictionless floor never stops a slide)"
             ),
+            Some(Given::Unknown) if !slides_given.is_empty() => {}
             Some(_) => anyhow::bail!(
-                "--friction ? with --show slides: the floor's mu is not solved for on a rail; \
-                 give it (--friction MU), or mark another value '?'"
+                "--friction ? with --show slides: nothing fixes the floor's mu; give a slide \
+                 after the collision in --fin ('?,slide 20 cm': mu = f^2 / (2 g d)), or give \
+                 mu (--friction MU)"
             ),
             None => anyhow::bail!(
                 "--show slides needs --friction MU, the floor's coefficient of kinetic friction"
@@ -113,6 +128,11 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
             );
         }
         Posed::Collision(case, unknowns) => (case, unknowns),
+        _ if !slides_given.is_empty() => anyhow::bail!(
+            "'{}': mu ? in a slide is solved from a collision of two movable bodies (not a \
+             wall, a separation or a pass-through)",
+            slides_given[0].typed
+        ),
         Posed::Separation(s, solved) => {
             return special(Special::Separation(s), Some(solved), &sections, &args);
         }
@@ -129,15 +149,24 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
             status: 1,
         });
     }
+    let mu = floor_friction(case, &slides_given, &sections, args.exact)?;
+    if let (Some(mu), true) = (&mu, floor_unknown) {
+        sections.asked.friction = Some((mu.value.clone(), mu.shown.clone()));
+    }
     let report = AnyReport::of(case, &args.frame, args.exact, &sections, args.reverse)?;
     let mut stdout = match args.format {
         Format::Text => {
-            report.text(case, &sections, unknowns.as_ref())
+            mu.as_ref().map(|m| m.line.clone()).unwrap_or_default()
+                + &report.text(case, &sections, unknowns.as_ref())
                 + &not_shown::text(Event::Collision, &args.show)
         }
         Format::Json => {
             let mut json = report.json();
             solved::annotate(&mut json, &case.units, unknowns.as_ref(), args.exact);
+            if let (Some(mu), Some(map)) = (&mu, json.as_object_mut()) {
+                let solved = map.entry("solved").or_insert_with(|| serde_json::json!({}));
+                solved["mu"] = mu.json.clone();
+            }
             with_notes(&mut json, Event::Collision, &args.show);
             json::render(&json)
         }
@@ -152,6 +181,57 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         )?);
     }
     Ok(Outcome { stdout, status: 0 })
+}
+
+/// The floor's mu solved from the slides after the collision (`slide 20 cm mu ?`), as shown.
+struct FloorFriction {
+    value: collide::values::rational::Q,
+    /// As printed: a fraction under --exact, else binary64's shortest digits.
+    shown: String,
+    /// `Solved: mu = ...` and how, a paragraph.
+    line: String,
+    json: serde_json::Value,
+}
+
+/// `mu = f^2 / (2 g d)` from the solved final velocities, exact when the case is.
+fn floor_friction(
+    case: &collide::line::case::Case,
+    given: &[slide::Slide],
+    sections: &Sections,
+    exact: bool,
+) -> Result<Option<FloorFriction>> {
+    let Some(h) = sections.heights.as_ref().filter(|_| !given.is_empty()) else {
+        return Ok(None);
+    };
+    let exact_case = exact || (case.solved() && case.check_exact().is_ok());
+    let fin = if exact_case {
+        collide::solver::exact::ExactCollision::from_case(case).v_fin_q()
+    } else {
+        let f = case.collision.v_fin();
+        [f.x, f.y].map(collide::values::rational::from_f64)
+    };
+    let Some(value) = slide::friction(given, &fin, &h.g, &h.velocity_si, exact_case)? else {
+        return Ok(None);
+    };
+    let (shown, json) = match collide::values::rational::to_f64(&value) {
+        _ if exact => (
+            collide::values::quantity::fraction(&value),
+            serde_json::json!(collide::values::quantity::fraction(&value)),
+        ),
+        Some(x) => (collide::values::number::num(x), serde_json::json!(x)),
+        None => anyhow::bail!("mu = f^2 / (2 g d) is beyond binary64; --exact gives it"),
+    };
+    let body = given[0].body + 1;
+    let line = collide::report::text::paragraph(&format!(
+        "Solved: mu = {shown} (the floor's: mu = f{body}^2 / (2 g d), g = {} m/s^2)",
+        h.g_text()
+    ));
+    Ok(Some(FloorFriction {
+        value,
+        shown,
+        line,
+        json,
+    }))
 }
 
 /// A separation or a wall: its own report, and the flags that describe only a collision of two

@@ -3,7 +3,7 @@
 //!
 //! Physics first (`inertia`, `restitution`, `collision`, `order`, `ellipse`, `changes`,
 //! `separation`, `spring`, `pendulum`, `wall`, `chain`), then what a user asks of it (`case`,
-//! `problem`, `unknowns`, `knowns`, `frame`). The plane and space (`crate::space`) build on this
+//! `problem`, `unknowns`, `knowns`, `slide`, `frame`). The plane and space (`crate::space`) build on this
 //! layer: the normal parts of a smooth contact collide by its 1D rule.
 
 // The physics of two bodies on a rail.
@@ -24,4 +24,5 @@ pub mod case;
 pub mod frame;
 pub mod knowns;
 pub mod problem;
+pub mod slide;
 pub mod unknowns;

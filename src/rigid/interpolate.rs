@@ -237,6 +237,29 @@ fn bisect(p: &[Q], mut a: Q, mut b: Q, a_positive: bool) -> Root {
     }
 }
 
+/// The continued-fraction convergents of `x` (at most 16): the simplest rationals near it, to
+/// try as the exact value of a bisected root.
+pub fn convergents(x: &Q) -> Vec<Q> {
+    use crate::values::rational::IBig;
+    let (mut h0, mut h1) = (IBig::ZERO, IBig::ONE);
+    let (mut k0, mut k1) = (IBig::ONE, IBig::ZERO);
+    let mut r = x.clone();
+    let mut out = Vec::new();
+    for _ in 0..16 {
+        let a = r.floor();
+        let h = &a * &h1 + &h0;
+        let k = &a * &k1 + &k0;
+        out.push(Q::from(h.clone()) / Q::from(k.clone()));
+        (h0, h1, k0, k1) = (h1, h, k1, k);
+        let rest = &r - Q::from(a);
+        if rest.is_zero() {
+            break;
+        }
+        r = Q::ONE / rest;
+    }
+    out
+}
+
 /// A bound on the size of every root of `p` (Cauchy's: `1 + max |a_i / a_n|`).
 pub fn root_bound(p: &[Q]) -> Q {
     let Some(n) = degree(p) else {

@@ -16,7 +16,7 @@
 //!   gravity, a ball sliding on the floor starts to roll);
 //! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem;
 //!   `unknowns`: one value typed `?`, fixed by a given final spin or a pivot without impulse,
-//!   from the impact as a rational function of it (`interpolate`).
+//!   from the impact as a rational function of it (`interpolate`), or why not (`unsolvable`).
 
 pub mod algebra;
 pub mod body;
@@ -35,6 +35,7 @@ pub mod slip;
 pub mod swing;
 pub mod units;
 pub mod unknowns;
+pub mod unsolvable;
 
 /// Solves a posed problem.
 pub fn solve(problem: impact::Problem) -> Result<outcome::Outcome, impact::ImpactError> {

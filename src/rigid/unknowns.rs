@@ -29,6 +29,7 @@ use super::laws::Mode;
 use super::outcome::Outcome;
 use super::pose::{Either, MassTyped, Resolver};
 use super::units::{Measure, Typed};
+pub use super::unsolvable::UnknownError;
 
 /// What a rigid problem may leave unknown (`?`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -108,60 +109,6 @@ pub fn placeholder(text: &str, what: &'static str) -> Result<Option<String>, Unk
         Some(rest) if !rest.contains('?') => Ok(Some(format!("1{rest}"))),
         _ => Err(UnknownError::Where(what, t.to_string())),
     }
-}
-
-/// Why the unknown cannot be solved for.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum UnknownError {
-    #[error(
-        "{0} '{1}': '?' stands for a whole value or a size along a direction ('? @ -30deg', \
-         '? kg'), not for a component"
-    )]
-    Where(&'static str, String),
-    #[error(
-        "{count} unknowns ({names}) and {knowns} given final value{}: give {more} more known \
-         value{} (a rigid impact solves one unknown from one final value)",
-        if *.knowns == 1 { "" } else { "s" },
-        if *.more == 1 { "" } else { "s" }
-    )]
-    TooMany {
-        count: usize,
-        names: String,
-        knowns: usize,
-        more: usize,
-    },
-    #[error(
-        "{0} = ?: nothing fixes it: give 1 more known value, a final spin (--fin-spin 'W1,W2') \
-         or --pivot-impulse 0"
-    )]
-    NoKnown(String),
-    #[error("--pivot-impulse 0 needs a pivoted target (--pivot end, centre or '(x,y)')")]
-    NoPivot,
-    #[error("--fin-spin: body {0} is a {1} and has no spin of its own: give the target's")]
-    NoSpin(usize, &'static str),
-    #[error(
-        "{0} ?: with friction (--friction MU) the impact is piecewise (Routh's phases): only mu \
-         can be the unknown; drop --friction, or give {0}"
-    )]
-    WithFriction(String),
-    #[error(
-        "--hit-at ? on a round target: the contact point sqrt(R^2 - b^2) is not rational in b; \
-         give the impact parameter b"
-    )]
-    Round,
-    #[error("{0} ?: {1}")]
-    Impossible(String, String),
-    #[error("no value fits: {0}")]
-    None(String),
-    #[error("more than one value fits: {0}; give another known to choose")]
-    Many(String),
-    #[error(
-        "--exact: {0} = {1} is irrational (a root of a quadratic), and exact arithmetic holds \
-         rationals only: drop --exact"
-    )]
-    Irrational(String, String),
-    #[error("{0}")]
-    Pose(String),
 }
 
 /// What was solved: the unknown's value (in the case's units), or for mu where the contact
@@ -448,7 +395,7 @@ fn range(hw: &Homework, u: Unknown, si: bool) -> Result<Range, UnknownError> {
                 t.hit_at = h;
                 t.pose().map_err(|e| UnknownError::Pose(e.to_string()))
             };
-            let top = pose(Some(HitTyped::End)).map_err(|_| UnknownError::Round)?;
+            let top = pose(Some(HitTyped::End))?;
             let zero = Typed::parse(if si { "0 m" } else { "0" }, Measure::Length, "--hit-at")
                 .map_err(|e| UnknownError::Pose(e.to_string()))?;
             let base = pose(Some(HitTyped::At(zero)))?;
@@ -466,18 +413,113 @@ fn rational(
     given: &Given,
     si: bool,
 ) -> Result<(Value, Outcome), UnknownError> {
+    if u == Unknown::HitAt
+        && let Some(round) = round_target(hw, si)?
+    {
+        return round_hit(hw, given, si, &round);
+    }
     let range = range(hw, u, si)?;
-    let mut samples: Vec<(Q, Vec<Q>)> = Vec::new();
-    for x in candidates(u, &range) {
-        if let Ok(o) = outcome(hw, u, &x, si) {
-            samples.push((x, given.residual(&o)?));
+    let samples = sampled(hw, u, given, si, candidates(u, &range), Q::clone)?;
+    let found = roots_of(&samples, u, &range)?;
+    pick(hw, u, given, si, &range, found, |_| true)
+}
+
+/// The residual at samples `s` of a parameter (the unknown at `x_of(s)`), up to
+/// `interpolate::SAMPLES` of them where the impact is solved.
+fn sampled(
+    hw: &Homework,
+    u: Unknown,
+    given: &Given,
+    si: bool,
+    at: impl IntoIterator<Item = Q>,
+    x_of: impl Fn(&Q) -> Q,
+) -> Result<Vec<(Q, Vec<Q>)>, UnknownError> {
+    let mut samples = Vec::new();
+    for s in at {
+        if let Ok(o) = outcome(hw, u, &x_of(&s), si) {
+            samples.push((s, given.residual(&o)?));
         }
         if samples.len() == interpolate::SAMPLES {
             break;
         }
     }
-    let found = roots_of(&samples, u, &range)?;
-    pick(hw, u, given, si, &range, found, |_| true)
+    Ok(samples)
+}
+
+/// A round target's radius and name (`None`: the target is not round).
+fn round_target(hw: &Homework, si: bool) -> Result<Option<(Q, &'static str)>, UnknownError> {
+    let Some(target) = &hw.target else {
+        return Ok(None);
+    };
+    let (shape, _) = target
+        .resolve(si, hw.exact)
+        .map_err(|e| UnknownError::Pose(e.to_string()))?;
+    Ok(shape
+        .kind
+        .round()
+        .then(|| (shape.radius(), shape.kind.name())))
+}
+
+/// `--hit-at ?` on a round target (a disk, ring, sphere or shell). The contact `(-sqrt(R^2 -
+/// b^2), b)` is not rational in the height b, but it is in `t = tan(phi / 2)`, phi the contact's
+/// angle from the -x axis: `b = 2 R t / (1 + t^2)` and `sqrt(R^2 - b^2) = R (1 - t^2) / (1 +
+/// t^2)` (the rational parametrisation of the circle), so the given value is a rational function
+/// of t on (-1, 1), one-to-one with b on (-R, R). A smooth contact on a target free or pivoted at
+/// its centre leaves b undetermined: the normal passes through the centre, and the impulse has
+/// no moment about it.
+fn round_hit(
+    hw: &Homework,
+    given: &Given,
+    si: bool,
+    (rad, name): &(Q, &'static str),
+) -> Result<(Value, Outcome), UnknownError> {
+    let smooth = hw.laws.tangential_restitution.is_none() && !hw.laws.join;
+    match &hw.pivot {
+        None if smooth => return Err(UnknownError::Round(name, "that is free")),
+        Some(super::homework::PivotTyped::Centre) if smooth => {
+            return Err(UnknownError::Round(name, "on a pivot at its centre"));
+        }
+        _ => {}
+    }
+    let b_of = |t: &Q| int(2) * rad * t / (Q::ONE + t * t);
+    // The samples in exact arithmetic, the typed values as the rationals they spell: b rounded
+    // to binary64 would make sqrt(R^2 - b^2) irrational, and the samples not a rational
+    // function of t. The root is then checked on the problem as typed (`pick`).
+    let mut exact = hw.clone();
+    exact.exact = true;
+    // t = 0, 1/16, -1/16, 2/16, ...: inside (-1, 1), where the ball meets the target.
+    let ts = (0..16).flat_map(|k| [k, -k]).skip(1);
+    let ts = ts.map(|k| crate::values::rational::ratio(k, 16));
+    let samples = sampled(&exact, Unknown::HitAt, given, si, ts, b_of)?;
+    let found = roots_of(&samples, Unknown::HitAt, &(Some(-Q::ONE), Some(Q::ONE)))?;
+    // A root of degree 3 or more is bisected: where a small rational near it gives the given
+    // value exactly (t = 1/3, b = 3R/5), that is the root.
+    let exactly = |t: &Q| {
+        outcome(&exact, Unknown::HitAt, &b_of(t), si)
+            .ok()
+            .and_then(|o| given.residual(&o).ok())
+            .is_some_and(|r| r.iter().all(Zero::is_zero))
+    };
+    let found = found
+        .into_iter()
+        .map(|r| {
+            match interpolate::convergents(&r.x)
+                .into_iter()
+                .find(|t| !r.exact && exactly(t))
+            {
+                Some(t) => Root {
+                    x: b_of(&t),
+                    exact: true,
+                },
+                None => Root {
+                    x: b_of(&r.x),
+                    exact: r.exact,
+                },
+            }
+        })
+        .collect();
+    let range = (Some(-rad.clone()), Some(rad.clone()));
+    pick(hw, Unknown::HitAt, given, si, &range, found, |_| true)
 }
 
 /// The roots of the residual's first component that is not zero for every value, over the

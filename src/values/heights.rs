@@ -102,6 +102,35 @@ impl HeightScale {
     }
 }
 
+/// A slide whose friction is the unknown (issue 42 section 5): `slide 20 cm mu ?`, or a bare
+/// `slide 20 cm` whose mu is the floor's (`--friction`). The distance in metres, signed as the
+/// motion is (`-slide 2 ft mu ?` slides towards -x), and whether it was bare; `None` when `t` is
+/// no such slide (a known `slide D mu MU` is a speed, `parse_height`).
+pub fn unknown_slide(t: &str) -> Option<Result<(Q, bool), QuantityError>> {
+    let t = t.trim();
+    let (negative, rest) = match t.strip_prefix('-') {
+        Some(r) => (true, r.trim_start()),
+        None => (false, t.strip_prefix('+').unwrap_or(t).trim_start()),
+    };
+    let slide = rest.strip_prefix("slide")?;
+    let (d, bare) = match slide.split_once(" mu ").or_else(|| slide.split_once(" μ ")) {
+        Some((d, mu)) if mu.trim() == "?" => (d, false),
+        Some(_) => return None,
+        None => (slide, true),
+    };
+    Some((|| {
+        let q = parse_plain(d, Dimension::Length)?;
+        let unit = q
+            .unit
+            .map_or_else(|| crate::values::rational::int(1), Unit::si);
+        let metres = q.number.exact() * unit;
+        if metres <= Q::ZERO {
+            return Err(QuantityError::Slide(t.to_string()));
+        }
+        Ok((if negative { -metres } else { metres }, bare))
+    })())
+}
+
 /// `height 2 m`, `-height 6 ft` (a speed from a height, signed): the height in metres, exact.
 /// `slide 5 cm mu 0.62` (a speed that friction `mu` stops within a distance `d`: `sqrt(2 mu g d)`,
 /// issue 27 §1) is the height `mu d`, since `v^2 = 2 g (mu d)`.

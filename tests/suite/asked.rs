@@ -592,6 +592,110 @@ mod slides {
     }
 
     #[test]
+    fn mu_from_a_slide_after_the_collision() {
+        // Issue 42 section 5: a 10 g bullet at 400 m/s lodges in a 1.99 kg block, which slides
+        // 50 cm; g = 10. Momentum: f = 0.01 400 / 2.00 = 2 m/s; work-energy, mu g d = f^2 / 2:
+        // mu = 2^2 / (2 10 0.5) = 2/5 exactly.
+        let lodge = [
+            "-m",
+            "10 g,1.99 kg",
+            "-v",
+            "400 m/s,0",
+            "-e",
+            "0",
+            "--gravity",
+            "10",
+            "--exact",
+        ];
+        let (code, j) = solve_json(&[&lodge[..], &["--fin", "?,slide 50 cm mu ?"]].concat());
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(
+            (&j["solved"]["mu"], &j["solved"]["f2"]),
+            (&json!("2/5"), &json!("2"))
+        );
+        // The same as the floor's --friction ? with a bare slide: the slides section then
+        // uses the solved mu and gives the 50 cm back, for both (they move together).
+        let floor = [&lodge[..], &["--fin", "?,slide 50 cm", "--friction", "?"]].concat();
+        let (code, j) = solve_json(&[&floor[..], &["--show", "slides"]].concat());
+        assert_eq!(code, 0, "{j}");
+        assert_eq!(
+            j["slides"],
+            json!({"mu": "2/5", "g": "10", "fin": ["1/2", "1/2"]})
+        );
+        let (_, text, _) = run(&[&floor[..], &["--show", "vectors,slides"]].concat());
+        assert!(text.starts_with("Solved: mu = 2/5 (the floor's"), "{text}");
+        // In binary64 with standard gravity: 1 kg at 6 m/s hits 2 kg at rest, elastic: f2 =
+        // 2 (1 6) / 3 = 4 m/s, and body 2 slides 2 m: mu = 16 / (2 9.80665 2) = 4 / 9.80665.
+        // In km/h (6 m/s = 21.6 km/h, f2 = 14.4 km/h) the speed is taken in m/s: the same mu.
+        for v in ["6 m/s,0", "21.6 km/h,0"] {
+            let (code, j) = solve_json(&[
+                "-m",
+                "1 kg,2 kg",
+                "-v",
+                v,
+                "-e",
+                "1",
+                "--fin",
+                "?,slide 2 m mu ?",
+            ]);
+            assert_eq!(code, 0, "{j}");
+            assert_close(f(&j["solved"]["mu"]), 4.0 / 9.80665, REL, v);
+        }
+        // Body 1 bounces back at -2 m/s: its slide is signed, '-slide 1 m mu ?', mu = 4 / (2 g).
+        let back = [
+            "-m",
+            "1,2",
+            "-v",
+            "6,0",
+            "-e",
+            "1",
+            "--gravity",
+            "10",
+            "--exact",
+        ];
+        let (code, j) = solve_json(&[&back[..], &["--fin", "-slide 1 m mu ?,?"]].concat());
+        assert_eq!((code, &j["solved"]["mu"]), (0, &json!("1/5")));
+        refused(
+            &[&back[..], &["--fin", "slide 1 m mu ?,?"]].concat(),
+            &["body 1 leaves", "f1 = -2 m/s", "'-slide D mu ?'"],
+        );
+        // Two slides on the one floor must agree: f = (-2, 4) slide 1 m and 4 m: 4/20 = 16/80.
+        let (code, j) =
+            solve_json(&[&back[..], &["--fin", "-slide 1 m mu ?,slide 4 m mu ?"]].concat());
+        assert_eq!((code, &j["solved"]["mu"]), (0, &json!("1/5")));
+        refused(
+            &[&back[..], &["--fin", "-slide 1 m mu ?,slide 1 m mu ?"]].concat(),
+            &["two values of the one floor's mu", "0.2", "0.8"],
+        );
+        // Equal masses, elastic: body 1 stops, so no slide of it follows.
+        refused(
+            &[
+                "-m",
+                "1,1",
+                "-v",
+                "6,0",
+                "-e",
+                "1",
+                "--fin",
+                "slide 1 m mu ?,?",
+            ],
+            &["body 1 stops", "no slide follows"],
+        );
+        refused(
+            &[&back[..], &["--fin", "?,slide 1 m"]].concat(),
+            &["'slide 1 m'", "a slide with no mu", "--friction ?"],
+        );
+        refused(
+            &[
+                &back[..],
+                &["--fin", "?,?", "--friction", "?", "--show", "slides"],
+            ]
+            .concat(),
+            &["--friction ?", "nothing fixes the floor's mu"],
+        );
+    }
+
+    #[test]
     fn bad_slides_are_refused() {
         for bad in [
             "slide 5 cm",

@@ -261,3 +261,69 @@ fn unknowns_without_a_known_or_too_many_are_refused_by_name() {
         &["not for a component"],
     );
 }
+
+#[test]
+fn the_height_a_round_target_is_struck_at() {
+    // Issue 42 section 2, on a disk: a ball (1) at 3 lodges (--join) in a free disk (2, R =
+    // 1/2, I_cm = m R^2 / 2 = 1/4) at height b = 3/10, the contact at (-2/5, 3/10). The joined
+    // body's centre: (1 (-2/5, 3/10) + 2 (0, 0)) / 3 = (-2/15, 1/10). Its angular momentum
+    // about it is the ball's, r x p = (-4/15, 1/5) x (3, 0) = -3/5; its inertia there is the
+    // disk's 1/4 + 2 |(2/15, -1/10)|^2 = 1/4 + 1/18 = 11/36 plus the ball's 1 |(-4/15, 1/5)|^2
+    // = 1/9: 5/12. omega' = (-3/5) / (5/12) = -36/25. Given that spin, b = 3/10 comes back,
+    // exactly: the contact (-sqrt(R^2 - b^2), b) is rational in t = tan(phi/2), and t = 1/3.
+    let disk = |rest: &[&str]| -> Vec<String> {
+        let mut a: Vec<String> = ["-m", "1,2", "-v", "3,0", "--target", "disk 0.5"]
+            .map(String::from)
+            .to_vec();
+        a.extend(rest.iter().map(|s| s.to_string()));
+        a
+    };
+    let args = disk(&[
+        "--join",
+        "--hit-at",
+        "?",
+        "--fin-spin",
+        ",-36/25",
+        "--exact",
+    ]);
+    let j = json(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(q(&j["solved"]["hit_at"]), ratio(3, 10));
+    assert_eq!(q(&j["check"]["omega2'"]), Q::ZERO);
+    // In binary64 the same, to rounding.
+    let args = disk(&["--join", "--hit-at", "?", "--fin-spin", ",-1.44"]);
+    let j = json(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_close(f(&j["solved"]["hit_at"]), 0.3, 1e-12, "b");
+    // Smooth, on a pivot a quarter to the right of its centre (I_p = 1/4 + 2/16 = 3/8): with
+    // s = sin(phi) = b/R, c = cos(phi), the normal (c, -s) has the arm r x n = s/4 about the
+    // pivot, K_nn = 1 + (s/4)^2 / (3/8) = 1 + s^2/6, P = 2 (3c) / K_nn, and omega' = P (s/4) /
+    // (3/8) = 24 s c / (6 + s^2): 96/53 at b = 3/10 (s = 3/5, c = 4/5). That spin is reached
+    // at a second height too (24 s c / (6 + s^2) rises and falls on (0, 1)): both are named.
+    let args = disk(&[
+        "--pivot",
+        "(0.25,0)",
+        "--hit-at",
+        "?",
+        "--fin-spin",
+        ",96/53",
+    ]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    solve_refused(&args, &["more than one value fits", "hit_at = 0.3 and"]);
+    // Free or pivoted at its centre, a smooth round target is not turned at all: the normal
+    // passes through its centre. b is not determined, and that is said.
+    for (pivot, how) in [
+        (&[][..], "free"),
+        (&["--pivot", "centre"][..], "on a pivot at its centre"),
+    ] {
+        let mut rest = pivot.to_vec();
+        rest.extend(["--hit-at", "?", "--fin-spin", ",0"]);
+        let args = disk(&rest);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        solve_refused(&args, &["smooth disk", how, "b is not determined"]);
+    }
+    // A rod's own error (a value with no unit) is named, not a round target's.
+    let rod = "-m|1 kg,2 kg|-v|3,0|--target|rod 1 m|--pivot|end|--hit-at|?|--pivot-impulse|0";
+    solve_refused(
+        &rod.split('|').collect::<Vec<_>>(),
+        &["velocity '3' has no unit"],
+    );
+}
