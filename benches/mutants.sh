@@ -15,6 +15,8 @@
 #   MUTANTS_SHARD=0/12 MUTANTS_SHARDING=round-robin benches/mutants.sh contact
 #                                            # every twelfth mutant: a sample of the whole area
 #   MUTANTS_ITERATE=1 benches/mutants.sh motion    # only what the last run did not catch
+#   MUTANTS_TIMEOUT=90 benches/mutants.sh space    # seconds a test run may take (default 20;
+#                                            # the baseline too: space's took 20 s on loaded cores)
 #   MUTANTS_AGAIN=target/mutants/contact-0/mutants.out MUTANTS_SHARD=0/16 benches/mutants.sh contact
 #                                            # again what that run missed (after new tests)
 #
@@ -96,7 +98,7 @@ for area in "${areas[@]}"; do
     fi
     # shellcheck disable=SC2086
     cargo mutants --in-place --no-shuffle --profile "${MUTANTS_PROFILE:-mutation}" "${extra[@]}" \
-        --file "${FILES[$area]}" --output "$out" --timeout 20 \
+        --file "${FILES[$area]}" --output "$out" --timeout "${MUTANTS_TIMEOUT:-20}" \
         --cargo-arg=--lib --cargo-arg=--test --cargo-arg=suite \
         -- -- ${TESTS[$area]} || status=$?
     # cargo-mutants exits 2 when a mutant was missed and 3 on timeouts: results, not failures.

@@ -301,6 +301,33 @@ mod tests {
     }
 
     #[test]
+    fn a_fit_of_the_highest_total_degree_is_found() {
+        // y = (x^6 + 1)/(x^6 + x + 2): degrees (6, 6), total 12 = 2 MAX_DEGREE, the last total
+        // the 15 samples (SAMPLES) can fix and check; a search that stopped at a lower total
+        // finds nothing. The fit is unique up to a factor: N/D equals y at a point not sampled.
+        let y = |x: &Q| {
+            let x6 = (0..6).fold(Q::ONE, |p, _| p * x);
+            (&x6 + Q::ONE) / (x6 + x + int(2))
+        };
+        let samples: Vec<(Q, Q)> = (1..=SAMPLES as i64).map(|k| (q(k), y(&q(k)))).collect();
+        let (n, d) = fit(&samples).expect("a fit of total degree 12");
+        assert_eq!((degree(&n), degree(&d)), (Some(6), Some(6)));
+        let x = ratio(-7, 3);
+        assert_eq!(eval(&n, &x) / eval(&d, &x), y(&x));
+    }
+
+    #[test]
+    fn a_quadratic_with_a_negative_middle_coefficient() {
+        // (x - 2/3)(x - 5) = x^2 - 17/3 x + 10/3: b < 0, so q = (-b + sqrt(d))/2 with d =
+        // 289/9 - 40/3 = 169/9: q = (17/3 + 13/3)/2 = 5, roots q/a = 5 and c/q = 2/3, exact.
+        let r = quadratic(&Q::ONE, &ratio(-17, 3), &ratio(10, 3));
+        assert_eq!(
+            r.iter().map(|r| (r.x.clone(), r.exact)).collect::<Vec<_>>(),
+            [(q(5), true), (ratio(2, 3), true)]
+        );
+    }
+
+    #[test]
     fn roots_exact_and_to_forty_digits() {
         // (x - 2/3)(x + 5) = x^2 + 13/3 x - 10/3: both roots exact.
         let p = vec![ratio(-10, 3), ratio(13, 3), Q::ONE];

@@ -254,6 +254,27 @@ mod tests {
     }
 
     #[test]
+    fn the_textbook_moments_in_space() {
+        // physics.md section 7, about the principal axes (z the symmetry axis of a disk or a
+        // ring): disk m R^2 (1/4, 1/4, 1/2), ring m R^2 (1/2, 1/2, 1), sphere and shell 2/5 and
+        // 2/3 m R^2 about every axis. m = 6, R = 2: m R^2 = 24.
+        let m = int(6);
+        let axes = |s: &str| {
+            let t = shape(s).inertia(&m, 3, s).unwrap();
+            for (r, row) in t.iter().enumerate() {
+                for (c, x) in row.iter().enumerate() {
+                    assert!(r == c || *x == int(0), "{s}: off the diagonal {t:?}");
+                }
+            }
+            [t[0][0].clone(), t[1][1].clone(), t[2][2].clone()]
+        };
+        assert_eq!(axes("disk 2"), [int(6), int(6), int(12)]);
+        assert_eq!(axes("ring 2"), [int(12), int(12), int(24)]);
+        assert_eq!(axes("sphere 2"), [ratio(48, 5), ratio(48, 5), ratio(48, 5)]);
+        assert_eq!(axes("shell 2"), [int(16), int(16), int(16)]);
+    }
+
+    #[test]
     fn bad_shapes_are_named() {
         for bad in ["cone 1", "rod", "rod -1", "box 1", "disk 1 kg"] {
             assert!(bad.parse::<ShapeTyped>().is_err(), "{bad}");
