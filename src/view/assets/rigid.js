@@ -12,11 +12,11 @@
     garwin: { m1: "1", m2: "floor", v1: "(3,-1)", ball: "sphere 1", beta: "1", e: "elastic" },
   };
   const contactWords = {
-    smooth: "smooth: no friction, the impulse is normal",
-    stick: "stick: the slip stopped and the contact held",
-    slip: "slip: it slid throughout, P_t = \u03bc P_n",
-    reverse: "reverse: the slip stopped, then reversed",
-    joined: "joined: one rigid body after",
+    smooth: "no friction, the impulse is normal",
+    stick: "the slip stopped and the contact held",
+    slip: "it slid throughout, P_t = \u03bc P_n",
+    reverse: "the slip stopped, then reversed",
+    joined: "one rigid body after",
   };
   let rigidAnswer = data.answers.rigid; // the last good answer
   // The picture's map (kept while a handle is dragged), what is dragged ("v1", "hit" or null).
