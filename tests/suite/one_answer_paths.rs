@@ -289,7 +289,6 @@ proptest! {
             let in_row = row("IN ");
             for (shown, want) in [
                 (grab(solved, "v1"), &j["solved"]["v1"]),
-                (grab(solved, "e"), &j["solved"]["e"]),
                 (fin_row[0].clone(), &j["fin"][0]),
                 (fin_row[1].clone(), &j["fin"][1]),
                 (in_row[0].clone(), &j["in"][0]),
@@ -297,6 +296,16 @@ proptest! {
             ] {
                 let w = want.as_f64().unwrap();
                 prop_assert!(agrees(&shown, w, true), "{:?}: text {} JSON {}\n{}", case, shown, w, text);
+            }
+            // Bodies that start together (the solved v1 equals v2) have no e: the text says "e
+            // undefined" and the JSON has no `solved.e` (seed 1795767190707201889 failed the
+            // test, not the program).
+            match j["solved"].get("e") {
+                Some(e) => {
+                    let (shown, w) = (grab(solved, "e"), e.as_f64().unwrap());
+                    prop_assert!(agrees(&shown, w, true), "{:?}: text {} JSON {}", case, shown, w);
+                }
+                None => prop_assert!(solved.contains("e undefined"), "{:?}: {}", case, solved),
             }
         }
         let toml = format!(
