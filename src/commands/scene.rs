@@ -194,7 +194,7 @@ fn render_case(
 fn solve_special(scene: SpecialScene) -> Result<Checked> {
     let (text, json) = render_special(
         scene.event.special(),
-        &scene.show,
+        (&scene.show, scene.sections_needed()),
         scene.exact,
         scene.solved.as_ref(),
     )
@@ -204,18 +204,16 @@ fn solve_special(scene: SpecialScene) -> Result<Checked> {
     Ok(checked)
 }
 
-/// A separation's or wall's text (the sections in `show`) and JSON (every section), under what
-/// its unknowns came out as.
+/// A separation's or wall's text (the sections in `show`) and JSON (those and the ones its
+/// expectations read, `needed`: what `collide solve --show` with the same sections prints, one
+/// answer on both paths), under what its unknowns came out as.
 fn render_special(
     event: Special,
-    show: &Sections,
+    (show, needed): (&Sections, Sections),
     exact: bool,
     solved: Option<&Solved>,
 ) -> Result<(String, serde_json::Value)> {
-    let mut compute = show.clone();
-    for s in Section::EVERY.into_iter().chain([Section::Heights]) {
-        compute.insert(s);
-    }
+    let mut compute = needed;
     compute.energy_scale = event.units().energy_scale();
     let result = event.render(&compute, show, exact)?;
     let head = solved
@@ -250,14 +248,24 @@ fn solve_stages(scene: StagesScene) -> Result<Checked> {
             }
             Posed::Wall(wall, solved) => {
                 inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
-                let rendered =
-                    render_special(Special::Wall(wall), &run.show, scene.exact, solved.as_ref());
+                let needed = stage.sections_needed(&run.show);
+                let rendered = render_special(
+                    Special::Wall(wall),
+                    (&run.show, needed),
+                    scene.exact,
+                    solved.as_ref(),
+                );
                 ("wall", rendered.with_context(at)?)
             }
             Posed::Separation(s, solved) => {
                 inconsistent |= solved.inconsistent();
-                let rendered =
-                    render_special(Special::Separation(s), &run.show, scene.exact, Some(solved));
+                let needed = stage.sections_needed(&run.show);
+                let rendered = render_special(
+                    Special::Separation(s),
+                    (&run.show, needed),
+                    scene.exact,
+                    Some(solved),
+                );
                 ("pass-through", rendered.with_context(at)?)
             }
             Posed::Separations(..) => {

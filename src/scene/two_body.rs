@@ -159,6 +159,13 @@ pub struct SpecialScene {
     pub exact: bool,
 }
 
+impl SpecialScene {
+    /// Sections to compute: the shown ones and those the expectations read.
+    pub fn sections_needed(&self) -> Sections {
+        super::needed(&self.show, &self.about.expect)
+    }
+}
+
 /// The event of a `SpecialScene`.
 #[derive(Clone, Debug)]
 pub enum SpecialEvent {

@@ -510,3 +510,50 @@ fn a_varied_e_near_a_wall_at_the_origin_runs_as_the_single_run() {
         assert!(0.0 <= x[0] && x[0] <= x[1], "e = {e}: {x:?}");
     }
 }
+
+/// Seed 1795767190707201889 of `homework_knowns_read_the_same_in_text_json_and_a_scene`: a
+/// solved v1 equal to v2 makes the case a separation, whose scene computed every section for its
+/// JSON (`momentum`, `changes`, `heights`) where `collide solve --show vectors,energy` prints
+/// only those asked. A scene now computes what it shows and what its expectations read, as a
+/// collision scene does: the same JSON on both paths; a wall scene likewise.
+#[test]
+fn a_separation_or_wall_scene_reports_what_solve_reports_with_its_sections() {
+    let cases = [
+        (
+            "masses = [\"1\", \"3\"]\nvelocities = [\"?\", \"-4.5\"]\nfin = [\"-4.125\", \"-4.625\"]\n",
+            vec![
+                "solve",
+                "-m",
+                "1,3",
+                "-v",
+                "?,-4.5",
+                "--fin",
+                "-4.125,-4.625",
+            ],
+        ),
+        (
+            "masses = [\"2\", \"wall\"]\nvelocities = [\"3\", \"0\"]\nrestitution = \"1/2\"\n",
+            vec!["solve", "-m", "2,wall", "-v", "3,0", "-e", "1/2"],
+        ),
+    ];
+    for (body, args) in cases {
+        for show in [["vectors", "energy"], ["momentum", "changes"]] {
+            let toml = format!(
+                "title = \"one answer\"\n{body}show = [\"{}\", \"{}\"]\n",
+                show[0], show[1]
+            );
+            let mut a = args.clone();
+            let joined = show.join(",");
+            a.extend(["--show", &joined]);
+            let solve = json(&a);
+            let scene = scene_report(&toml);
+            assert_eq!(scene, solve, "{a:?}\n{toml}");
+            // Nothing the sections do not ask for.
+            for key in ["momentum", "changes", "heights", "energy"] {
+                if !show.contains(&key) {
+                    assert!(scene.get(key).is_none(), "{key} in {scene}");
+                }
+            }
+        }
+    }
+}
