@@ -724,25 +724,40 @@ impl AnyReport {
 /// The path of the first number in `v` that is not a real result (serde_json writes a non-finite
 /// float as null), as `energy.in` or `x[1]`.
 pub fn first_unrepresentable(v: &serde_json::Value) -> Option<String> {
-    fn find(v: &serde_json::Value, path: &str) -> Option<String> {
+    first_path(v, &|x| x.is_null())
+}
+
+/// The path (`energy.in`, `fin[0][1]`, depth first in the report's order) of the first value of
+/// `v` that `hit` picks: one walk for every check that names a quantity by its place.
+pub(crate) fn first_path(
+    v: &serde_json::Value,
+    hit: &dyn Fn(&serde_json::Value) -> bool,
+) -> Option<String> {
+    fn find(
+        v: &serde_json::Value,
+        path: &str,
+        hit: &dyn Fn(&serde_json::Value) -> bool,
+    ) -> Option<String> {
+        if hit(v) {
+            return Some(path.to_string());
+        }
         match v {
-            serde_json::Value::Null => Some(path.to_string()),
             serde_json::Value::Array(a) => a
                 .iter()
                 .enumerate()
-                .find_map(|(i, x)| find(x, &format!("{path}[{i}]"))),
+                .find_map(|(i, x)| find(x, &format!("{path}[{i}]"), hit)),
             serde_json::Value::Object(o) => o.iter().find_map(|(k, x)| {
                 let p = if path.is_empty() {
                     k.clone()
                 } else {
                     format!("{path}.{k}")
                 };
-                find(x, &p)
+                find(x, &p, hit)
             }),
             _ => None,
         }
     }
-    find(v, "")
+    find(v, "", hit)
 }
 
 /// Median time of one solve of `c`, over batches filling about a millisecond.

@@ -214,7 +214,7 @@ impl Style {
     /// A JSON report, unless a value in it was beyond binary64: then the error names the first
     /// such value by its path.
     pub fn checked_json(&self, v: Value) -> Result<Value, Overflow> {
-        match beyond_at(&v, "") {
+        match beyond_at(&v) {
             Some(path) => Err(Overflow {
                 quantity: Some(path),
             }),

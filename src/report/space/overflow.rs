@@ -25,23 +25,11 @@ pub struct Overflow {
 pub(super) const BEYOND: char = '\u{1}';
 
 /// The path (`energy.in`, `fin[0][1]`) of the first value marked [`BEYOND`] in `v`.
-pub(super) fn beyond_at(v: &Value, path: &str) -> Option<String> {
-    match v {
-        Value::String(s) if s.starts_with(BEYOND) => Some(path.to_string()),
-        Value::Array(a) => a
-            .iter()
-            .enumerate()
-            .find_map(|(i, x)| beyond_at(x, &format!("{path}[{i}]"))),
-        Value::Object(o) => o.iter().find_map(|(k, x)| {
-            let p = if path.is_empty() {
-                k.clone()
-            } else {
-                format!("{path}.{k}")
-            };
-            beyond_at(x, &p)
-        }),
-        _ => None,
-    }
+pub(super) fn beyond_at(v: &Value) -> Option<String> {
+    crate::report::first_path(
+        v,
+        &|x| matches!(x, Value::String(s) if s.starts_with(BEYOND)),
+    )
 }
 
 /// `v` with the values beyond binary64 as their decimal text (`"≈3.4e308"`), as a report that
