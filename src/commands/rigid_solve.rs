@@ -6,12 +6,13 @@ use anyhow::Result;
 use collide::report::rigid::{self as report, RigidUnits};
 use collide::report::space::Style;
 use collide::report::{Section, Sections, json};
+use collide::rigid::fin::FinTyped;
 use collide::rigid::homework::{HitTyped, Homework};
 use collide::rigid::impact::{ImpactError, Problem};
 use collide::rigid::pose::{Either, LawsTyped, MassTyped};
 use collide::rigid::units::{Measure, Typed};
 use collide::rigid::unknowns::{self, Asked, Known, Unknown};
-use collide::space::typed::split_bodies;
+use collide::space::typed::{Listed, split_bodies};
 use collide::values::number::{Given, Number};
 use collide::values::units::EnergyUnit;
 
@@ -24,7 +25,6 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
         (args.frame != collide::line::frame::Frame::Lab, "--frame"),
         (args.plot.is_some(), "--plot (use collide plot)"),
         (args.contact_time.is_some(), "--contact-time"),
-        (args.fin.is_some(), "--fin"),
         (args.reverse, "--reverse"),
         (
             args.case.gravity.is_some() && !after,
@@ -48,7 +48,7 @@ pub fn run(args: &SolveArgs) -> Result<Outcome> {
     }
     let mut show = show(&args.show)?;
     after_impact(&mut show, args)?;
-    let (homework, asked) = typed(&args.case, &args.rigid, args.exact)?;
+    let (homework, asked) = typed(&args.case, &args.rigid, args.fin.as_ref(), args.exact)?;
     if !asked.is_empty() {
         return solved(&homework, &asked, &show, args);
     }
@@ -131,7 +131,7 @@ fn solved(hw: &Homework, asked: &Asked, show: &Sections, args: &SolveArgs) -> Re
 
 /// The typed homework problem of the command line, without unknowns (`collide plot`).
 pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homework> {
-    let (hw, asked) = typed(case, rigid, exact)?;
+    let (hw, asked) = typed(case, rigid, None, exact)?;
     if let Some(u) = asked.unknowns.first() {
         anyhow::bail!(
             "{} = ?: solve it first (collide solve), then give its value",
@@ -143,7 +143,12 @@ pub fn homework(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<Homew
 
 /// The typed homework problem of the command line, a `?` holding `1` in its place, and what
 /// it asks: its unknowns and the final values given (`--fin-spin`, `--pivot-impulse`).
-pub fn typed(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<(Homework, Asked)> {
+pub fn typed(
+    case: &CaseArgs,
+    rigid: &RigidArgs,
+    fin: Option<&Listed>,
+    exact: bool,
+) -> Result<(Homework, Asked)> {
     let mut asked = Asked::default();
     let Some(masses) = &case.masses else {
         anyhow::bail!("give --masses M1,M2 (the ball, then the target, a wall or a floor)");
@@ -224,6 +229,9 @@ pub fn typed(case: &CaseArgs, rigid: &RigidArgs, exact: bool) -> Result<(Homewor
         asked.unknowns.push(Unknown::HitAt);
     }
     asked.knowns = knowns(rigid)?;
+    if let Some(fin) = fin {
+        asked.knowns.extend(fins(&fin.text)?);
+    }
     let homework = Homework {
         masses,
         velocities: [velocity(0)?, velocity(1)?],
@@ -277,6 +285,24 @@ fn knowns(rigid: &RigidArgs) -> Result<Vec<Known>> {
             );
         }
         out.push(Known::PivotImpulseZero);
+    }
+    Ok(out)
+}
+
+/// The final velocities given, `--fin 'F1,F2'` (`?` for one not given): a known each.
+fn fins(text: &str) -> Result<Vec<Known>> {
+    let parts = split_bodies(text)?;
+    if parts.len() > 2 {
+        anyhow::bail!("--fin '{text}': give one or two final velocities 'F1,F2' ('?' for none)");
+    }
+    let mut out = Vec::new();
+    for (i, t) in parts.into_iter().enumerate() {
+        if let Some(f) = FinTyped::parse(i, t)? {
+            out.push(Known::Fin(f));
+        }
+    }
+    if out.is_empty() {
+        anyhow::bail!("--fin '{text}': no final velocity given ('?' for both bodies)");
     }
     Ok(out)
 }

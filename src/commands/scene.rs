@@ -155,7 +155,7 @@ fn several_json(checked: &[Checked], listed: &[Listed]) -> serde_json::Value {
 }
 
 fn solve(scene: Scene) -> Result<Checked> {
-    let (mut text, json) = render_case(
+    let (text, json) = render_case(
         &scene.case,
         &scene.frame,
         scene.exact,
@@ -163,6 +163,18 @@ fn solve(scene: Scene) -> Result<Checked> {
         scene.solved.as_ref(),
     )
     .with_context(|| format!("{}", scene.about.path.display()))?;
+    // The floor's mu from a slide in `fin`: its line first, JSON `solved.mu`, as collide solve.
+    let (mut text, json) = match &scene.floor {
+        Some(mu) => {
+            let mut json = json;
+            if let Some(map) = json.as_object_mut() {
+                let solved = map.entry("solved").or_insert_with(|| serde_json::json!({}));
+                solved["mu"] = mu.json.clone();
+            }
+            (mu.line.clone() + &text, json)
+        }
+        None => (text, json),
+    };
     if let Some(p) = &scene.plot {
         plot::draw(&scene.case, &scene.frame, p.kind, p.frames, &p.output)?;
         text.push_str(&format!("\nPlot: wrote {}\n", p.output.display()));

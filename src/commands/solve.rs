@@ -149,7 +149,10 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
             status: 1,
         });
     }
-    let mu = floor_friction(case, &slides_given, &sections, args.exact)?;
+    let mu = match &sections.heights {
+        Some(h) => collide::report::floor::floor_friction(case, &slides_given, h, args.exact)?,
+        None => None,
+    };
     if let (Some(mu), true) = (&mu, floor_unknown) {
         sections.asked.friction = Some((mu.value.clone(), mu.shown.clone()));
     }
@@ -181,57 +184,6 @@ pub fn run(args: SolveArgs) -> Result<Outcome> {
         )?);
     }
     Ok(Outcome { stdout, status: 0 })
-}
-
-/// The floor's mu solved from the slides after the collision (`slide 20 cm mu ?`), as shown.
-struct FloorFriction {
-    value: collide::values::rational::Q,
-    /// As printed: a fraction under --exact, else binary64's shortest digits.
-    shown: String,
-    /// `Solved: mu = ...` and how, a paragraph.
-    line: String,
-    json: serde_json::Value,
-}
-
-/// `mu = f^2 / (2 g d)` from the solved final velocities, exact when the case is.
-fn floor_friction(
-    case: &collide::line::case::Case,
-    given: &[slide::Slide],
-    sections: &Sections,
-    exact: bool,
-) -> Result<Option<FloorFriction>> {
-    let Some(h) = sections.heights.as_ref().filter(|_| !given.is_empty()) else {
-        return Ok(None);
-    };
-    let exact_case = exact || (case.solved() && case.check_exact().is_ok());
-    let fin = if exact_case {
-        collide::solver::exact::ExactCollision::from_case(case).v_fin_q()
-    } else {
-        let f = case.collision.v_fin();
-        [f.x, f.y].map(collide::values::rational::from_f64)
-    };
-    let Some(value) = slide::friction(given, &fin, &h.g, &h.velocity_si, exact_case)? else {
-        return Ok(None);
-    };
-    let (shown, json) = match collide::values::rational::to_f64(&value) {
-        _ if exact => (
-            collide::values::quantity::fraction(&value),
-            serde_json::json!(collide::values::quantity::fraction(&value)),
-        ),
-        Some(x) => (collide::values::number::num(x), serde_json::json!(x)),
-        None => anyhow::bail!("mu = f^2 / (2 g d) is beyond binary64; --exact gives it"),
-    };
-    let body = given[0].body + 1;
-    let line = collide::report::text::paragraph(&format!(
-        "Solved: mu = {shown} (the floor's: mu = f{body}^2 / (2 g d), g = {} m/s^2)",
-        h.g_text()
-    ));
-    Ok(Some(FloorFriction {
-        value,
-        shown,
-        line,
-        json,
-    }))
 }
 
 /// A separation or a wall: its own report, and the flags that describe only a collision of two

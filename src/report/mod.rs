@@ -8,6 +8,7 @@ pub mod asked;
 pub mod block;
 #[cfg(feature = "cli")]
 pub mod contact;
+pub mod floor;
 pub mod frames;
 pub mod json;
 pub mod not_shown;

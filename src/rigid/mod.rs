@@ -15,11 +15,13 @@
 //!   make (`--join`); `swing`, `rolling`: what follows it (a body on a pivot swings up under
 //!   gravity, a ball sliding on the floor starts to roll);
 //! - `pose`, `homework`: typed input (scenes, the command line's homework shapes) to a problem;
-//!   `unknowns`: one value typed `?`, fixed by a given final spin or a pivot without impulse,
-//!   from the impact as a rational function of it (`interpolate`), or why not (`unsolvable`).
+//!   `unknowns`: one value typed `?`, fixed by a given final spin, a final velocity (`fin`) or
+//!   a pivot without impulse, from the impact as a rational function of it (`interpolate`), or
+//!   why not (`unsolvable`).
 
 pub mod algebra;
 pub mod body;
+pub mod fin;
 pub mod homework;
 pub mod impact;
 pub mod interpolate;

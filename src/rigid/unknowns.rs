@@ -22,6 +22,7 @@ use crate::values::quantity::fraction;
 use crate::values::rational::{Q, from_f64, int, pow2, to_f64};
 
 use super::algebra::dot;
+use super::fin::{FinTyped, Resolved};
 use super::homework::{HitTyped, Homework};
 use super::impact::{ImpactError, Problem};
 use super::interpolate::{self, Poly, Root, Roots};
@@ -73,6 +74,8 @@ pub enum Known {
     Spin(usize, Typed),
     /// The pivot gives its body no impulse (`--pivot-impulse 0`).
     PivotImpulseZero,
+    /// A body's final velocity, or parts of it (`--fin`, `fin`).
+    Fin(FinTyped),
 }
 
 impl Known {
@@ -81,6 +84,7 @@ impl Known {
         match self {
             Known::Spin(i, _) => format!("omega{}'", i + 1),
             Known::PivotImpulseZero => "the pivot's impulse".into(),
+            Known::Fin(f) => f.name(),
         }
     }
 }
@@ -132,6 +136,8 @@ pub struct Check {
     pub residual: Q,
     /// The residual is a rounding, not exactly 0.
     pub approx: bool,
+    /// The given value as typed, where it is not one number (a final velocity).
+    pub typed: Option<String>,
 }
 
 /// A problem with its unknown solved.
@@ -218,6 +224,8 @@ struct Given {
     known: Known,
     value: Q,
     approx: bool,
+    /// A final velocity's parts, resolved.
+    fin: Option<Resolved>,
 }
 
 impl Given {
@@ -240,11 +248,18 @@ impl Given {
                 .flatten()
                 .next()
                 .ok_or(UnknownError::NoPivot),
+            Known::Fin(f) => self
+                .fin
+                .as_ref()
+                .map_or(Ok(Vec::new()), |r| r.residual(f, o)),
         }
     }
 
     /// `omega2' = -10` (in the case's units).
     fn text(&self) -> String {
+        if let Known::Fin(f) = &self.known {
+            return format!("{} = '{}'", f.name(), f.text);
+        }
         format!(
             "{} = {}",
             self.known.name(),
@@ -261,6 +276,7 @@ impl Given {
                 o.v_in()[*i].omega[0].clone(),
             ),
             Known::PivotImpulseZero => o.impact.impulse.iter().cloned().fold(Q::ZERO, big),
+            Known::Fin(f) => self.fin.as_ref().map_or(Q::ONE, |r| r.scale(f, o)),
         }
     }
 }
@@ -275,17 +291,19 @@ pub fn solve(hw: &Homework, asked: &Asked) -> Result<Solution, UnknownError> {
     let r = Resolver::new(si, hw.exact);
     let mut given = Vec::new();
     for k in &asked.knowns {
-        let (value, approx) = match k {
+        let (value, approx, fin) = match k {
             Known::Spin(_, t) => {
                 let v = r.one(t).map_err(|e| UnknownError::Pose(e.to_string()))?;
-                (v, r.rounded())
+                (v, r.rounded(), None)
             }
-            Known::PivotImpulseZero => (Q::ZERO, false),
+            Known::PivotImpulseZero => (Q::ZERO, false, None),
+            Known::Fin(f) => (Q::ZERO, r.rounded(), Some(f.resolve(&r)?)),
         };
         given.push(Given {
             known: k.clone(),
             value,
-            approx,
+            approx: approx || r.rounded(),
+            fin,
         });
     }
     let unknown = match (asked.unknowns.as_slice(), given.len()) {
@@ -333,15 +351,15 @@ fn checks(o: &Outcome, given: &[Given], approx: bool) -> Result<Vec<Check>, Unkn
         .iter()
         .map(|g| {
             let res = g.residual(o)?;
-            let residual = match res.as_slice() {
-                [one] => one.clone(),
-                many => crate::values::quantity::sqrt(&dot(many, many), 40),
-            };
             Ok(Check {
                 name: g.known.name(),
                 given: g.value.clone(),
-                residual,
+                residual: Resolved::miss(&res),
                 approx: approx || g.approx || o.approx(),
+                typed: match &g.known {
+                    Known::Fin(f) => Some(f.text.clone()),
+                    _ => None,
+                },
             })
         })
         .collect()
@@ -532,6 +550,11 @@ fn roots_of(samples: &[(Q, Vec<Q>)], u: Unknown, range: &Range) -> Result<Vec<Ro
             .map(|(x, r)| (x.clone(), r[c].clone()))
             .collect();
         let Some((n, _)) = interpolate::fit(&points) else {
+            if c > 0 {
+                // The first part is the same for every value; a later one is not rational
+                // (a final velocity's side of its direction): nothing fixes the unknown.
+                break;
+            }
             return Err(UnknownError::Pose(format!(
                 "{} ?: the impact could not be solved at enough values of it to find it",
                 u.name()
@@ -620,6 +643,8 @@ fn pick(
                         },
                         o,
                     ));
+                } else if let Known::Fin(f) = &given.known {
+                    why.push(super::fin::off_line(f, &o, &show(&x)));
                 } else {
                     why.push(format!("{} does not give it", show(&x)));
                 }
@@ -707,7 +732,13 @@ fn friction_of(hw: &Homework, given: &Given, si: bool) -> Result<(Value, Outcome
         return Err(UnknownError::None(format!(
             "no mu gives {}: sliding throughout gives other values, and sticking gives {}",
             given.text(),
-            crate::values::quantity::significant(&(&given.residual(&stuck)?[0] + &given.value), 15)
+            match &given.known {
+                Known::Fin(f) => super::fin::gives(f, &stuck),
+                _ => crate::values::quantity::significant(
+                    &(&given.residual(&stuck)?[0] + &given.value),
+                    15,
+                ),
+            }
         )));
     }
     if slides.len() < interpolate::SAMPLES {

@@ -22,8 +22,8 @@ pub enum UnknownError {
         more: usize,
     },
     #[error(
-        "{0} = ?: nothing fixes it: give 1 more known value, a final spin (--fin-spin 'W1,W2') \
-         or --pivot-impulse 0"
+        "{0} = ?: nothing fixes it: give 1 more known value, a final velocity (--fin 'F1,F2'), \
+         a final spin (--fin-spin 'W1,W2') or --pivot-impulse 0"
     )]
     NoKnown(String),
     #[error("--pivot-impulse 0 needs a pivoted target (--pivot end, centre or '(x,y)')")]

@@ -16,8 +16,10 @@ use crate::line::inertia::InertiaTensor;
 use crate::line::problem::{Posed, Problem};
 use crate::line::restitution::Restitution;
 use crate::line::separation::Separation;
+use crate::line::slide;
 use crate::line::unknowns::Solved;
 use crate::line::wall::WallCase;
+use crate::report::floor::{self, FloorFriction};
 use crate::report::special::Special;
 use crate::report::{Section, Sections};
 use crate::table::columns::Column;
@@ -146,6 +148,8 @@ pub struct Scene {
     pub plot: Option<PlotTable>,
     /// What was solved for (`"?"` values, or `fin` given).
     pub solved: Option<Solved>,
+    /// The floor's mu, solved from a slide in `fin` (`slide 50 cm mu ?`).
+    pub floor: Option<FloorFriction>,
 }
 
 /// A two-body scene that is not a collision of two movable bodies: a separation (the bodies
@@ -232,12 +236,26 @@ impl Scene {
         let v = &file.velocities;
         let velocities = pair(v.get_ref(), Dimension::Velocity, "velocities")
             .map_err(|e| err(Some(v.span()), e.to_string()))?;
-        let fin = match &file.fin {
-            Some(f) => Some(
-                pair(f.get_ref(), Dimension::Velocity, "fin")
-                    .map_err(|e| err(Some(f.span()), e.to_string()))?,
-            ),
-            None => None,
+        // `slide 50 cm mu ?`: that final velocity is left to the collision (read as `?`), and
+        // the floor's mu follows from it (`report::floor`), as `--fin` on the command line.
+        let (fin, slides) = match &file.fin {
+            Some(f) => {
+                let Two([a, b]) = f.get_ref();
+                let typed = format!("{},{}", a.0, b.0);
+                let at = |m: String| err(Some(f.span()), m);
+                let slides = slide::slides(&typed).map_err(|e| at(e.to_string()))?;
+                if let Some(bare) = slides.iter().find(|s| s.bare) {
+                    return Err(at(format!(
+                        "fin: '{}': give the floor's mu ('slide D mu 0.62'), or 'slide D mu ?' to \
+                         solve it",
+                        bare.typed
+                    )));
+                }
+                let fin = parse_pair(&slide::masked(&typed), Dimension::Velocity, "fin")
+                    .map_err(|e| at(e.to_string()))?;
+                (Some(fin), slides)
+            }
+            None => (None, Vec::new()),
         };
         let restitution = match &file.restitution {
             None => None,
@@ -291,6 +309,16 @@ impl Scene {
         ));
         let (case, solved) = match posed {
             Posed::Collision(case, solved) => (case, solved),
+            _ if !slides.is_empty() => {
+                return Err(err(
+                    file.fin.as_ref().map(|f| f.span()),
+                    format!(
+                        "fin: '{}': mu ? in a slide is solved from a collision of two movable \
+                         bodies (not a wall, a separation or a pass-through)",
+                        slides[0].typed
+                    ),
+                ));
+            }
             Posed::Separations(..) => {
                 return Err(err(
                     None,
@@ -376,8 +404,21 @@ impl Scene {
             file.expect,
             report_key,
         )?;
+        let floor = match &show.heights {
+            Some(h) => floor::floor_friction(&case, &slides, h, file.exact.unwrap_or(false))
+                .map_err(|e| err(file.fin.as_ref().map(|f| f.span()), format!("fin: {e}")))?,
+            None => None,
+        };
+        // The slides section with the solved mu, in the case's units and g, as collide solve.
+        if let (Some(mu), Some(h)) = (&floor, &show.heights) {
+            let mut asked = crate::report::asked::Asked::in_units(&units);
+            asked.g = h.g.clone();
+            asked.friction = Some((mu.value.clone(), mu.shown.clone()));
+            show.asked = asked;
+        }
         Ok(AnyScene::Case(Scene {
             about,
+            floor,
             case,
             show,
             exact: file.exact.unwrap_or(false),

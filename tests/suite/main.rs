@@ -13,6 +13,7 @@ mod contact_refusals;
 mod contacts;
 mod docs_claims;
 mod exact_and_accuracy;
+mod fin_known;
 mod frames;
 mod grammar;
 mod homework;

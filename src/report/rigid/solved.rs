@@ -24,6 +24,8 @@ fn unit(u: Unknown, si: bool) -> String {
 fn spin_unit(name: &str, si: bool) -> &'static str {
     if si && name.starts_with("omega") {
         " rad/s"
+    } else if si && name.starts_with('v') {
+        " m/s"
     } else if si {
         " N s"
     } else {
@@ -53,18 +55,21 @@ pub fn text(s: &Solution, style: &Style, si: bool) -> String {
     }
     for c in &s.checks {
         let u = spin_unit(&c.name, si);
-        let given = style.show(&c.given, false);
+        let given = match &c.typed {
+            Some(t) => format!("'{t}'"),
+            None => format!("{}{u}", style.show(&c.given, false)),
+        };
         let line = if c.residual.is_zero() {
-            format!("Check: {} = {given}{u} holds exactly", c.name)
+            format!("Check: {} = {given} holds exactly", c.name)
         } else if c.approx {
             format!(
-                "Check: {} = {given}{u} holds to {}{u} (rounded values)",
+                "Check: {} = {given} holds to {}{u} (rounded values)",
                 c.name,
                 significant(&c.residual.clone().abs(), 2)
             )
         } else {
             format!(
-                "Check: {} = {given}{u} does NOT hold: it misses by {}{u}",
+                "Check: {} = {given} does NOT hold: it misses by {}{u}",
                 c.name,
                 style.show(&c.residual, false)
             )
