@@ -29,10 +29,13 @@ pub const LAW: &str = "Newton's restitution at every contact at once (a linear c
 pub const ORDER: &str = "the pairs collide one at a time by the two-body rule, in the order of \
                          the contacts table, swept again until none approaches";
 
-/// A rendered report.
+/// A rendered report, with the solved outcome and the posed balls it renders (the page draws
+/// those, `view::nbody`, rather than read the rounded numbers back).
 pub struct Rendered {
     pub text: String,
     pub json: Value,
+    pub outcome: Outcome,
+    pub balls: Balls,
 }
 
 /// Why the report cannot be made.
@@ -86,7 +89,12 @@ pub fn run(
     let text = text(&o, &balls, &solved, seq.as_ref(), &style, &units);
     let json = json(&o, &balls, &solved, seq.as_ref(), &style)?;
     let text = style.checked(text)?;
-    Ok(Rendered { text, json })
+    Ok(Rendered {
+        text,
+        json,
+        outcome: o,
+        balls,
+    })
 }
 
 /// `sign(w) sqrt(w^2 / n.n)`: a rate along `n` per unit length of `n`, and whether it is

@@ -6,13 +6,15 @@
 //! "e": "2/3", "frame": "com", "reverse": false}` (a `two_body::CaseInput`), `{"op": "plane",
 //! "m1": "1", "m2": "1", "v1": "(1,0)", "v2": "(0,0)", "normal": "30deg", ...}` (a
 //! `plane::PlaneInput`), or `{"op": "track", "masses": "1,0.01", ...}` (a `stack::TrackInput`) or `{"op": "rigid", "m1":
-//! "1", "m2": "4", "v1": "3", "target": "rod 2", "hit_at": "end", ...}` (a `rigid::RigidInput`). Answers are `{"ok": true, ...}`
+//! "1", "m2": "4", "v1": "3", "target": "rod 2", "hit_at": "end", ...}` (a `rigid::RigidInput`)
+//! or `{"op": "nbody", "mode": "contacts", "masses": ["1", "1", "1"], ...}` (an
+//! `input::NBodyInput`). Answers are `{"ok": true, ...}`
 //! with the result's fields, or `{"ok": false, "field": "m1", "error": "..."}`.
 
 use serde::{Deserialize, Serialize};
 
 use super::InputError;
-use super::input::{CaseInput, PlaneInput, RigidInput, TrackInput};
+use super::input::{CaseInput, NBodyInput, PlaneInput, RigidInput, TrackInput};
 
 /// What the page asks.
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
@@ -26,6 +28,8 @@ pub enum Request {
     Track(TrackInput),
     /// A ball hits a rod, a door or a floor: the rigid panel.
     Rigid(RigidInput),
+    /// Two to five pucks in the plane: stuck, exploding or touching (the N-ball panel).
+    Nbody(NBodyInput),
 }
 
 /// The answer to `request` (JSON text), as JSON text.
@@ -44,6 +48,7 @@ pub fn answer(request: &Request) -> serde_json::Value {
         Request::Plane(p) => p.solve().map(serde_json::to_value),
         Request::Track(t) => t.run().map(serde_json::to_value),
         Request::Rigid(r) => r.solve().map(serde_json::to_value),
+        Request::Nbody(n) => n.solve().map(serde_json::to_value),
     };
     match result {
         Ok(Ok(mut v)) => {

@@ -153,3 +153,27 @@ pub struct RigidInput {
     #[serde(default)]
     pub law: String,
 }
+
+/// Two to five pucks in the plane as the page's inputs hold them, one text per puck and list
+/// (`collide solve`'s `-m`, `-v`, `--fin`, `--positions`, `--radii`, a puck's value each), and
+/// how they meet (`mode`): `stick` (`-e 0`: one body after), `explode` (`--fin`, a `?` for the
+/// velocity momentum gives) or `contacts` (touching balls: `--positions` and `--radii`, Newton's
+/// law at every contact at once, with `e`).
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct NBodyInput {
+    pub mode: String,
+    pub masses: Vec<String>,
+    pub velocities: Vec<String>,
+    /// `explode`: the final velocities, `?` for unknown ones.
+    #[serde(default)]
+    pub fin: Vec<String>,
+    /// `contacts`: each ball's centre `(x,y)` and radius, in one length unit.
+    #[serde(default)]
+    pub positions: Vec<String>,
+    #[serde(default)]
+    pub radii: Vec<String>,
+    /// `contacts`: the restitution at every contact.
+    #[serde(default = "elastic")]
+    pub e: String,
+}

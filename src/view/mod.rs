@@ -11,6 +11,9 @@
 //! - `plane`: two pucks in the plane (issue 25's solver) for the third panel: the same JSON as
 //!   `collide solve --format json` with vectors and a line of impact, and the pucks, arrows,
 //!   momentum triangles and the velocity plane of the normal parts to draw;
+//! - `nbody`: two to five pucks in the plane (N-body stick and explode, and touching balls with
+//!   Newton's law at every contact at once) for the N-ball panel: the same JSON as `collide
+//!   solve --format json`, and each puck's velocities and momenta before and after;
 //! - `rigid`: a ball hits a rod, a door or a floor (`rigid`) for the rigid panel: the same JSON
 //!   as `collide solve --format json` with the homework flags, and the bodies, arrows and spins
 //!   at the instant of impact with the velocity plane of the contact points along the normal;
@@ -21,6 +24,7 @@
 
 pub mod api;
 pub mod input;
+pub mod nbody;
 #[cfg(feature = "cli")]
 pub mod page;
 pub mod plane;
@@ -46,4 +50,11 @@ impl InputError {
             error: error.to_string(),
         }
     }
+}
+
+/// `message` with each command-line flag of `words` replaced by the page's words for it.
+fn in_words(message: &str, words: &[(&str, &str)]) -> String {
+    words
+        .iter()
+        .fold(message.to_string(), |m, (flag, w)| m.replace(flag, w))
 }

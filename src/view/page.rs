@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::InputError;
 use super::api::{Request, answer};
-use super::input::{CaseInput, PlaneInput, RigidInput, TrackInput};
+use super::input::{CaseInput, NBodyInput, PlaneInput, RigidInput, TrackInput};
 
 const TEMPLATE: &str = include_str!("assets/page.html");
 const STYLE: &str = include_str!("assets/page.css");
@@ -16,13 +16,14 @@ const STYLE: &str = include_str!("assets/page.css");
 /// scope): the core and drawing helpers, the momentum and energy bars and the live regions'
 /// sentences, the velocity plane and dual panel, the plane, the stack, the rigid panel, and the
 /// start.
-const SCRIPTS: [&str; 7] = [
+const SCRIPTS: [&str; 8] = [
     include_str!("assets/page.js"),
     include_str!("assets/bars.js"),
     include_str!("assets/two_body.js"),
     include_str!("assets/plane.js"),
     include_str!("assets/stack.js"),
     include_str!("assets/rigid.js"),
+    include_str!("assets/nbody.js"),
     include_str!("assets/start.js"),
 ];
 
@@ -38,6 +39,8 @@ pub struct Setup {
     pub plane: PlaneInput,
     pub track: TrackInput,
     pub rigid: RigidInput,
+    /// The N-ball panel's pucks (up to five).
+    pub nbody: NBodyInput,
     /// The part shown first: `two-body`, `plane` or `stack`.
     pub focus: Focus,
 }
@@ -112,6 +115,16 @@ impl Setup {
                 beta: String::new(),
                 law: String::new(),
             },
+            // physics.md section 8's cue ball onto two touching balls.
+            nbody: NBodyInput {
+                mode: "contacts".into(),
+                masses: vec!["1".into(); 3],
+                velocities: vec!["(3.8,0)".into(), "0".into(), "0".into()],
+                fin: Vec::new(),
+                positions: vec!["(0,0)".into(), "(1.732,1)".into(), "(1.732,-1)".into()],
+                radii: vec!["1".into(); 3],
+                e: "elastic".into(),
+            },
             focus: Focus::TwoBody,
         }
     }
@@ -123,10 +136,11 @@ pub fn html(setup: &Setup) -> Result<String, InputError> {
     let plane = checked(answer(&Request::Plane(setup.plane.clone())))?;
     let stack = checked(answer(&Request::Track(setup.track.clone())))?;
     let rigid = checked(answer(&Request::Rigid(setup.rigid.clone())))?;
+    let nbody = checked(answer(&Request::Nbody(setup.nbody.clone())))?;
     let text = |v: &serde_json::Value, key: &str| v[key].as_str().unwrap_or_default().to_string();
     let data = serde_json::json!({
         "setup": setup,
-        "answers": {"solve": solved, "plane": plane, "track": stack, "rigid": rigid},
+        "answers": {"solve": solved, "plane": plane, "track": stack, "rigid": rigid, "nbody": nbody},
     });
     let script = format!(
         "\"use strict\";\n(function () {{\n{}}})();\n",
@@ -148,6 +162,8 @@ pub fn html(setup: &Setup) -> Result<String, InputError> {
         ("{{TRACK_SCENE}}", escape(&text(&stack, "scene"))),
         ("{{RIGID_STATE}}", escape(&text(&rigid, "state"))),
         ("{{RIGID_COMMAND}}", escape(&text(&rigid, "command"))),
+        ("{{NBALL_STATE}}", escape(&text(&nbody, "state"))),
+        ("{{NBALL_COMMAND}}", escape(&text(&nbody, "command"))),
     ];
     Ok(fill_in(TEMPLATE, &fill))
 }

@@ -429,17 +429,16 @@ impl PlaneInput {
 
 /// A command line's message in the page's words: its flags named as the page's fields.
 pub(super) fn page_words(message: &str) -> String {
-    [
-        ("--impact-parameter", "the impact parameter b"),
-        ("--radii", "the radii R1, R2"),
-        ("--normal", "the line of impact n"),
-        ("--exact", "'exact (fractions)'"),
-        ("--show", "the report's sections"),
-    ]
-    .iter()
-    .fold(message.to_string(), |m, (flag, words)| {
-        m.replace(flag, words)
-    })
+    super::in_words(
+        message,
+        &[
+            ("--impact-parameter", "the impact parameter b"),
+            ("--radii", "the radii R1, R2"),
+            ("--normal", "the line of impact n"),
+            ("--exact", "'exact (fractions)'"),
+            ("--show", "the report's sections"),
+        ],
+    )
 }
 
 /// The velocity plane of the normal parts: the masses, the velocities' components along the

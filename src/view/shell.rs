@@ -2,7 +2,7 @@
 //! that a case found by playing becomes a command that reproduces it. Values go out as they were
 //! typed (`2/3` stays `2/3`), so the command computes from the same exact numbers.
 
-use super::input::{CaseInput, PlaneInput, RigidInput, TrackInput};
+use super::input::{CaseInput, NBodyInput, PlaneInput, RigidInput, TrackInput};
 
 /// `text` as one shell word: as it is when no shell treats any of its characters specially,
 /// else in single quotes (a quote inside written `'\''`).
@@ -150,6 +150,34 @@ pub fn plane_command(p: &PlaneInput) -> String {
     out.push_str(&rules(&p.e, &p.frame, p.reverse));
     if p.exact {
         out.push_str(" --exact");
+    }
+    out
+}
+
+/// A list of the page's per-body texts as one flag's value (`1,2 kg,3`), trimmed.
+fn joined(list: &[String]) -> String {
+    word(&list.iter().map(|s| s.trim()).collect::<Vec<_>>().join(","))
+}
+
+/// The `collide solve` command line of N pucks (`view::nbody`): `-e 0` where they stick,
+/// `--fin` where they explode, `--positions` and `--radii` (and `-e`) where they touch.
+pub fn nbody_command(p: &NBodyInput) -> String {
+    let mut out = format!(
+        "collide solve -m {} -v {}",
+        joined(&p.masses),
+        joined(&p.velocities)
+    );
+    match p.mode.trim() {
+        "stick" => out.push_str(" -e 0"),
+        "explode" => out.push_str(&format!(" --fin {}", joined(&p.fin))),
+        _ => {
+            out.push_str(&format!(
+                " --positions {} --radii {}",
+                joined(&p.positions),
+                joined(&p.radii)
+            ));
+            out.push_str(&rules(&p.e, "lab", false));
+        }
     }
     out
 }

@@ -65,6 +65,7 @@ mod view;
 mod view_bars;
 mod view_hostile;
 mod view_layout;
+mod view_nbody;
 mod view_node;
 mod view_open;
 mod view_plane;

@@ -387,8 +387,8 @@ fn without_javascript_the_page_says_where_its_numbers_are() {
         "{status}"
     );
     assert!(!status.contains("loading"), "{status}");
-    // The velocity plane, the stack, the plane and the rigid bodies.
-    assert_eq!(page.matches("<noscript>").count(), 4);
+    // The velocity plane, the stack, the plane, the five pucks and the rigid bodies.
+    assert_eq!(page.matches("<noscript>").count(), 5);
     let solve = crate::common::stdout(&[
         "solve",
         "-m",

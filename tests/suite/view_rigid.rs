@@ -14,9 +14,19 @@ use super::view::{ask, run_shown, scratch};
 use super::view_layout::drive_with;
 
 /// `n` hundredths as a decimal (`-150` is `-1.50`).
-fn dec(n: i64) -> String {
+pub(crate) fn dec(n: i64) -> String {
     let sign = if n < 0 { "-" } else { "" };
     format!("{sign}{}.{:02}", n.abs() / 100, n.abs() % 100)
+}
+
+/// Numbers from `0` to `n - 1` drawn from `seed` (xorshift): the random cases' generator.
+pub(crate) fn seeded(mut seed: u64) -> impl FnMut(u64) -> i64 {
+    move |n: u64| -> i64 {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n) as i64
+    }
 }
 
 /// 20 rigid cases from a fixed seed (xorshift): a ball (a point, or a sphere on a floor) at a rod
@@ -24,13 +34,7 @@ fn dec(n: i64) -> String {
 /// (never at a centre pivot, where nothing turns it), with e, friction, spin and Garwin's beta
 /// drawn among typical values; every fourth a sphere sliding onto a floor.
 fn cases() -> Vec<Value> {
-    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = move |n: u64| -> i64 {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n) as i64
-    };
+    let mut next = seeded(0x9e37_79b9_7f4a_7c15);
     let es = ["elastic", "1", "0", "1/2", "2/3", "0.9"];
     (0..20)
         .map(|k| {
@@ -128,12 +132,12 @@ fn run() -> &'static Value {
     })
 }
 
-fn f(v: &Value) -> f64 {
+pub(crate) fn f(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
 }
 
 /// A number as the panel prints it (a minus sign for `-`).
-fn read(text: &str) -> f64 {
+pub(crate) fn read(text: &str) -> f64 {
     text.replace('\u{2212}', "-")
         .parse()
         .unwrap_or_else(|_| panic!("not a number: {text:?}"))

@@ -104,3 +104,15 @@
     return "v\u2081 " + pairText(p.in[0]) + " and v\u2082 " + pairText(p.in[1]) + " give v\u2081\u2032 " + pairText(p.fin[0]) +
       " and v\u2082\u2032 " + pairText(p.fin[1]) + (s.energy ? "; kinetic energy " + short(s.energy.in) + " before, " + short(s.energy.fin) + " after." : ".");
   }
+  // The rigid result: the ball's velocity before and after, the target's (or its spin), the
+  // contact and the normal impulse.
+  function rigidSentence() {
+    const p = rigidAnswer.picture;
+    if (!$("rigid-error").hidden) return "";
+    if (!p) return "The bodies do not approach at the contact: no collision.";
+    const [ball, target] = p.bodies;
+    const moves = target.kind !== "floor" && target.kind !== "wall" && target.kind !== "ceiling";
+    return "v\u2081 " + pairText(ball.v_in) + " gives v\u2081\u2032 " + pairText(ball.v_fin) +
+      (moves ? ", the target " + pairText(target.v_fin) + " spinning at " + short(target.omega_fin) : ", spin " + short(ball.omega_fin)) +
+      "; contact " + p.contact + ", normal impulse " + short(p.impulse_n) + ".";
+  }

@@ -35,12 +35,13 @@
     const answer = core(rigidRequest());
     const ids = {};
     for (const f of rigidFields) ids[f] = "r-" + f;
-    showError(answer, ids, "r-m1", "rigid-error", ["rigid-state", "rigid-command"],
+    showError(answer, ids, "r-m1", "rigid-error", ["rigid-state", "rigid-command", "rigid-said"],
       ["rigid-svg", "rigid-numbers", "rigid-normal-svg"]);
-    if (!answer.ok) return answer;
+    if (!answer.ok) { clearTimeout(sayTimers["rigid-said"]); return answer; }
     rigidAnswer = answer;
     rigidView.keep = !!keepMap;
     renderRigid();
+    if (!rigidView.dragging) sayLater("rigid-said", rigidSentence);
     return answer;
   }
 
@@ -249,8 +250,13 @@
     if (isFinite(w)) $("r-spin-range").value = String(w);
     const t = p && p.bodies[1];
     const range = $("r-hit_at-range");
-    range.disabled = !t || immovable(t) || !core;
-    if (!t || immovable(t)) return;
+    const fixed = t && immovable(t);
+    range.disabled = !t || fixed || !core;
+    // Said where it is disabled: a floor, wall or ceiling is hit where the ball is.
+    const why = fixed ? "hit point (slider off: a " + t.kind + " is hit where the ball meets it; the hit point is along a rod, door or box)" : "hit point along the target (slider)";
+    range.setAttribute("aria-label", why);
+    range.title = fixed ? "No hit point on a " + t.kind + ": it is hit where the ball meets it" : "";
+    if (!t || fixed) return;
     const ref = t.pivot ? t.pivot[1] : t.position[1];
     const h = halfHeight(t);
     range.min = String(t.position[1] - h - ref);
@@ -337,9 +343,10 @@
         rigidView.dragging = null;
         svg.classList.remove("dragging");
       }
-      // Fitted again once the drag ends.
+      // Fitted again once the drag ends; the result said once.
       rigidView.keep = false;
       if (rigidAnswer.picture) renderRigid();
+      say("rigid-said", rigidSentence());
     };
     svg.addEventListener("pointerup", end);
     svg.addEventListener("pointercancel", end);

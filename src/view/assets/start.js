@@ -1,5 +1,5 @@
   // ---------------------------------------------------------------- start
-  const controls = () => document.querySelectorAll("#case-form input, #plane-form input, #plane-form select, #plane input[name=\"p-key\"], #track-form input, #track-form select, #rigid-form input, #rigid-form select, #plane-svg, #pucks-svg, #rigid-svg");
+  const controls = () => document.querySelectorAll("#case-form input, #plane-form input, #plane-form select, #plane input[name=\"p-key\"], #track-form input, #track-form select, #rigid-form input, #rigid-form select, #nball-form input, #nball-form select, #nball-time, #plane-svg, #pucks-svg, #rigid-svg");
   function setEnabled(on) {
     for (const c of controls()) {
       if (c.tagName.toLowerCase() === "svg") c.setAttribute("aria-disabled", String(!on));
@@ -16,12 +16,14 @@
   setupPlane();
   setupStack();
   setupRigid();
+  setupNb();
   setupCopy();
   for (const svg of document.querySelectorAll("svg.chart")) scaleText(svg);
   renderCase();
   renderPlane();
   renderStack();
   renderRigid();
+  renderNb();
   setEnabled(false);
   // A picture drawn at another width (a phone turned, a window resized): its text keeps its
   // size, and the pictures are drawn again around it.
@@ -29,7 +31,7 @@
     const seen = new ResizeObserver((entries) => {
       let changed = false;
       for (const e of entries) changed = scaleText(e.target) || changed;
-      if (changed) { renderCase(); renderPlane(); renderStack(); renderRigid(); }
+      if (changed) { renderCase(); renderPlane(); renderStack(); renderRigid(); renderNb(); }
     });
     for (const svg of document.querySelectorAll("svg.chart")) seen.observe(svg);
   }
@@ -41,7 +43,8 @@
     for (const [op, request, written] of [["solve", Object.assign({ op: "solve" }, data.setup.case), data.answers.solve],
       ["plane", Object.assign({ op: "plane" }, data.setup.plane), data.answers.plane],
       ["track", Object.assign({ op: "track" }, data.setup.track), data.answers.track],
-      ["rigid", Object.assign({ op: "rigid" }, data.setup.rigid), data.answers.rigid]]) {
+      ["rigid", Object.assign({ op: "rigid" }, data.setup.rigid), data.answers.rigid],
+      ["nbody", Object.assign({ op: "nbody" }, data.setup.nbody), data.answers.nbody]]) {
       const again = core(request);
       if (JSON.stringify(again) !== JSON.stringify(written)) {
         console.error("collide view: the WebAssembly core and the collide binary disagree on the " + op + " request", again, written);
