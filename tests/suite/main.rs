@@ -25,6 +25,7 @@ mod knowns;
 mod lecture;
 mod metamorphic;
 mod metamorphic_track;
+mod mutants_rigid;
 mod one_answer;
 mod one_answer_paths;
 mod order;
