@@ -26,6 +26,8 @@ mod knowns;
 mod lecture;
 mod metamorphic;
 mod metamorphic_track;
+mod mutants_rigid;
+mod mutants_space;
 mod one_answer;
 mod one_answer_paths;
 mod order;
