@@ -244,8 +244,11 @@ impl StagesScene {
                 other => other.clone(),
             });
         }
-        let (m, v, units) = resolve(&masses.0, &speeds, problem.si)
-            .map_err(|e| self.at(stage, format!("{e:#}")))?;
+        // Units that resolve only with the unknowns given (mixed units, a `?` without one):
+        // the stage-by-stage refusal stands.
+        let Ok((m, v, units)) = resolve(&masses.0, &speeds, problem.si) else {
+            return Ok(None);
+        };
         let q = |g: &Given<crate::values::number::Number>| g.known().map(|n| n.exact());
         let mut velocities = [q(&v[0]), q(&v[1]), q(&v[2]), q(&v[3])];
         for b in 0..2 {
