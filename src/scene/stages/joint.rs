@@ -70,9 +70,9 @@ impl StagesScene {
         let mut var: Vec<[Option<usize>; 4]> = vec![[None; 4]; open.len()];
         let mut names: Vec<String> = Vec::new();
         for (k, &i) in open.iter().enumerate() {
-            for slot in 0..4 {
+            for (slot, v) in var[k].iter_mut().enumerate() {
                 if stages[k].velocities[slot].is_none() && self.source(i, slot, &open).is_none() {
-                    var[k][slot] = Some(names.len());
+                    *v = Some(names.len());
                     names.push(self.slot_name(i, slot));
                 }
             }
@@ -159,9 +159,9 @@ impl StagesScene {
             ),
         })?;
         for (k, l) in stages.iter_mut().enumerate() {
-            for slot in 0..4 {
-                if let Some(v) = var[k][slot] {
-                    l.velocities[slot] = Some(x[v].clone());
+            for (slot, v) in var[k].iter().enumerate() {
+                if let Some(v) = v {
+                    l.velocities[slot] = Some(x[*v].clone());
                 }
             }
         }
@@ -169,15 +169,15 @@ impl StagesScene {
         for (k, &i) in open.iter().enumerate() {
             let problem = self.with_values(i, &stages[k], exact)?;
             runs[i] = Some(self.run(i, &problem, exact)?);
-            for slot in 0..2 {
-                if let (Some(t), Some(_)) = (&self.stages[i].takes[slot], var[k][slot]) {
-                    if open.contains(&t.stage) {
-                        fixed.push(Fixed {
-                            text: t.text.clone(),
-                            by: BY.into(),
-                            value: stages[k].velocities[slot].clone().unwrap_or_default(),
-                        });
-                    }
+            for (slot, v) in var[k].iter().enumerate().take(2) {
+                if let (Some(t), Some(_)) = (&self.stages[i].takes[slot], v)
+                    && open.contains(&t.stage)
+                {
+                    fixed.push(Fixed {
+                        text: t.text.clone(),
+                        by: BY.into(),
+                        value: stages[k].velocities[slot].clone().unwrap_or_default(),
+                    });
                 }
             }
         }
