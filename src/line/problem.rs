@@ -215,14 +215,7 @@ impl Problem {
             velocities.extend(f.0.iter().cloned());
         }
         // Heights become speeds with g (exact), before units are resolved.
-        let g = match &self.gravity {
-            Some(g) if g.value() > 0.0 => g.exact(),
-            Some(g) => return Err(ProblemError::Gravity(g.to_string())),
-            None => crate::values::units::STANDARD_GRAVITY
-                .parse::<Number>()
-                .map(|n| n.exact())
-                .unwrap_or_default(),
-        };
+        let g = self.g()?;
         let mut speeds = Vec::with_capacity(velocities.len());
         for v in velocities {
             speeds.push(match v {
@@ -366,6 +359,18 @@ impl Problem {
 }
 
 impl Problem {
+    /// `g` for velocities typed as heights: as given (positive), or standard gravity.
+    pub fn g(&self) -> Result<Q, ProblemError> {
+        Ok(match &self.gravity {
+            Some(g) if g.value() > 0.0 => g.exact(),
+            Some(g) => return Err(ProblemError::Gravity(g.to_string())),
+            None => crate::values::units::STANDARD_GRAVITY
+                .parse::<Number>()
+                .map(|n| n.exact())
+                .unwrap_or_default(),
+        })
+    }
+
     /// The laws the knowns bring, in the case's units.
     fn laws(&self, units: &Units) -> Result<Laws, ProblemError> {
         let impulse = match &self.knowns.impulse {

@@ -146,11 +146,19 @@ impl Chain<'_> {
     /// `Solved as one system: stage2 fixes stage1.fin1 = 720, and ... Check: ...`, for a chain
     /// whose later stages fixed an earlier one's unknowns.
     fn system(&self) -> String {
-        let each: Vec<String> = self
-            .fixed
-            .iter()
-            .map(|f| format!("{} fixes {} = {}", f.by, f.text, self.show(&f.value)))
-            .collect();
+        // One clause per stage that fixes, its values in order.
+        let mut each: Vec<String> = Vec::new();
+        for (k, f) in self.fixed.iter().enumerate() {
+            let value = format!("{} = {}", f.text, self.show(&f.value));
+            match k.checked_sub(1).map(|p| &self.fixed[p].by) {
+                Some(by) if *by == f.by => {
+                    if let Some(last) = each.last_mut() {
+                        last.push_str(&format!(", {value}"));
+                    }
+                }
+                _ => each.push(format!("{} fixes {value}", f.by)),
+            }
+        }
         format!(
             "Solved as one system: {}, and the stage that leaves it is solved with it as a \
              given FIN. Check: every stage again with these values: each FIN worked out forward \

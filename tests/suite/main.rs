@@ -52,6 +52,7 @@ mod rigid_symmetry;
 mod rigid_unknowns;
 mod shell;
 mod stages;
+mod stages_joint;
 mod stages_system;
 mod sweeps;
 mod sweeps_cluster;

@@ -28,6 +28,8 @@
 //! each stage happens, whether the bodies keep their order ([`crate::line::chain`]) and whether
 //! they meet again are decided in exact arithmetic in either mode.
 
+mod joint;
+mod linear;
 mod read;
 mod solve;
 mod system;

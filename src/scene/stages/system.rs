@@ -16,7 +16,7 @@
 
 use super::super::SceneError;
 use super::{StageRun, StagesScene};
-use crate::line::problem::Posed;
+use crate::line::problem::{Posed, Problem};
 use crate::line::restitution::Restitution;
 use crate::report::Sections;
 use crate::report::stages::Fixed;
@@ -60,6 +60,10 @@ impl StagesScene {
             if !progress {
                 break;
             }
+        }
+        if runs.iter().any(Option::is_none) {
+            // No stage is determined alone: the rest as one linear system, when it is one.
+            fixed.extend(self.joint(&mut runs, exact)?.unwrap_or_default());
         }
         if let Some(i) = runs.iter().position(Option::is_none) {
             return Err(self.unsolved(i, &runs, errors[i].take()));
@@ -112,7 +116,13 @@ impl StagesScene {
     }
 
     /// A value carried from one stage to another, as a number: exact, or the binary64 value.
-    fn carried(&self, i: usize, text: &str, q: &Q, exact: bool) -> Result<Number, SceneError> {
+    pub(super) fn carried(
+        &self,
+        i: usize,
+        text: &str,
+        q: &Q,
+        exact: bool,
+    ) -> Result<Number, SceneError> {
         let stage = &self.stages[i];
         if exact {
             let f = fraction(q);
@@ -142,6 +152,18 @@ impl StagesScene {
         runs: &[Option<StageRun>],
         exact: bool,
     ) -> Result<(StageRun, Vec<Fixed>), SceneError> {
+        let (problem, fixed) = self.fill(i, runs, exact)?;
+        Ok((self.run(i, &problem, exact)?, fixed))
+    }
+
+    /// Stage `i`'s problem with what the solved stages give it: the IN it takes, the FIN later
+    /// stages took (with those fixed values).
+    pub(super) fn fill(
+        &self,
+        i: usize,
+        runs: &[Option<StageRun>],
+        exact: bool,
+    ) -> Result<(Problem, Vec<Fixed>), SceneError> {
         let stage = &self.stages[i];
         let mut problem = stage.problem.clone();
         let velocity = |run: &StageRun, number: Number| {
@@ -194,6 +216,17 @@ impl StagesScene {
                 });
             }
         }
+        Ok((problem, fixed))
+    }
+
+    /// Stage `i` solved, with `problem` as its values (`exact`: FIN exactly, else binary64).
+    pub(super) fn run(
+        &self,
+        i: usize,
+        problem: &Problem,
+        exact: bool,
+    ) -> Result<StageRun, SceneError> {
+        let stage = &self.stages[i];
         let posed = problem
             .solve(None)
             .map_err(|e| self.at(stage, format!("{e:#}")))?;
@@ -228,7 +261,7 @@ impl StagesScene {
             stage.problem.gravity.as_ref(),
             &units,
         ));
-        Ok((StageRun { posed, fin, show }, fixed))
+        Ok(StageRun { posed, fin, show })
     }
 
     /// Each stage checked again with the chain's values, exactly: the FIN a stage takes is the
