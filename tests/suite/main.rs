@@ -62,6 +62,7 @@ mod tables_exact;
 mod track;
 mod track_endless;
 mod track_props;
+mod track_rows;
 mod track_stops;
 mod units;
 mod view;

@@ -224,7 +224,7 @@ mod gravity_layouts {
             // (a supported body), which these closed forms do not model.
             e in 0.05f64..=1.0,
         ) {
-            let (bodies, x) = crate::track::in_a_row(&bodies, 0.0);
+            let (bodies, x) = crate::track_rows::in_a_row(&bodies, 0.0);
             let track = Track {
                 bodies,
                 left_wall: Some(0.0),
@@ -333,7 +333,7 @@ mod random_layouts {
             e in 0.0f64..=1.0,
             until in proptest::option::of(0.0f64..50.0),
         ) {
-            let (bodies, x) = crate::track::in_a_row(&bodies, 0.5);
+            let (bodies, x) = crate::track_rows::in_a_row(&bodies, 0.5);
             let e = if elastic { 1.0 } else { e };
             let track = Track {
                 bodies,
