@@ -202,7 +202,15 @@ impl Resolved {
         let mut out: Vec<Q> = self.rows.iter().map(|(a, c)| dot(a, v) - c).collect();
         if let Some(d) = &self.along {
             let along = dot(d, v);
-            out.push(if along.is_negative() { along } else { Q::ZERO });
+            out.push(if v.iter().all(Q::is_zero) {
+                // A body at rest points nowhere: the whole size of its velocity before is off.
+                let before = &o.v_in()[i].v;
+                -before.iter().map(|x| x.clone().abs()).fold(Q::ONE, Q::max)
+            } else if along.is_negative() {
+                along
+            } else {
+                Q::ZERO
+            });
         }
         if let Some(s) = &self.speed {
             let r = dot(v, v) - s * s;
@@ -263,9 +271,14 @@ pub fn off_line(fin: &FinTyped, o: &Outcome, shown: &str) -> String {
             pair(&o.v_in()[i].v)
         )
     };
+    let rest = if matches!(fin.part, FinPart::Direction(_)) && v.iter().all(Q::is_zero) {
+        " (a body at rest has no direction)"
+    } else {
+        ""
+    };
     format!(
-        "{shown} gives {} = {}, not the given '{}': {line}; a final velocity off that line \
-         contradicts the impact (mark '?' a component not known)",
+        "{shown} gives {} = {}{rest}, not the given '{}': {line}; a final velocity off that \
+         line contradicts the impact (mark '?' a component not known)",
         fin.name(),
         pair(v),
         fin.text

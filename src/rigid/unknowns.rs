@@ -544,6 +544,7 @@ fn round_hit(
 /// whole line (the range is checked after).
 fn roots_of(samples: &[(Q, Vec<Q>)], u: Unknown, range: &Range) -> Result<Vec<Root>, UnknownError> {
     let parts = samples.first().map_or(0, |(_, r)| r.len());
+    let mut side_only = false;
     for c in 0..parts {
         let points: Vec<(Q, Q)> = samples
             .iter()
@@ -553,6 +554,7 @@ fn roots_of(samples: &[(Q, Vec<Q>)], u: Unknown, range: &Range) -> Result<Vec<Ro
             if c > 0 {
                 // The first part is the same for every value; a later one is not rational
                 // (a final velocity's side of its direction): nothing fixes the unknown.
+                side_only = true;
                 break;
             }
             return Err(UnknownError::Pose(format!(
@@ -564,8 +566,12 @@ fn roots_of(samples: &[(Q, Vec<Q>)], u: Unknown, range: &Range) -> Result<Vec<Ro
             return Ok(found);
         }
     }
+    let why = match side_only {
+        true => "a final velocity on the given line; the side alone does not fix it ('S @ A')",
+        false => "the same value (the given one)",
+    };
     Err(UnknownError::Many(format!(
-        "every {} gives the same value (the given one)",
+        "every {} gives {why}",
         u.name()
     )))
 }

@@ -138,6 +138,23 @@ fn a_final_velocity_off_the_impulses_line_or_not_fixing_it_is_refused() {
         &rod(&["-e", "?", "--fin", "(?,0) m/s,?"]),
         &["every e gives the same value"],
     );
+    // v1' = 3 - (15/7)(1 + e) is along x for every e: '? @ 180deg' (leftward) holds for every e
+    // in (2/5, 1], '? @ 0deg' for every e in [0, 2/5): the side alone does not fix e.
+    for d in ["? @ 180deg,?", "? @ 0deg,?"] {
+        solve_refused(
+            &rod(&["-e", "?", "--fin", d, "--exact"]),
+            &["every e gives a final velocity on the given line; the side alone"],
+        );
+    }
+    // '? @ 90deg' needs vx' = 0: only e = 2/5, where the ball stops; a body at rest has no
+    // direction, so nothing fits (it was solved as e = 2/5 with "holds exactly").
+    solve_refused(
+        &rod(&["-e", "?", "--fin", "? @ 90deg,?", "--exact"]),
+        &[
+            "e = 0.4 gives v1' = (0, 0) (a body at rest has no direction)",
+            "only along (1, 0)",
+        ],
+    );
     // A speed of 1/2 is v1' = +-1/2: e = 1/6 (v1' = 3 - (7/6)(15/7) = 1/2) and e = 19/30.
     solve_refused(
         &rod(&["-e", "?", "--fin", "0.5 m/s @ ?,?", "--exact"]),
