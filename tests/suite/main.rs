@@ -14,6 +14,7 @@ mod contacts;
 mod docs_claims;
 mod exact_and_accuracy;
 mod fin_known;
+mod fin_metamorphic;
 mod frames;
 mod grammar;
 mod homework;
