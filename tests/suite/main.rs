@@ -65,6 +65,7 @@ mod track_endless;
 mod track_props;
 mod track_rows;
 mod track_stops;
+mod unchanged;
 mod units;
 mod view;
 mod view_bars;
