@@ -445,6 +445,9 @@ fn the_reflected_case_gives_the_reflected_report_bit_for_bit() {
             let spins = a["fin"].as_array().unwrap().iter().map(|b| q(&b["omega"]));
             assert!(spins.into_iter().any(|w| w != Q::ZERO), "{}", c.name);
             assert_reflected(&a, &b, c.axis, c.name);
+            // And the comparison can fail: a report is not its own reflection.
+            let own = std::panic::catch_unwind(|| assert_reflected(&a, &a, c.axis, "itself"));
+            assert!(own.is_err(), "{}: its own reflection", c.name);
         }
     }
     // The bullet at 10 deg above x and its reflection at -10 deg: v = 406 / cos(10 deg) (the
