@@ -485,7 +485,7 @@ fn joined_block(o: &Outcome, j: &Joined, style: &Style, u: &RigidUnits) -> Block
     b.row(
         "v_cm",
         format!("{}{}", vector(style, &j.v, a), u.suffix("m/s")),
-        "P / M",
+        "P_FIN / M",
     );
     let (value, note) = spin(style, &j.omega, a, u);
     b.row("omega", value, note);

@@ -89,6 +89,40 @@ fn the_published_cue_ball_onto_two_touching_balls_by_hand() {
 }
 
 #[test]
+fn the_published_cue_ball_one_contact_at_a_time_by_hand() {
+    // --sequential on the published case, c = cos 30, s = 1/2. 1-2 first: equal elastic balls
+    // swap the normal part, 3.8 c along n2 = (c, s): ball 2 (2.85, 1.9 c), the cue ball (3.8 -
+    // 2.85, -1.9 c) = (0.95, -1.9 c). Then 1-3, n3 = (c, -s): the cue ball's part along n3 is
+    // 0.95 c + 0.95 c = 1.9 c, so ball 3 (1.425, -0.95 c) and the cue ball (-0.475, -0.95 c),
+    // 0.95 at -120 deg. Nothing approaches after (n2.(v2 - v1) = 4.75 c, n3.(v3 - v1) = 1.9 c):
+    // 2 impacts, and KE 1/2 (0.9025 + 10.83 + 2.7075) = 7.22 kept. The simultaneous answer was
+    // (-0.76, 0): the law matters.
+    let (code, j) = solve_json(
+        &[
+            &CUE[..],
+            &["--contacts", "1-2 @ 30deg,1-3 @ -30deg", "--sequential"],
+        ]
+        .concat(),
+    );
+    assert_eq!(code, 0);
+    let c = 3f64.sqrt() / 2.0;
+    let s = &j["sequential"];
+    assert_eq!(s["impacts"], 2);
+    let f = fin(s);
+    for (k, want) in [
+        (0, [-0.475, -0.95 * c]),
+        (1, [2.85, 1.9 * c]),
+        (2, [1.425, -0.95 * c]),
+    ] {
+        assert_close(f[k][0], want[0], 1e-14, "x");
+        assert_close(f[k][1], want[1], 1e-14, "y");
+    }
+    assert_close(number(&s["energy"]["fin"]), 7.22, 1e-14, "KE");
+    // The simultaneous answer is printed beside it, unchanged.
+    assert_close(fin(&j)[0][0], -0.76, 1e-14, "cue ball");
+}
+
+#[test]
 fn newtons_cradle_of_three_simultaneous_and_sequential_by_hand() {
     // Three unit balls in a row, the first at 1, e = 1: w = (-1, 0), A = [[2, -1], [-1, 2]].
     // Both push: 2 w + A P = 0, so 2 P1 - P2 = 2, -P1 + 2 P2 = 0: P = (4/3, 2/3);

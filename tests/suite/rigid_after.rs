@@ -8,7 +8,7 @@
 use crate::common::{assert_close, assert_ulps, rounded, run_solve, solve_refused};
 use crate::rigid::{f, json, q};
 
-use collide::values::rational::{int, ratio};
+use collide::values::rational::{Q, int, ratio};
 
 /// The issue's case: 10 g of clay at 2.5 m/s sticks to the lower tip of a 75 g, 30 cm rod on
 /// an axle through its centre.
@@ -522,6 +522,40 @@ fn a_pass_through_prints_its_heights() {
     assert_eq!(q(&j["heights"]["in"][0]), int(8000));
     assert_eq!(q(&j["heights"]["fin"][0]), int(500));
     assert_eq!(q(&j["heights"]["fin"][1]), ratio(9, 80));
+    assert!(
+        j["not_shown"]["forms"]
+            .as_str()
+            .unwrap()
+            .contains("only momentum")
+    );
+}
+
+#[test]
+fn a_separation_prints_its_heights() {
+    // Issue 42 section 3 names pass-through and separation cases. 2 kg and 3 kg start together
+    // at rest and 3 kg leaves at 4 m/s: momentum 2 f1 + 3 4 = 0, f1 = -6. Heights v^2 / 2g with
+    // g = 10: 36/20 = 9/5 m and 16/20 = 4/5 m after, 0 before; the forms (an energy ellipse and
+    // restitution) do not apply, and say so.
+    let (code, j) = crate::common::solve_json(&[
+        "-m",
+        "2,3",
+        "-v",
+        "0,0",
+        "--fin",
+        "?,4",
+        "--show",
+        "heights,forms",
+        "--gravity",
+        "10",
+        "--exact",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(j["event"], "separation");
+    assert_eq!(q(&j["solved"]["f1"]), int(-6));
+    assert_eq!(q(&j["heights"]["in"][0]), Q::ZERO);
+    assert_eq!(q(&j["heights"]["in"][1]), Q::ZERO);
+    assert_eq!(q(&j["heights"]["fin"][0]), ratio(9, 5));
+    assert_eq!(q(&j["heights"]["fin"][1]), ratio(4, 5));
     assert!(
         j["not_shown"]["forms"]
             .as_str()

@@ -92,6 +92,9 @@ fn the_text_shows_the_joined_body_and_the_energy_lost() {
         "  lost    249.687890137328 J",
         "The bodies join: the ball stays at the contact point (e = 0, no slip: w' = 0)",
         "contact         joined",
+        // v_cm is the momentum after over M, (1601/500) v = 1/801 kg m/s (the pivot's impulse
+        // takes the rest): not the contact's impulse P = 0.9988 N s over M (it said "P / M").
+        "  v_cm    (0.000389893644811568, 0) m/s  P_FIN / M",
     ] {
         assert!(out.contains(line), "missing {line:?}:\n{out}");
     }

@@ -133,6 +133,35 @@ fn e_and_a_mass_from_the_final_spin() {
 }
 
 #[test]
+fn a_final_spin_in_rev_s_rpm_or_deg_s() {
+    // Issue 42 section 2: --fin-spin takes rad/s, rpm, rev/s and deg/s. Half a turn a second
+    // is -0.5 rev/s = -30 rpm = -180 deg/s = -pi rad/s, with pi binary64's (the one factor turns
+    // and degrees carry, rigid/units.rs): the same rational in each spelling. As above, omega2'
+    // = -(9/2) m1/(1 + m1), so 9 m1 = 2 pi (1 + m1): m1 = 2 pi/(9 - 2 pi) = 2.3127 kg, bit for
+    // bit the same whichever unit is typed, within 2 ulps of that value (the root rounded
+    // once). --exact refuses a turn or a degree by name: pi is irrational.
+    let pi = collide::values::rational::from_f64(std::f64::consts::PI);
+    let two_pi = &pi + &pi;
+    let m1 = &two_pi / &(int(9) - &two_pi);
+    let mut binary64 = Vec::new();
+    for spin in [",-0.5 rev/s", ",-30 rpm", ",-180 deg/s", ",-0.5 Hz"] {
+        let j = run_rod(&["-m", "?,4", "--fin-spin", spin]);
+        binary64.push(f(&j["solved"]["m1"]));
+        assert_eq!(f(&j["fin"][1]["omega"]), -std::f64::consts::PI, "{spin}");
+    }
+    assert!(binary64.iter().all(|&x| x == binary64[0]), "{binary64:?}");
+    crate::common::assert_ulps(
+        binary64[0],
+        crate::common::rounded(&m1),
+        2.0,
+        "m1 from -pi rad/s",
+    );
+    let a = rod(&["-m", "?,4", "--fin-spin", ",-30 rpm", "--exact"]);
+    let a: Vec<&str> = a.iter().map(String::as_str).collect();
+    solve_refused(&a, &["--exact", "-30 rpm", "irrational"]);
+}
+
+#[test]
 fn two_hit_points_give_the_same_spin_and_are_refused_by_name() {
     // Masses 1 and 1, a rod of 6 (I = 3): omega2' = -6 y/(6 + y^2), which is -6/5 at y = 2
     // and at y = 3 (the end): both on the rod, so the hit point is not determined.
