@@ -10,7 +10,11 @@ CASES.json prints one JSON object of what the page did, in one page load:
 - `motion`: the cue ball's centre on screen at the impact (t = 0) and one step after, with the
   picture's velocity at that time (the step moves it along v');
 - `bad`: a negative mass: the error, the field marked, the panel greyed, the state emptied;
-- `phone`: the panel at 390x844 with five touching balls: its width against the window's.
+- `arrow`: one step after the impact, the cue ball's (slow) arrow: its ends, and the puck's centre
+  and radius on screen; `labels`: the boxes of the momenta chart's names (P, px, py);
+- `phone`: the panel at 390x844 with five touching balls: its width against the window's; for
+  them and for the cue ball's preset, each input's text against its box and the table of
+  values' width against its box's.
 Console messages and page errors are reported under `console`. Screenshots of the panel at
 1280x800 and 390x844 are left in OUT_DIR."""
 import json, os, sys, time
@@ -40,6 +44,24 @@ TABLES = """() => Object.fromEntries([...document.querySelectorAll('#nball-numbe
 
 PUCK = """() => { const c = document.getElementById('nb-puck-1');
   return { x: Number(c.getAttribute('cx')), y: Number(c.getAttribute('cy')), t: collideView.nbody.t }; }"""
+
+
+# The cue ball's arrow after the impact: where its line starts and where its head's tip is,
+# with the puck's centre and radius (screen units of the picture).
+ARROW = """() => { const g = document.getElementById('nb-fin-1'), c = document.getElementById('nb-puck-1');
+  const line = g.querySelector('line'), tip = g.querySelector('polygon').getAttribute('points').split(' ')[0].split(',').map(Number);
+  return { from: [+line.getAttribute('x1'), +line.getAttribute('y1')], tip,
+    centre: [+c.getAttribute('cx'), +c.getAttribute('cy')], r: +c.getAttribute('r'),
+    map: JSON.parse(document.getElementById('nball-svg').dataset.map), fin: collideView.nbodyPicture().fin[0] }; }"""
+
+LABELS = """() => [...document.querySelectorAll('#nball-momentum-svg text.label')].map(t => {
+  const b = t.getBBox(); return [t.textContent, b.x, b.y, b.width, b.height]; })"""
+
+# Each input of the pucks' table shown (its text wider than its box scrolls inside it), and the
+# table of values' width against its box's.
+FIT = """() => ({ inputs: [...document.querySelectorAll('#nb-rows input')].filter(i => i.offsetParent)
+    .map(i => [i.id, i.value, i.scrollWidth, i.clientWidth]),
+  numbers: [document.getElementById('nball-numbers').scrollWidth, document.getElementById('nball-numbers').clientWidth] })"""
 
 
 def main():
@@ -74,6 +96,8 @@ def main():
         out["motion"] = {"impact": at_impact, "after": after,
                          "map": json.loads(page.get_attribute("#nball-svg", "data-map")),
                          "fin": page.evaluate("() => collideView.nbodyPicture().fin[0]")}
+        out["arrow"] = page.evaluate(ARROW)
+        out["labels"] = page.evaluate(LABELS)
         page.screenshot(path=os.path.join(out_dir, "nball-cue-after-1280.png"))
         page.click("#nball-play")
         page.wait_for_timeout(300)
@@ -104,6 +128,9 @@ def main():
           page: document.documentElement.scrollWidth,
           panel: document.getElementById('nball').getBoundingClientRect().right,
           bad: /NaN|Infinity/.test(document.getElementById('nball').outerHTML) })""")
+        out["phone"]["fit"] = [page.evaluate(FIT)]
+        page.select_option("#nb-preset", "cue2")
+        out["phone"]["fit"].append(page.evaluate(FIT))
         browser.close()
     out["seconds"] = time.time() - start
     print(json.dumps(out))

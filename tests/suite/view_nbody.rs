@@ -4,7 +4,8 @@
 //! byte for byte for 10 seeded random cases; in headless Chromium (`view_nbody.py`, one page
 //! load) the page's `#nball-state` does too, the cue ball onto two touching balls reads the
 //! published -0.76 and 2.63 from the panel, the pucks move along v' after the impact, a bad
-//! input greys the panel, and five balls fit a phone.
+//! input greys the panel, and five balls fit a phone (their inputs and values whole); a slow
+//! puck's arrow starts at its disk's edge; P's name clears the axes'.
 
 use std::sync::OnceLock;
 
@@ -253,4 +254,56 @@ fn browser_nbody_pucks_move_along_their_paths_and_bad_input_greys() {
     assert!(f(&phone["page"]) <= f(&phone["window"]), "{phone}");
     assert_eq!(phone["bad"], false, "{phone}");
     assert_eq!(r["console"], json!([]), "console: {}", r["console"]);
+}
+
+#[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
+fn browser_nbody_slow_arrow_from_the_edge_p_clear_of_px_and_a_phone_shows_whole_values() {
+    let r = run();
+    // The cue ball after the impact: v1' = (-0.76, 0) against the fastest speed 3.8, so its
+    // arrow is 90 * 0.76 / 3.8 = 18 units long (the one scale k = 90 / 3.8), shorter than the
+    // puck's radius (s units for radius 1, about 47): it starts at the disk's edge, r from the
+    // centre along v1', and keeps its length k |v1'| (to the SVG's 0.01 rounding).
+    let a = &r["arrow"];
+    let (k, radius) = (f(&a["map"]["k"]), f(&a["r"]));
+    let v = [f(&a["fin"][0]), f(&a["fin"][1])];
+    assert!((v[0] + 0.76).abs() < 1e-4 && v[1] == 0.0, "{a}");
+    assert!(
+        k * v[0].hypot(v[1]) < radius,
+        "the arrow would be inside the disk: {a}"
+    );
+    let (c, from, tip) = (&a["centre"], &a["from"], &a["tip"]);
+    let unit = [v[0] / v[0].hypot(v[1]), -v[1] / v[0].hypot(v[1])]; // y down on screen
+    for i in 0..2 {
+        let want_from = f(&c[i]) + radius * unit[i];
+        assert!((f(&from[i]) - want_from).abs() <= 0.011, "{a}");
+        let sign = if i == 0 { 1.0 } else { -1.0 };
+        let want_tip = want_from + sign * k * v[i];
+        assert!((f(&tip[i]) - want_tip).abs() <= 0.011, "{a}");
+    }
+    // The momenta chart's names (P at the tip of P = (3.8, 0), the axes' px and py): no two
+    // boxes overlap.
+    let labels = r["labels"].as_array().unwrap();
+    assert!(labels.iter().any(|l| l[0] == "P"), "{labels:?}");
+    for (i, p) in labels.iter().enumerate() {
+        for q in &labels[i + 1..] {
+            let apart = f(&p[1]) + f(&p[3]) <= f(&q[1])
+                || f(&q[1]) + f(&q[3]) <= f(&p[1])
+                || f(&p[2]) + f(&p[4]) <= f(&q[2])
+                || f(&q[2]) + f(&q[4]) <= f(&p[2]);
+            assert!(apart, "{p} covers {q}");
+        }
+    }
+    // On a 390 px phone (five balls, then the cue ball's preset): every input shows its value
+    // whole, and the table of values fits its box (no sideways scroll inside it).
+    for fit in r["phone"]["fit"].as_array().unwrap() {
+        for input in fit["inputs"].as_array().unwrap() {
+            assert!(f(&input[2]) <= f(&input[3]), "cut: {input}");
+        }
+        let n = &fit["numbers"];
+        assert!(f(&n[0]) <= f(&n[1]), "the values scroll sideways: {n}");
+    }
 }

@@ -148,7 +148,11 @@
     for (let i = 0; i < n; i++) {
       const v = t < 0 ? p.in[i] : p.fin[i];
       const c = S(nbAt(p, m, i, t));
-      arrow(svg, c, [c[0] + m.k * v[0], c[1] - m.k * v[1]], nbColours[i], t < 0 ? { id: "nb-in-" + (i + 1), width: 2.6 } : { id: "nb-fin-" + (i + 1), dash: "7 4", width: 2.4 });
+      // An arrow whose tip would be inside its disk (a slow puck: the cue ball after the break)
+      // starts at the disk's edge instead, its length (the velocity, in the one scale) the same.
+      const d = [m.k * v[0], -m.k * v[1]], len = Math.hypot(d[0], d[1]), r = m.radius(i);
+      const from = len > 0 && len < r ? [c[0] + d[0] / len * r, c[1] + d[1] / len * r] : c;
+      arrow(svg, from, [from[0] + d[0], from[1] + d[1]], nbColours[i], t < 0 ? { id: "nb-in-" + (i + 1), width: 2.6 } : { id: "nb-fin-" + (i + 1), dash: "7 4", width: 2.4 });
     }
     el(svg, "text", { x: 12, y: m.H - 10, class: "tick" }, "v" + unit + ": solid before, dashed after");
   }
@@ -181,8 +185,9 @@
     }
     // P on top, thin, where both chains end.
     arrow(svg, S([0, 0]), S(p.p_total), "var(--com)", { id: "nb-momentum-total", width: 1.6 });
+    // P's name beside its tip, moved down a line while it would cover an axis's name (px).
     const end = S(p.p_total);
-    el(svg, "text", { x: r2(end[0] + 8), y: r2(end[1] - 8), class: "label", fill: "var(--com)", "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, "P");
+    placeText(svg, boxesOf(svg), { x: r2(end[0] + 8), y: r2(end[1] - 8), class: "label", fill: "var(--com)", "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, "P");
   }
 
   function drawNbNumbers(p) {

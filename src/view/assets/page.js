@@ -144,12 +144,17 @@
   const kOf = (svg) => textScale.get(svg.ownerSVGElement || svg) || 1;
 
   // A 2-D plot area: data box to screen, with grid and tick labels.
-  function frameAxes(svg, area, box, labels) {
+  // The map of a plot area: data box to screen.
+  function axesMap(area, box) {
     // By halves, as in `ticks`: no difference of two huge numbers overflows.
     const sx = area.w / 2 / (box.x1 / 2 - box.x0 / 2);
     const sy = area.h / 2 / (box.y1 / 2 - box.y0 / 2);
     const X = (x) => area.x + (x / 2 - box.x0 / 2) * (2 * sx);
     const Y = (y) => area.y + (box.y1 / 2 - y / 2) * (2 * sy);
+    return { X, Y, sx, sy };
+  }
+  function frameAxes(svg, area, box, labels) {
+    const { X, Y, sx, sy } = axesMap(area, box);
     el(svg, "rect", { x: area.x, y: area.y, width: area.w, height: area.h, fill: "#fff", stroke: "#d1d5db" });
     const grid = el(svg, "g", { stroke: "#eef0f3", "stroke-width": 1 });
     const tickText = el(svg, "g", { class: "tick" });
@@ -215,18 +220,84 @@
     }
   }
 
+  // The box of an SVG text about as `getBBox` gives it, a little larger (a tenth of the font's
+  // size more on each side, a fifth more after an italic): the advance of its glyphs across and
+  // the font's ascent and descent, measured on a canvas in the font page.css gives its class
+  // (`tick`, `label`, `title`, at the chart's `--k`). Reading `getBBox` after a change lays the
+  // page out again: a forced layout per label at every step of a drag. Other texts are asked.
+  const measure = document.createElement("canvas").getContext("2d");
+  const SVG_FONT = 'system-ui, -apple-system, "Segoe UI", Roboto, Arial, sans-serif';
+  const TEXT_CLASS = { tick: [400, 11], label: [600, 12.5], title: [400, 13] };
+  function textBox(t) {
+    const cls = (t.getAttribute("class") || "").split(" ").find((c) => TEXT_CLASS[c]);
+    if (!measure || !cls) { const b = t.getBBox(); return { x: b.x, y: b.y, width: b.width, height: b.height }; }
+    const [weight, size] = TEXT_CLASS[cls];
+    const px = size * kOf(t), italic = t.getAttribute("font-style") === "italic";
+    measure.font = (italic ? "italic " : "") + weight + " " + px + "px " + SVG_FONT;
+    // SVG text collapses its spaces.
+    const m = measure.measureText(t.textContent.replace(/\s+/g, " ").trim());
+    const anchor = t.getAttribute("text-anchor");
+    const x = Number(t.getAttribute("x")) - (anchor === "end" ? m.width : anchor === "middle" ? m.width / 2 : 0);
+    const up = m.fontBoundingBoxAscent, down = m.fontBoundingBoxDescent;
+    return { x: x - 0.1 * px, y: Number(t.getAttribute("y")) - up - 0.1 * px, width: m.width + (italic ? 0.4 : 0.2) * px, height: up + down + 0.2 * px };
+  }
+
+  // A chart's frame (grid, ticks, axis names: `draw(defs)`) drawn again unless `keep` and the
+  // frame drawn last time had the same `key` (and text scale); what was drawn after the frame
+  // is taken away either way. A drag that keeps a chart's scale then has fewer new elements
+  // for the browser to style and lay out at each step.
+  function chartFrame(svg, key, keep, draw) {
+    const full = key + "|" + kOf(svg);
+    const mark = svg.querySelector(":scope > defs.frame");
+    if (keep && mark && mark.dataset.key === full) {
+      while (mark.nextSibling) svg.removeChild(mark.nextSibling);
+      return;
+    }
+    clear(svg);
+    const defs = el(null, "defs", { class: "frame" });
+    defs.dataset.key = full;
+    draw(defs);
+    svg.appendChild(defs);
+  }
+
   // A text in `parent` at `attrs`, moved down a line at a time while it would overlap a box of
-  // `placed` (measured, not estimated); its box is added to `placed`.
+  // `placed` (measured, not estimated: `textBox`); its box is added to `placed`.
   function placeText(parent, placed, attrs, text) {
     const t = el(parent, "text", attrs, text);
     const hits = (b) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width && b.y < q.y + q.height && q.y < b.y + b.height);
-    for (let k = 0; k < 12 && hits(t.getBBox()); k++) t.setAttribute("y", r2(Number(t.getAttribute("y")) + 15));
-    const b = t.getBBox();
-    placed.push({ x: b.x, y: b.y, width: b.width, height: b.height });
+    for (let k = 0; k < 12 && hits(textBox(t)); k++) t.setAttribute("y", r2(Number(t.getAttribute("y")) + 15));
+    placed.push(textBox(t));
     return t;
   }
   // The boxes of the texts already in `svg` (axis names) that labels must not cover.
-  const boxesOf = (svg) => [...svg.querySelectorAll("text.label")].map((t) => { const b = t.getBBox(); return { x: b.x, y: b.y, width: b.width, height: b.height }; });
+  const boxesOf = (svg) => [...svg.querySelectorAll("text.label")].map(textBox);
+
+  // A drag redraws at each frame only what is in sight: a picture or table off screen (the
+  // tables under the velocity plane, the rail, Space vs Space and the bars below it) waits, and
+  // is drawn when it comes into view or when the drag ends (`drawWaiting`), so that the browser
+  // styles, lays out and paints only what the drag changes on screen. `drawSeen(node, draw,
+  // later)` draws now unless `later` (a drag) and `node` is off screen; a later call's drawing
+  // replaces a waiting one (each draws the whole node from the last answer).
+  const offScreen = new Set();
+  const waiting = new Map();
+  const watched = new WeakSet();
+  const sight = typeof IntersectionObserver === "function" ? new IntersectionObserver((entries) => {
+    for (const e of entries) {
+      if (!e.isIntersecting) { offScreen.add(e.target); continue; }
+      offScreen.delete(e.target);
+      const draw = waiting.get(e.target);
+      if (draw) { waiting.delete(e.target); draw(); }
+    }
+  }, { rootMargin: "100px" }) : null;
+  function drawSeen(node, draw, later) {
+    if (sight && !watched.has(node)) { watched.add(node); sight.observe(node); }
+    if (later && offScreen.has(node)) { waiting.set(node, draw); return; }
+    waiting.delete(node);
+    draw();
+  }
+  function drawWaiting() {
+    for (const [node, draw] of [...waiting]) { waiting.delete(node); draw(); }
+  }
 
   // ---------------------------------------------------------------- the velocity plane
   // The data box of a velocity plane (lecture Figs. 1.3, 2.3): square, around the origin, the
@@ -303,17 +374,22 @@
   // 45-degree line V1 = V2, the momentum line, the IN, COM and FIN energy ellipses and the points
   // with their coordinates. Options: `title`, `axes` (the axes' names), `under(g, X, Y)` draws
   // more beneath the points, in the clipped area, `more(point)` adds points, and element ids
-  // start with `prefix` (a page may hold several planes).
+  // start with `prefix` (a page may hold several planes). With `keep` (a drag, the map kept),
+  // the frame (grid, ticks, axis names and title) drawn last time stays if it is the same, and
+  // only what moves is drawn again: fewer new elements for the browser to style and lay out.
   function velocityPlane(svg, p, map, opts) {
     const prefix = opts.prefix || "";
     const X = (x) => map.ox + map.s * x;
     const Y = (y) => map.oy - map.s * y;
     const a = map.area;
-    frameAxes(svg, a, map.box, opts.axes || ["V\u2081", "V\u2082"]);
-    el(svg, "text", { x: a.x, y: 20, class: "title" }, opts.title);
-    const defs = el(svg, "defs");
-    const clip = el(defs, "clipPath", { id: prefix + "plane-clip" });
-    el(clip, "rect", { x: a.x, y: a.y, width: a.w, height: a.h });
+    const axes = opts.axes || ["V\u2081", "V\u2082"];
+    const key = [a.x, a.y, a.w, a.h, map.box.x0, map.box.x1, map.box.y0, map.box.y1, opts.title, axes.join(), prefix].join("|");
+    chartFrame(svg, key, opts.keep, (defs) => {
+      frameAxes(svg, a, map.box, axes);
+      el(svg, "text", { x: a.x, y: 20, class: "title" }, opts.title);
+      const clip = el(defs, "clipPath", { id: prefix + "plane-clip" });
+      el(clip, "rect", { x: a.x, y: a.y, width: a.w, height: a.h });
+    });
     const g = el(svg, "g", { "clip-path": "url(#" + prefix + "plane-clip)" });
     const b = map.box;
     // The 45-degree line V1 = V2 and the momentum line k1 V1 + k2 V2 = P.

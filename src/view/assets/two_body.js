@@ -47,9 +47,11 @@
 
   function renderCase() {
     caseState = JSON.parse(caseAnswer.state);
-    drawPlane(caseAnswer.picture);
-    drawNumbers(caseAnswer.picture);
-    drawDual(caseAnswer.picture);
+    const p = caseAnswer.picture;
+    // (The plane is off screen while a car is dragged on the rail below it.)
+    drawSeen($("plane-svg"), () => drawPlane(p), plane.dragging);
+    drawSeen($("case-numbers"), () => drawNumbers(p), plane.dragging);
+    drawDual(p);
     $("state").textContent = caseAnswer.state;
     $("command").textContent = caseAnswer.command;
     $("scene").textContent = caseAnswer.scene;
@@ -74,7 +76,6 @@
     const svg = $("plane-svg");
     if (!plane.keep || !plane.map) plane.map = fitPlane([p]);
     const map = plane.map;
-    clear(svg);
     svg.setAttribute("data-origin-x", map.ox);
     svg.setAttribute("data-origin-y", map.oy);
     svg.setAttribute("data-scale", map.s);
@@ -85,7 +86,7 @@
       ? "diag(" + short(m[0][0]) + ", " + short(m[1][1]) + ")"
       : "[[" + m.map((r) => r.map(short).join(", ")).join("], [") + "]]";
     const title = "M = " + tensor + ",  e = " + (frameLabel ? short(p.e) : $("e").value.trim()) + ",  " + (frameLabel || frameWords(currentFrame())) + " frame";
-    velocityPlane(svg, p, map, { title, under: (g, X, Y) => {
+    velocityPlane(svg, p, map, { title, keep: plane.keep, under: (g, X, Y) => {
       // The other frames, faint (Fig. 2.5).
       if ($("overlay").checked) {
         const o = el(g, "g", { opacity: 0.45 });
@@ -295,6 +296,8 @@
       flush();
       plane.dragging = false;
       svg.classList.remove("dragging");
+      drawDual(caseAnswer.picture);
+      drawWaiting();
       say("case-said", caseSentence());
     };
     svg.addEventListener("pointerup", end);
@@ -362,9 +365,12 @@
   function drawDual(p) {
     dual.picture = p;
     const v = p.in, f = p.fin;
-    // A car dragged on the rail keeps the scale it was grabbed at.
+    // A car dragged on the rail keeps the scale it was grabbed at; a drag of IN keeps it while
+    // the world lines fit (and widens it by a quarter more when they do not), so that the
+    // diagrams' frames stay; the drag's end fits it again.
+    const need = Math.max(Math.abs(v[0]), Math.abs(v[1]), Math.abs(f[0]), Math.abs(f[1])) * 1.1 || 1;
     const reach = dual.dragging >= 0 && dual.reach ? dual.reach
-      : Math.max(Math.abs(v[0]), Math.abs(v[1]), Math.abs(f[0]), Math.abs(f[1])) * 1.1 || 1;
+      : plane.dragging && dual.reach ? (need <= dual.reach ? dual.reach : 1.25 * need) : need;
     dual.reach = reach;
     const tBox = [-1.1, 1.1];
     const x = (i, t) => (t < 0 ? v[i] * t : f[i] * t);
@@ -376,9 +382,9 @@
       const svg = $(id);
       // The diagram not chosen is drawn when it is (a drag draws only what is seen).
       if (svg.closest("[hidden]")) { clear(svg); continue; }
-      clear(svg);
       const box = newton ? { x0: tBox[0], x1: tBox[1], y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: tBox[0], y1: tBox[1] };
-      const a = frameAxes(svg, area, box, newton ? ["t", "x"] : ["x", "t"]);
+      const a = axesMap(area, box);
+      chartFrame(svg, reach, plane.dragging, () => frameAxes(svg, area, box, newton ? ["t", "x"] : ["x", "t"]));
       const at = (t, xx) => (newton ? [a.X(t), a.Y(xx)] : [a.X(xx), a.Y(t)]);
       for (let i = 0; i < 2; i++) {
         el(svg, "polyline", { points: pts([at(-1, x(i, -1)), at(0, 0), at(1, x(i, 1))]), fill: "none", stroke: colours[i], "stroke-width": 2.2 });
@@ -387,7 +393,15 @@
       g.dataset.newton = newton ? "1" : "0";
       axesOf[id] = a;
     }
-    // Space vs Space: x2 against x1, or scaled by M^(1/2).
+    dual.map = { reach, x, map2: null, space: null, axes: axesOf, area };
+    // Below, off screen during a drag of IN: Space vs Space and the bars.
+    drawSeen($("space-svg").closest(".row"), () => { drawSpace(p, v, f); drawRailBars(p); }, plane.dragging);
+    drawDualTime();
+  }
+
+  // Space vs Space: x2 against x1, or scaled by M^(1/2); the path from IN to FIN and its dot at
+  // the time shown.
+  function drawSpace(p, v, f) {
     const svg = $("space-svg");
     clear(svg);
     const scaled = $("scaled").checked;
@@ -409,16 +423,26 @@
     const note = !scaled ? "on the dashed line x\u2081 = x\u2082 the bodies meet"
       : p.e === 1 ? "e = 1: the path reflects in the dashed line" : "only e = 1 reflects the path in the line";
     el(svg, "text", { x: sq.x + 6, y: sq.y + sq.h - 8, class: "tick", "paint-order": "stroke", stroke: "#fff", "stroke-width": 3 }, note);
-    dual.map = { reach, x, map2, space: a, axes: axesOf, area };
-    drawRailBars(p);
-    drawDualTime();
+    dual.map.map2 = map2;
+    dual.map.space = a;
+    placeSpaceDot();
+  }
+  function placeSpaceDot() {
+    const { x, map2, space } = dual.map;
+    if (!space) return;
+    const sp = $("space-svg");
+    let dot = sp.querySelector("#space-dot");
+    const q = map2(x(0, dual.t), x(1, dual.t));
+    if (!dot) dot = el(sp, "circle", { id: "space-dot", r: 5.5, fill: "var(--rev)", stroke: "#fff", "stroke-width": 1.5 });
+    dot.setAttribute("cx", r2(space.X(q[0])));
+    dot.setAttribute("cy", r2(space.Y(q[1])));
   }
 
   function drawDualTime() {
     const p = dual.picture;
     if (!p) return;
     const t = dual.t;
-    const { reach, x, map2, space, axes, area } = dual.map;
+    const { reach, x, axes, area } = dual.map;
     const colours = ["var(--body1)", "var(--body2)"];
     for (const id of ["newton-svg", "minkowski-svg"]) {
       const svg = $(id);
@@ -434,13 +458,9 @@
         el(g, "circle", { cx: r2(cx), cy: r2(cy), r: 5, fill: colours[i], stroke: "#fff", "stroke-width": 1.5 });
       }
     }
-    const sp = $("space-svg");
-    let dot = sp.querySelector("#space-dot");
-    const q = map2(x(0, t), x(1, t));
-    if (!dot) dot = el(sp, "circle", { id: "space-dot", r: 5.5, fill: "var(--rev)", stroke: "#fff", "stroke-width": 1.5 });
-    dot.setAttribute("cx", r2(space.X(q[0])));
-    dot.setAttribute("cy", r2(space.Y(q[1])));
-    drawRail(p, t, reach, x);
+    // (A Space vs Space still waiting to be drawn places its dot then.)
+    if (!waiting.has($("space-svg").closest(".row"))) placeSpaceDot();
+    drawSeen($("rail-svg"), () => drawRail(p, t, reach, x), plane.dragging);
     $("dual-time").value = String(t);
     $("dual-time-out").textContent = "t = " + minus(t.toFixed(3));
   }
@@ -538,6 +558,7 @@
         svg.classList.remove("dragging");
       }
       drawDual(caseAnswer.picture);
+      drawWaiting();
       say("case-said", caseSentence());
     };
     svg.addEventListener("pointerup", end);
