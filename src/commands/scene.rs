@@ -239,75 +239,11 @@ fn render_special(
 /// A chain of stages: each stage's report in turn, each checked against its own
 /// `[stage.expect]`, then what comes next, checked against the top-level `[expect]`.
 fn solve_stages(scene: StagesScene) -> Result<Checked> {
-    let at = || format!("{}", scene.about.path.display());
-    let solved = scene.solve()?;
-    let mut parts = Vec::new();
-    let mut stage_checks = Vec::new();
-    let mut inconsistent = false;
-    for (i, (stage, run)) in scene.stages.iter().zip(&solved.runs).enumerate() {
-        let (event, (text, json)) = match &run.posed {
-            Posed::Collision(case, solved) => {
-                inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
-                let needed = stage.sections_needed(&run.show);
-                let rendered = render_case(
-                    case,
-                    &Frame::Lab,
-                    scene.exact,
-                    (&run.show, needed),
-                    solved.as_ref(),
-                );
-                ("collision", rendered.with_context(at)?)
-            }
-            Posed::Wall(wall, solved) => {
-                inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
-                let needed = stage.sections_needed(&run.show);
-                let rendered = render_special(
-                    Special::Wall(wall),
-                    (&run.show, needed),
-                    scene.exact,
-                    solved.as_ref(),
-                );
-                ("wall", rendered.with_context(at)?)
-            }
-            Posed::Separation(s, solved) => {
-                inconsistent |= solved.inconsistent();
-                let needed = stage.sections_needed(&run.show);
-                let rendered = render_special(
-                    Special::Separation(s),
-                    (&run.show, needed),
-                    scene.exact,
-                    Some(solved),
-                );
-                ("pass-through", rendered.with_context(at)?)
-            }
-            Posed::Separations(..) => {
-                unreachable!("a separation is refused when solved")
-            }
-        };
-        for e in &stage.expect {
-            let mut c = e.check(&json).map_err(|message| SceneError {
-                path: scene.about.path.clone(),
-                at: Some((e.line, 1)),
-                message: format!("[stage.expect] of {}: {message}", stage.name),
-            })?;
-            c.key = format!("{}.{}", stage.name, c.key);
-            stage_checks.push(c);
-        }
-        parts.push(StagePart {
-            name: stage.name.clone(),
-            numbered: stage.name == format!("stage{}", i + 1),
-            event,
-            objects: stage.objects,
-            takes: stage
-                .takes
-                .iter()
-                .enumerate()
-                .filter_map(|(b, t)| t.as_ref().map(|t| (b, t.text.clone())))
-                .collect(),
-            text,
-            json,
-        });
+    if scene.range.is_some() {
+        return solve_range(scene);
     }
+    let solved = scene.solve()?;
+    let (parts, stage_checks, inconsistent) = stage_parts(&scene, &solved.runs)?;
     let chain = Chain {
         stages: parts,
         bodies: &scene.bodies,
@@ -320,11 +256,149 @@ fn solve_stages(scene: StagesScene) -> Result<Checked> {
         velocity_unit: solved.velocity_unit,
         exact: scene.exact,
         fixed: &solved.fixed,
+        range: None,
     };
     let mut checked = check(scene.about, chain.text(), chain.json())?;
     checked.checks.extend(stage_checks);
     checked.inconsistent = inconsistent;
     Ok(checked)
+}
+
+/// A chain asked for the range of one stage's `e'` (a `condition`): the stages before it in
+/// full, the rest affine in `e'`, then the range, checked against the top-level `[expect]`.
+fn solve_range(scene: StagesScene) -> Result<Checked> {
+    use collide::report::range::Values;
+    let solved = scene.solve_range()?;
+    let (mut parts, stage_checks, inconsistent) = stage_parts(&scene, &solved.runs)?;
+    let values = Values { exact: scene.exact };
+    for (j, a) in solved.affine.iter().enumerate() {
+        let i = solved.runs.len() + j;
+        let stage = &scene.stages[i];
+        parts.push(StagePart {
+            name: stage.name.clone(),
+            numbered: stage.name == format!("stage{}", i + 1),
+            event: a.event,
+            objects: stage.objects,
+            takes: takes(stage),
+            text: a.text(values),
+            json: serde_json::Value::Null,
+            affine: Some(a.json(values)),
+        });
+    }
+    let chain = Chain {
+        stages: parts,
+        bodies: &scene.bodies,
+        after: Vec::new(),
+        meetings: &[],
+        velocity_unit: solved.range.velocity_unit,
+        exact: scene.exact,
+        fixed: &[],
+        range: Some(&solved.range),
+    };
+    let mut checked = check(scene.about, chain.text(), chain.json())?;
+    checked.checks.extend(stage_checks);
+    checked.inconsistent = inconsistent;
+    Ok(checked)
+}
+
+/// The solved stages of a chain rendered, each `[stage.expect]` checked; and whether any
+/// stage's solved values were inconsistent.
+fn stage_parts(
+    scene: &StagesScene,
+    runs: &[collide::scene::StageRun],
+) -> Result<(Vec<StagePart>, Vec<collide::expect::Check>, bool)> {
+    let mut parts = Vec::new();
+    let mut checks = Vec::new();
+    let mut inconsistent = false;
+    for (i, run) in runs.iter().enumerate() {
+        let (part, stage_checks, odd) = stage_part(scene, i, run)?;
+        parts.push(part);
+        checks.extend(stage_checks);
+        inconsistent |= odd;
+    }
+    Ok((parts, checks, inconsistent))
+}
+
+/// The velocities stage takes from earlier ones: `(body, "stage1.fin2")`.
+fn takes(stage: &collide::scene::Stage) -> Vec<(usize, String)> {
+    stage
+        .takes
+        .iter()
+        .enumerate()
+        .filter_map(|(b, t)| t.as_ref().map(|t| (b, t.text.clone())))
+        .collect()
+}
+
+/// Stage `i` of a chain rendered from its run, its `[stage.expect]` checked; and whether its
+/// solved values were inconsistent.
+fn stage_part(
+    scene: &StagesScene,
+    i: usize,
+    run: &collide::scene::StageRun,
+) -> Result<(StagePart, Vec<collide::expect::Check>, bool)> {
+    let at = || format!("{}", scene.about.path.display());
+    let stage = &scene.stages[i];
+    let mut inconsistent = false;
+    let (event, (text, json)) = match &run.posed {
+        Posed::Collision(case, solved) => {
+            inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
+            let needed = stage.sections_needed(&run.show);
+            let rendered = render_case(
+                case,
+                &Frame::Lab,
+                scene.exact,
+                (&run.show, needed),
+                solved.as_ref(),
+            );
+            ("collision", rendered.with_context(at)?)
+        }
+        Posed::Wall(wall, solved) => {
+            inconsistent |= solved.as_ref().is_some_and(Solved::inconsistent);
+            let needed = stage.sections_needed(&run.show);
+            let rendered = render_special(
+                Special::Wall(wall),
+                (&run.show, needed),
+                scene.exact,
+                solved.as_ref(),
+            );
+            ("wall", rendered.with_context(at)?)
+        }
+        Posed::Separation(s, solved) => {
+            inconsistent |= solved.inconsistent();
+            let needed = stage.sections_needed(&run.show);
+            let rendered = render_special(
+                Special::Separation(s),
+                (&run.show, needed),
+                scene.exact,
+                Some(solved),
+            );
+            ("pass-through", rendered.with_context(at)?)
+        }
+        Posed::Separations(..) => {
+            unreachable!("a separation is refused when solved")
+        }
+    };
+    let mut checks = Vec::new();
+    for e in &stage.expect {
+        let mut c = e.check(&json).map_err(|message| SceneError {
+            path: scene.about.path.clone(),
+            at: Some((e.line, 1)),
+            message: format!("[stage.expect] of {}: {message}", stage.name),
+        })?;
+        c.key = format!("{}.{}", stage.name, c.key);
+        checks.push(c);
+    }
+    let part = StagePart {
+        name: stage.name.clone(),
+        numbered: stage.name == format!("stage{}", i + 1),
+        event,
+        objects: stage.objects,
+        takes: takes(stage),
+        text,
+        json,
+        affine: None,
+    };
+    Ok((part, checks, inconsistent))
 }
 
 fn solve_track(scene: TrackScene) -> Result<Checked> {

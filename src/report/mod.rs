@@ -13,6 +13,7 @@ pub mod frames;
 pub mod json;
 pub mod not_shown;
 pub mod pi;
+pub mod range;
 pub mod rigid;
 #[cfg(feature = "cli")]
 pub mod scene;

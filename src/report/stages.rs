@@ -7,11 +7,14 @@
 //! [LEFT, RIGHT], "closing_speed"}], "collide_again", "units": {"velocity"}}`; a wall is named
 //! `left wall` or `right wall`. A chain solved as one system adds `"system": {"fixed":
 //! [{"velocity": "stage1.fin1", "by": "stage2", "value"}], "check": true}`; a stage's `event`
-//! may be `pass-through`.
+//! may be `pass-through`. A chain asked for a range of one stage's `e'` (a `condition`) has
+//! `"range"` ([`super::range`]) in place of `after`, `next` and `collide_again`; the stages from
+//! the unknown one on have `"affine": {"in", "fin"}` in place of `"report"`.
 
 use serde_json::{Map, Value, json};
 
 use super::block::{Block, paragraph};
+use super::range::Range;
 use crate::line::chain::{Meeting, Object};
 use crate::values::number::num;
 use crate::values::quantity::{Exact, Scalar, fraction, to_f64};
@@ -29,6 +32,9 @@ pub struct StagePart {
     pub takes: Vec<(usize, String)>,
     pub text: String,
     pub json: Value,
+    /// A stage whose velocities depend on an unknown `e'`: them, affine in it (in place of
+    /// `report`; `json` is then unused).
+    pub affine: Option<Value>,
 }
 
 /// A velocity an earlier stage leaves with that a later stage fixed (the chain solved as one
@@ -56,6 +62,8 @@ pub struct Chain<'a> {
     pub exact: bool,
     /// The taken velocities later stages fixed (none: solved in stage order).
     pub fixed: &'a [Fixed],
+    /// The range of `e'` asked, in place of `after` and the answer.
+    pub range: Option<&'a Range>,
 }
 
 /// A body's name, or `the wall on the right`.
@@ -125,6 +133,10 @@ impl Chain<'_> {
                 self.name(s.objects[1]),
             )));
             out.push_str(&s.text);
+        }
+        if let Some(r) = self.range {
+            r.text(&mut out);
+            return out;
         }
         let unit = self
             .velocity_unit
@@ -209,15 +221,26 @@ impl Chain<'_> {
                     .iter()
                     .map(|(body, from)| (format!("v{}", body + 1), Value::String(from.clone())))
                     .collect();
-                json!({
+                let mut stage = json!({
                     "name": s.name,
                     "event": s.event,
                     "bodies": [key(s.objects[0]), key(s.objects[1])],
                     "takes": takes,
-                    "report": s.json,
-                })
+                });
+                match &s.affine {
+                    Some(a) => stage["affine"] = a.clone(),
+                    None => stage["report"] = s.json.clone(),
+                }
+                stage
             })
             .collect();
+        if let Some(r) = self.range {
+            let mut out = json!({"event": "stages", "stages": stages, "range": r.json()});
+            if let Some(u) = self.velocity_unit {
+                out["units"] = json!({ "velocity": u });
+            }
+            return out;
+        }
         let after: Map<String, Value> = self
             .after
             .iter()

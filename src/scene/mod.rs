@@ -42,7 +42,9 @@ pub use balls::{BALLS_KEYS, BallsScene};
 pub use contact::{CONTACT_KEYS, ContactScene};
 pub use rigid::{RIGID_KEYS, RigidScene};
 pub use space::{SPACE_KEYS, SpaceScene, Texts as SpaceTexts, show_of};
-pub use stages::{STAGE_SHOW, STAGES_KEYS, SolvedStages, Stage, StageRun, StagesScene, Taken};
+pub use stages::{
+    Asked, STAGE_SHOW, STAGES_KEYS, SolvedRange, SolvedStages, Stage, StageRun, StagesScene, Taken,
+};
 pub use track::{TRACK_KEYS, TrackScene};
 pub use two_body::{PlotTable, Scene, SceneSweep, SpecialEvent, SpecialScene};
 

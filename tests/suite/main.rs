@@ -54,6 +54,7 @@ mod rigid_unknowns;
 mod shell;
 mod stages;
 mod stages_joint;
+mod stages_range;
 mod stages_system;
 mod sweeps;
 mod sweeps_cluster;

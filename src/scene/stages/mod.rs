@@ -30,6 +30,7 @@
 
 mod joint;
 mod linear;
+mod range;
 mod read;
 mod solve;
 mod system;
@@ -44,6 +45,8 @@ use crate::report::stages::Fixed;
 use crate::report::{Section, Sections};
 use crate::values::rational::Q;
 
+pub use range::{Asked, SolvedRange};
+
 /// Sections a stage prints unless `show` says otherwise: the vectors and the energies.
 pub const STAGE_SHOW: [Section; 2] = [Section::Vectors, Section::Energy];
 
@@ -52,13 +55,14 @@ pub const STAGE_SHOW: [Section; 2] = [Section::Vectors, Section::Energy];
 pub const MAX_STAGES: usize = 100;
 
 /// Top-level keys of a chain's report (`[expect]` at the top addresses them).
-pub const STAGES_KEYS: [&str; 6] = [
+pub const STAGES_KEYS: [&str; 7] = [
     "collide_again",
     "next",
     "after",
     "stages",
     "units",
     "system",
+    "range",
 ];
 
 /// A velocity taken from an earlier stage's result (`"stage1.fin2"`).
@@ -98,6 +102,8 @@ pub struct StagesScene {
     pub stages: Vec<Stage>,
     /// Each body's name (`A`, `B`, ... unless `bodies` names them), by its number.
     pub bodies: Vec<String>,
+    /// The range asked (`condition`, one stage's `restitution = "?"`), when asked.
+    pub range: Option<Asked>,
 }
 
 /// A stage solved in one arithmetic.
@@ -120,6 +126,8 @@ pub struct SolvedStages {
     pub after: Vec<(Q, usize)>,
     /// Neighbours that approach after the last stage, decided exactly.
     pub meetings: Vec<Meeting>,
+    /// Every pair of neighbours after the last stage, with `v_left - v_right` (of any sign).
+    pub pairs: Vec<Meeting>,
     /// The velocity unit of every stage, when they have one.
     pub velocity_unit: Option<&'static str>,
     /// The taken velocities a later stage fixed (the chain solved as one system), exactly.

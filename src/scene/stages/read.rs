@@ -28,6 +28,8 @@ struct StagesFile {
     show: Option<Vec<Section>>,
     stage: Vec<Spanned<StageTable>>,
     expect: Option<ExpectTable>,
+    /// A condition on what follows the last stage, asked as a range of one stage's `e`.
+    condition: Option<Spanned<String>>,
 }
 
 /// One `[[stage]]` as written.
@@ -472,6 +474,15 @@ pub(super) fn parse(path: &Path, text: &str) -> Result<StagesScene, SceneError> 
         }
         s.problem.exact = exact;
     }
+    let range = match &file.condition {
+        Some(c) => Some(super::range::asked(
+            (path, text),
+            c,
+            &reader.stages,
+            &reader.bodies,
+        )?),
+        None => None,
+    };
     let about = About::new(
         (path, text),
         file.title,
@@ -484,5 +495,6 @@ pub(super) fn parse(path: &Path, text: &str) -> Result<StagesScene, SceneError> 
         exact,
         stages: reader.stages,
         bodies: reader.bodies,
+        range,
     })
 }

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use super::super::SceneError;
 use super::system::{Carried, velocities_in};
 use super::{SolvedStages, Stage, StageRun, StagesScene};
-use crate::line::chain::{Line, Object, OrderError, Side};
+use crate::line::chain::{Line, Meeting, Object, OrderError, Side};
 use crate::line::problem::Posed;
 use crate::report::stages::object_name;
 use crate::values::quantity::fraction;
@@ -44,13 +44,22 @@ impl StagesScene {
             let (i, slot) = self.latest(b);
             (runs[i].fin[slot].clone(), i)
         };
-        let meetings = line.meetings(|o| match o {
+        let velocity = |o: Object| match o {
             Object::Body(b) => latest(&exact, b).0,
             Object::Wall(side) => walls[&side].0.clone(),
-        });
+        };
+        let meetings = line.meetings(velocity);
+        let pairs = (line.neighbours().into_iter())
+            .map(|(left, right, _)| Meeting {
+                left,
+                right,
+                closing: velocity(left) - velocity(right),
+            })
+            .collect();
         Ok(SolvedStages {
             after: (0..self.bodies.len()).map(|b| latest(&runs, b)).collect(),
             meetings,
+            pairs,
             velocity_unit: exact.first().and_then(|r| r.posed.units().velocity),
             runs,
             fixed,
@@ -58,7 +67,7 @@ impl StagesScene {
     }
 
     /// Body `b`'s last stage and its place in it.
-    fn latest(&self, b: usize) -> (usize, usize) {
+    pub(super) fn latest(&self, b: usize) -> (usize, usize) {
         self.stages
             .iter()
             .enumerate()
