@@ -7,7 +7,6 @@
 //! - `has_node`: Node.js (`node`), which runs the committed WebAssembly module;
 //! - `has_browser`: Chromium (`COLLIDE_CHROMIUM`, default /usr/bin/chromium) and Playwright for
 //!   Python;
-//! - `has_wasm_target`: the wasm32-unknown-unknown target of the toolchain building this;
 //! - `has_polars`: Polars for Python (reads Parquet back);
 //! - `has_avx2_fma`: a processor with AVX2 and FMA, building for itself (the x86-64-v3 row loop
 //!   of the table engine; hardware, so not forced under CI).
@@ -16,7 +15,7 @@
 //! its own, and the library would build twice in CI); a tool installed since the last build is
 //! seen after `touch build.rs`.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 
 fn runs(program: &str, args: &[&str]) -> bool {
@@ -27,17 +26,6 @@ fn runs(program: &str, args: &[&str]) -> bool {
         .stderr(Stdio::null())
         .status()
         .is_ok_and(|s| s.success())
-}
-
-fn wasm_target() -> bool {
-    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
-    Command::new(rustc)
-        .args(["--print", "sysroot"])
-        .output()
-        .ok()
-        .filter(|o| o.status.success())
-        .map(|o| PathBuf::from(String::from_utf8_lossy(&o.stdout).trim()))
-        .is_some_and(|root| root.join("lib/rustlib/wasm32-unknown-unknown").exists())
 }
 
 /// Whether this processor has AVX2 and FMA and the build is for it (the host).
@@ -74,7 +62,6 @@ fn main() {
             "has_browser",
             Path::new(&chromium).exists() && runs("python3", &["-c", "import playwright.sync_api"]),
         ),
-        ("has_wasm_target", wasm_target()),
         ("has_polars", runs("python3", &["-c", "import polars"])),
     ];
     println!("cargo::rustc-check-cfg=cfg(has_avx2_fma)");

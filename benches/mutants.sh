@@ -20,9 +20,9 @@
 #   MUTANTS_AGAIN=target/mutants/contact-0/mutants.out MUTANTS_SHARD=0/16 benches/mutants.sh contact
 #                                            # again what that run missed (after new tests)
 #
-# view skips the test that rebuilds the WebAssembly module from the sources and compares it with
-# the committed one: it fails on every mutant of the files the module is built from, whatever the
-# mutant does, and takes most of a mutant's test time.
+# view skips the tests of the committed WebAssembly module against its sources (the SHA-256 of
+# each, and the ignored rebuild): they fail on every mutant of the files the module is built
+# from, whatever the mutant does.
 # Each area mutates its files and builds and runs only the tests that guard them (the lib's unit
 # tests and the suite's modules, selected by name; `--cargo-arg`, so that the build step does not
 # compile the examples too), so a mutant costs its rebuild and seconds of tests. The
