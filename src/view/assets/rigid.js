@@ -20,7 +20,7 @@
   };
   let rigidAnswer = data.answers.rigid; // the last good answer
   // The picture's map (kept while a handle is dragged), what is dragged ("v1", "hit" or null).
-  const rigidView = { map: null, keep: false, dragging: null, timings: [] };
+  const rigidView = { map: null, keep: false, dragging: null, sliding: false, timings: [] };
   view.rigidTimings = rigidView.timings;
 
   function rigidRequest() {
@@ -46,10 +46,13 @@
   }
 
   function renderRigid() {
-    const a = rigidAnswer;
-    drawRigid(a.picture);
-    drawRigidNumbers(a.picture);
-    drawRigidPlane(a.picture);
+    const a = rigidAnswer, p = a.picture;
+    drawRigid(p);
+    // During a drag (a handle, or a slider until it is let go), the tables and the velocity
+    // plane along n are drawn after the frame, or once in sight.
+    const later = !!rigidView.dragging || rigidView.sliding;
+    drawSeen($("rigid-numbers"), () => drawRigidNumbers(p), later, true);
+    drawSeen($("rigid-normal-figure"), () => drawRigidPlane(p), later, true);
     syncRigidSliders(a.picture);
     $("rigid-state").textContent = a.state;
     $("rigid-command").textContent = a.command;
@@ -198,8 +201,9 @@
   }
 
   function drawRigidNumbers(p) {
-    const box = $("rigid-numbers");
-    clear(box);
+    fillBox("rigid-numbers", (box) => rigidNumbers(box, p));
+  }
+  function rigidNumbers(box, p) {
     const para = (html) => { const x = document.createElement("p"); x.innerHTML = html; box.appendChild(x); };
     if (!p) { para("The bodies do not approach at the contact: no collision (see the JSON)."); return; }
     const cell = (x) => (x === null || x === undefined ? "immovable" : num(x));
@@ -368,13 +372,15 @@
     fillRigid(data.setup.rigid);
     const typed = () => { $("r-preset").value = ""; solveRigid(false); };
     for (const f of rigidFields) $("r-" + f).addEventListener("input", typed);
-    $("r-e-range").addEventListener("input", () => { $("r-e").value = String(Number($("r-e-range").value)); solveRigid(true); });
-    $("r-spin-range").addEventListener("input", () => { $("r-spin").value = String(Number($("r-spin-range").value)); solveRigid(true); });
-    $("r-hit_at-range").addEventListener("input", () => {
+    const slide = (f) => { rigidView.sliding = true; try { f(); } finally { rigidView.sliding = false; } };
+    $("r-e-range").addEventListener("input", () => slide(() => { $("r-e").value = String(Number($("r-e-range").value)); solveRigid(true); }));
+    $("r-spin-range").addEventListener("input", () => slide(() => { $("r-spin").value = String(Number($("r-spin-range").value)); solveRigid(true); }));
+    $("r-hit_at-range").addEventListener("input", () => slide(() => {
       const unit = splitUnit($("r-hit_at").value)[1];
       $("r-hit_at").value = String(Number(Number($("r-hit_at-range").value).toPrecision(3))) + (unit && unit !== "end" ? " " + unit : (rigidAnswer.picture && rigidAnswer.picture.velocity_unit ? " m" : ""));
       solveRigid(true);
-    });
+    }));
+    // A slider let go: fitted again and drawn whole.
     for (const id of ["r-e-range", "r-spin-range", "r-hit_at-range"]) $(id).addEventListener("change", () => { rigidView.keep = false; if (rigidAnswer.picture) renderRigid(); });
     $("r-preset").addEventListener("change", () => {
       const p = rigidPresets[$("r-preset").value];
