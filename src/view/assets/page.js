@@ -455,6 +455,18 @@
     if (opts.under) opts.under(g, X, Y);
     // The points and their coordinates (the IN-FIN chord lies on the momentum line).
     const labels = el(svg, "g", {});
+    // An axis's name that IN, COM or FIN would cover (a point at the end of an axis: IN on the
+    // V1 axis at the ellipse's edge) goes to the other side of its axis line.
+    const dots = [p.in, p.com, p.fin].map((v) => [X(v[0]), Y(v[1])]);
+    const names = svg.querySelectorAll(":scope > text.label[font-style=italic]");
+    names.forEach((t, i) => {
+      if (!t.dataset.x) Object.assign(t.dataset, { x: t.getAttribute("x"), y: t.getAttribute("y"), anchor: t.getAttribute("text-anchor") });
+      t.setAttribute("x", t.dataset.x); t.setAttribute("y", t.dataset.y); t.setAttribute("text-anchor", t.dataset.anchor);
+      const b = textBox(t);
+      if (!dots.some(([x, y]) => x + 9 > b.x && x - 9 < b.x + b.width && y + 9 > b.y && y - 9 < b.y + b.height)) return;
+      if (i === 0) t.setAttribute("y", r2(Number(t.dataset.y) + 12 + 12.5 * kOf(svg)));
+      else { t.setAttribute("x", r2(Number(t.dataset.x) - 14)); t.setAttribute("text-anchor", "end"); }
+    });
     // Labels beside their points, moved down a line where they would overlap another or an
     // axis name.
     const placed = boxesOf(svg);
