@@ -7,6 +7,7 @@ the page did, at 1280x800:
 - `hit`: the hit point dragged along the rod with the mouse: the field before and after, where
   the pointer let go (in the target's units, from the picture's map), and the state and command;
 - `hand`: the numbers tables of the panel for a case derived by hand in the Rust test;
+- `floor`: a spinning sphere on a rough floor: its tables, and its arrows against its outline;
 - `extreme`: an extreme valid case: its state, and whether the pictures hold NaN or Infinity;
 - `phone`: the panel at 390x844: its width against the window's (no sideways overflow).
 Console messages and page errors are reported under `console`. Screenshots of the panel at
@@ -34,6 +35,20 @@ TABLES = """() => Object.fromEntries([...document.querySelectorAll('#rigid-numbe
 
 BAD = """() => { const svgs = ['rigid-svg', 'rigid-normal-svg'].map(id => document.getElementById(id).outerHTML).join('');
   return /NaN|Infinity/.test(svgs); }"""
+
+# The ball's outline and its velocity arrows before and after: where each line starts and where
+# its head's tip is (viewBox units).
+ARROWS = """() => { const c = document.getElementById('rigid-body1');
+  const get = id => { const g = document.getElementById(id), l = g.querySelector('line');
+    return { from: [+l.getAttribute('x1'), +l.getAttribute('y1')],
+      tip: g.querySelector('polygon').getAttribute('points').split(' ')[0].split(',').map(Number) }; };
+  return { centre: [+c.getAttribute('cx'), +c.getAttribute('cy')], r: +c.getAttribute('r'),
+    v1: get('rigid-v1'), v1_fin: get('rigid-v1-fin') }; }"""
+
+
+def arrows(page):
+    """The ball's arrows against its outline (issue 43: they start at the disk's edge)."""
+    return page.evaluate(ARROWS)
 
 
 def main():
@@ -90,7 +105,8 @@ def main():
         # A rough floor, for the screenshot and a named contact.
         page.evaluate(FILL, {"m1": "1", "m2": "floor", "v1": "(7,-1)", "ball": "sphere 1", "friction": "1", "spin": "2"})
         out["floor"] = {"read": page.evaluate(READ), "tables": page.evaluate(TABLES),
-                        "contact": page.evaluate("() => document.getElementById('rigid-contact').textContent")}
+                        "contact": page.evaluate("() => document.getElementById('rigid-contact').textContent"),
+                        "arrows": arrows(page)}
         page.locator("#rigid").scroll_into_view_if_needed()
         page.screenshot(path=os.path.join(out_dir, "rigid-floor-1280.png"))
 

@@ -309,6 +309,40 @@ fn browser_rigid_floor_names_the_contact() {
     not(has_browser),
     ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
 )]
+fn browser_rigid_arrows_start_at_the_disks_edge() {
+    // The sphere on the floor above: v1 = (7, -1) before and (5, 1) after (derived there). The
+    // arrows share one scale, k = 120 / max |v| = 120 / sqrt(50) viewBox units per velocity
+    // unit, and start at the disk's edge along their velocity (screen y down: the direction
+    // (vx, -vy) / |v|): from = centre + r u, tip = from + k v. Coordinates are drawn to 0.01.
+    let a = &run()["floor"]["arrows"];
+    let at = |v: &Value| [f(&v[0]), f(&v[1])];
+    let (c, r) = (at(&a["centre"]), f(&a["r"]));
+    assert!(r > 10.0, "the ball is drawn as a disk: {a}");
+    let k = 120.0 / 50f64.sqrt();
+    for (name, v) in [("v1", [7.0, -1.0]), ("v1_fin", [5.0, 1.0])] {
+        let speed = f64::hypot(v[0], v[1]);
+        let u = [v[0] / speed, -v[1] / speed];
+        let (from, tip) = (at(&a[name]["from"]), at(&a[name]["tip"]));
+        for j in 0..2 {
+            let edge = c[j] + r * u[j];
+            assert!(
+                (from[j] - edge).abs() <= 0.02,
+                "{name} starts at {from:?}, not at the edge {edge}: {a}"
+            );
+            let end = from[j] + k * speed * u[j];
+            assert!(
+                (tip[j] - end).abs() <= 0.03,
+                "{name} ends at {tip:?}, not {end}: {a}"
+            );
+        }
+    }
+}
+
+#[test]
+#[cfg_attr(
+    not(has_browser),
+    ignore = "needs Chromium and Playwright for Python (.ci/run installs them)"
+)]
 fn browser_rigid_extreme_case_draws_finite_and_bad_input_greys() {
     let r = run();
     let x = &r["extreme"];

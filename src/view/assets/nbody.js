@@ -191,9 +191,10 @@
   }
 
   function drawNbNumbers(p) {
+    fillBox("nball-numbers", (box) => nbNumbers(box, p));
+  }
+  function nbNumbers(box, p) {
     const s = nbState;
-    const box = $("nball-numbers");
-    clear(box);
     const cell = (x) => (typeof x === "number" ? num(x) : String(x));
     const pair = (v) => "(" + cell(v[0]) + ", " + cell(v[1]) + ")";
     const unit = s.units ? " (" + s.units.velocity + ")" : "";

@@ -89,6 +89,35 @@
     box.appendChild(t);
   }
 
+  // The element `id` drawn again by `draw(box)`: into a detached box, whose text is copied into
+  // the live one where both hold the same elements (a table of numbers during a drag: only its
+  // values change, and the browser has no new element to style), else its children replace
+  // the live one's.
+  function fillBox(id, draw) {
+    const box = document.createElement("div");
+    draw(box);
+    const live = $(id);
+    if (!sameText(live, box)) live.replaceChildren(...box.childNodes);
+  }
+  // Copies the text of `fresh` into `live` node by node while their elements and attributes
+  // are the same; false where they differ.
+  function sameText(live, fresh) {
+    const a = live.childNodes, b = fresh.childNodes;
+    if (a.length !== b.length) return false;
+    for (let i = 0; i < a.length; i++) {
+      const p = a[i], q = b[i];
+      if (p.nodeType !== q.nodeType || p.nodeName !== q.nodeName) return false;
+      if (p.nodeType === Node.TEXT_NODE) {
+        if (p.data !== q.data) p.data = q.data;
+        continue;
+      }
+      if (p.nodeType !== Node.ELEMENT_NODE || p.attributes.length !== q.attributes.length) return false;
+      for (const at of q.attributes) if (p.getAttribute(at.name) !== at.value) return false;
+      if (!sameText(p, q)) return false;
+    }
+    return true;
+  }
+
   // About `n` round ticks from lo to hi.
   // Spans are taken by halves (hi/2 - lo/2): a box from -1e308 to 1e308 is 2e308 wide, which
   // binary64 cannot hold (the valid case M 1, 1e-308; V 0, 1e308 draws such a box).
@@ -272,12 +301,15 @@
   // The boxes of the texts already in `svg` (axis names) that labels must not cover.
   const boxesOf = (svg) => [...svg.querySelectorAll("text.label")].map(textBox);
 
-  // A drag redraws at each frame only what is in sight: a picture or table off screen (the
+  // A drag redraws at each frame only what it moves in sight: a picture or table off screen (the
   // tables under the velocity plane, the rail, Space vs Space and the bars below it) waits, and
   // is drawn when it comes into view or when the drag ends (`drawWaiting`), so that the browser
   // styles, lays out and paints only what the drag changes on screen. `drawSeen(node, draw,
-  // later)` draws now unless `later` (a drag) and `node` is off screen; a later call's drawing
-  // replaces a waiting one (each draws the whole node from the last answer).
+  // later, soon)` draws now unless `later` (a drag) and `node` is off screen; with `soon` too
+  // (a part the pointer does not move: the tables, the bars beside a dragged car), a node in
+  // sight is drawn after the frame, once the page is idle (`requestIdleCallback`), so that the
+  // frame that follows the pointer draws only what it drags. A later call's drawing replaces a
+  // waiting one (each draws the whole node from the last answer).
   const offScreen = new Set();
   const waiting = new Map();
   const watched = new WeakSet();
@@ -289,9 +321,21 @@
       if (draw) { waiting.delete(e.target); draw(); }
     }
   }, { rootMargin: "100px" }) : null;
-  function drawSeen(node, draw, later) {
+  const whenIdle = typeof requestIdleCallback === "function" ? (f) => requestIdleCallback(f, { timeout: 100 }) : (f) => setTimeout(f, 30);
+  let idleQueued = false;
+  function drawSeen(node, draw, later, soon) {
     if (sight && !watched.has(node)) { watched.add(node); sight.observe(node); }
-    if (later && offScreen.has(node)) { waiting.set(node, draw); return; }
+    if (later && (soon || offScreen.has(node))) {
+      waiting.set(node, draw);
+      if (!offScreen.has(node) && !idleQueued) {
+        idleQueued = true;
+        whenIdle(() => {
+          idleQueued = false;
+          for (const [n, d] of [...waiting]) if (!offScreen.has(n)) { waiting.delete(n); d(); }
+        });
+      }
+      return;
+    }
     waiting.delete(node);
     draw();
   }
@@ -411,6 +455,18 @@
     if (opts.under) opts.under(g, X, Y);
     // The points and their coordinates (the IN-FIN chord lies on the momentum line).
     const labels = el(svg, "g", {});
+    // An axis's name that IN, COM or FIN would cover (a point at the end of an axis: IN on the
+    // V1 axis at the ellipse's edge) goes to the other side of its axis line.
+    const dots = [p.in, p.com, p.fin].map((v) => [X(v[0]), Y(v[1])]);
+    const names = svg.querySelectorAll(":scope > text.label[font-style=italic]");
+    names.forEach((t, i) => {
+      if (!t.dataset.x) Object.assign(t.dataset, { x: t.getAttribute("x"), y: t.getAttribute("y"), anchor: t.getAttribute("text-anchor") });
+      t.setAttribute("x", t.dataset.x); t.setAttribute("y", t.dataset.y); t.setAttribute("text-anchor", t.dataset.anchor);
+      const b = textBox(t);
+      if (!dots.some(([x, y]) => x + 9 > b.x && x - 9 < b.x + b.width && y + 9 > b.y && y - 9 < b.y + b.height)) return;
+      if (i === 0) t.setAttribute("y", r2(Number(t.dataset.y) + 12 + 12.5 * kOf(svg)));
+      else { t.setAttribute("x", r2(Number(t.dataset.x) - 14)); t.setAttribute("text-anchor", "end"); }
+    });
     // Labels beside their points, moved down a line where they would overlap another or an
     // axis name.
     const placed = boxesOf(svg);

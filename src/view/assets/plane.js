@@ -60,10 +60,12 @@
     const a = planeAnswer;
     planeState = JSON.parse(a.state);
     drawPucks(a.picture);
-    drawMomentum(a.picture);
-    drawNormalParts(a.picture);
-    drawPlaneNumbers(a.picture);
-    drawPlaneBars(a.picture, planeState);
+    // During a drag, what the pointer does not move is drawn after the frame (or once in sight).
+    const later = pucks.dragging >= 0, p = a.picture, s = planeState;
+    drawSeen($("momentum-svg"), () => drawMomentum(p), later, true);
+    drawSeen($("normal-svg"), () => drawNormalParts(p), later, true);
+    drawSeen($("plane-numbers"), () => drawPlaneNumbers(p), later, true);
+    drawSeen($("plane-bars-svg"), () => drawPlaneBars(p, s), later, true);
     syncPlaneSliders(a.picture);
     if (pucks.dragging < 0) sayLater("plane-said", planeSentence);
     $("plane-state").textContent = a.state;
@@ -320,9 +322,10 @@
   }
 
   function drawPlaneNumbers(p) {
+    fillBox("plane-numbers", (box) => planeNumbers(box, p));
+  }
+  function planeNumbers(box, p) {
     const s = planeState;
-    const box = $("plane-numbers");
-    clear(box);
     const cell = (x) => (typeof x === "number" ? num(x) : String(x));
     const pair = (v) => "(" + cell(v[0]) + ", " + cell(v[1]) + ")";
     const polar = (speed, angle) => (speed === 0 ? "0" : num(speed) + (angle === null || angle === undefined ? "" : " @ " + num(angle) + "\u00b0"));
@@ -483,6 +486,7 @@
         pucks.dragging = -1;
         svg.classList.remove("dragging");
       }
+      drawWaiting();
       say("plane-said", planeSentence());
       // Rescaled once the drag ends if an arrow left the picture.
       if (!pucksFit(pucks.map, planeAnswer.picture)) drawPucks(planeAnswer.picture);

@@ -20,7 +20,7 @@
   };
   let rigidAnswer = data.answers.rigid; // the last good answer
   // The picture's map (kept while a handle is dragged), what is dragged ("v1", "hit" or null).
-  const rigidView = { map: null, keep: false, dragging: null, timings: [] };
+  const rigidView = { map: null, keep: false, dragging: null, sliding: false, timings: [] };
   view.rigidTimings = rigidView.timings;
 
   function rigidRequest() {
@@ -46,10 +46,13 @@
   }
 
   function renderRigid() {
-    const a = rigidAnswer;
-    drawRigid(a.picture);
-    drawRigidNumbers(a.picture);
-    drawRigidPlane(a.picture);
+    const a = rigidAnswer, p = a.picture;
+    drawRigid(p);
+    // During a drag (a handle, or a slider until it is let go), the tables and the velocity
+    // plane along n are drawn after the frame, or once in sight.
+    const later = !!rigidView.dragging || rigidView.sliding;
+    drawSeen($("rigid-numbers"), () => drawRigidNumbers(p), later, true);
+    drawSeen($("rigid-normal-figure"), () => drawRigidPlane(p), later, true);
     syncRigidSliders(a.picture);
     $("rigid-state").textContent = a.state;
     $("rigid-command").textContent = a.command;
@@ -64,6 +67,27 @@
     return 0;
   }
   const immovable = (b) => b.kind === "floor" || b.kind === "wall" || b.kind === "ceiling";
+  const round = (b) => b.kind === "disk" || b.kind === "ring" || b.kind === "sphere" || b.kind === "shell";
+  // A round body's radius on screen at map `m` (as its outline is drawn), else 0.
+  const drawnRadius = (b, m) => (round(b) ? Math.min(b.sizes[0] * m.s, 2000) : 0);
+
+  // A body's velocity arrow `v` on screen at map `m`: from its centre, or from a round body's
+  // edge in the direction of `v` (from the centre it would run inside the outline), as the
+  // N-body panel draws a slow puck's; its length `k |v|` either way. Returns [from, tip].
+  function velocityArrow(m, b, v) {
+    const c = [m.X(b.position[0]), m.Y(b.position[1])];
+    const d = [m.k * v[0], -m.k * v[1]], len = Math.hypot(d[0], d[1]), r = drawnRadius(b, m);
+    const from = len > 0 && r > 0 ? [c[0] + d[0] / len * r, c[1] + d[1] / len * r] : c;
+    return [from, [from[0] + d[0], from[1] + d[1]]];
+  }
+  // The velocity whose arrow `velocityArrow` draws with its tip at the screen point `q` (a
+  // round body's: along the centre to `q`, as long as `q` is beyond the edge).
+  function arrowVelocity(m, b, q) {
+    const c = [m.X(b.position[0]), m.Y(b.position[1])];
+    const w = [q[0] - c[0], q[1] - c[1]], dist = Math.hypot(w[0], w[1]), r = drawnRadius(b, m);
+    const f = r > 0 && dist > 0 ? Math.max(0, dist - r) / dist : 1;
+    return [f * w[0] / m.k, -f * w[1] / m.k];
+  }
 
   // World to screen: the bodies and the contact fitted in the picture (spans taken by halves:
   // sizes near the largest double do not overflow), and the one scale `k` of every velocity
@@ -130,7 +154,7 @@
     // Screen units per unit of length (the tests read a drag back with it).
     view.rigidScale = rigidView.map.s;
     const m = rigidView.map;
-    const { X, Y, k } = m;
+    const { X, Y } = m;
     const S = (q) => [X(q[0]), Y(q[1])];
     const colours = ["var(--body1)", "var(--body2)"];
     const g = el(svg, "g", {});
@@ -172,14 +196,15 @@
     const placed = [];
     placeText(labels, placed, { x: r2(tipN[0] + 4), y: r2(tipN[1] + 14), class: "label", fill: "#374151" }, "n");
     placeText(labels, placed, { x: r2(tipT[0] + 4), y: r2(tipT[1] - 4), class: "label", fill: "#374151" }, "t");
-    // Velocity arrows from each centre (solid before, dashed after) and spin arcs.
+    // Velocity arrows (solid before, dashed after) from each centre, or a round body's edge,
+    // and spin arcs.
     const sub = ["\u2081", "\u2082"];
     p.bodies.forEach((b, i) => {
       if (immovable(b)) return;
       const q = S(b.position);
-      const tip = (v) => [q[0] + k * v[0], q[1] - k * v[1]];
-      arrow(g, q, tip(b.v_in), colours[i], { id: "rigid-v" + (i + 1) });
-      arrow(g, q, tip(b.v_fin), colours[i], { id: "rigid-v" + (i + 1) + "-fin", dash: "6 4" });
+      const tip = (v) => velocityArrow(m, b, v)[1];
+      arrow(g, ...velocityArrow(m, b, b.v_in), colours[i], { id: "rigid-v" + (i + 1) });
+      arrow(g, ...velocityArrow(m, b, b.v_fin), colours[i], { id: "rigid-v" + (i + 1) + "-fin", dash: "6 4" });
       const r = b.kind === "point" ? 16 : Math.max(16, Math.min(60, halfHeight(b) * m.s * (b.kind === "rod" ? 0.25 : 0.6)));
       spinArc(g, q, r, b.omega_in, m.wmax, colours[i], null, "rigid-spin" + (i + 1));
       spinArc(g, q, r + 8, b.omega_fin, m.wmax, colours[i], "5 3", "rigid-spin" + (i + 1) + "-fin");
@@ -190,16 +215,17 @@
       if (b.v_fin[0] !== 0 || b.v_fin[1] !== 0) placeText(labels, placed, { x: r2(tip(b.v_fin)[0] + 6), y: r2(tip(b.v_fin)[1] + 14), class: "label", fill: colours[i], "paint-order": "stroke", stroke: "#fff", "stroke-width": 4 }, "v" + sub[i] + "\u2032");
     });
     // The handles: v1's tip, and the hit point on a movable target.
-    const b1 = p.bodies[0], q1 = S(b1.position);
-    el(svg, "circle", { id: "rigid-v1-handle", class: "handle", cx: r2(q1[0] + k * b1.v_in[0]), cy: r2(q1[1] - k * b1.v_in[1]), r: 11, fill: "transparent", stroke: "var(--body1)", "stroke-opacity": 0.5 });
+    const tip1 = velocityArrow(m, p.bodies[0], p.bodies[0].v_in)[1];
+    el(svg, "circle", { id: "rigid-v1-handle", class: "handle", cx: r2(tip1[0]), cy: r2(tip1[1]), r: 11, fill: "transparent", stroke: "var(--body1)", "stroke-opacity": 0.5 });
     if (!immovable(p.bodies[1])) el(svg, "circle", { id: "rigid-hit-handle", class: "handle", cx: r2(c[0]), cy: r2(c[1]), r: 12, fill: "transparent", stroke: "var(--com)", "stroke-width": 3 });
     placeText(labels, placed, { x: 12, y: 450, class: "label", fill: "#111827" }, "contact: " + p.contact);
     svg.appendChild(labels);
   }
 
   function drawRigidNumbers(p) {
-    const box = $("rigid-numbers");
-    clear(box);
+    fillBox("rigid-numbers", (box) => rigidNumbers(box, p));
+  }
+  function rigidNumbers(box, p) {
     const para = (html) => { const x = document.createElement("p"); x.innerHTML = html; box.appendChild(x); };
     if (!p) { para("The bodies do not approach at the contact: no collision (see the JSON)."); return; }
     const cell = (x) => (x === null || x === undefined ? "immovable" : num(x));
@@ -306,8 +332,7 @@
       pending = null;
       const m = rigidView.map, p = rigidAnswer.picture;
       if (rigidView.dragging === "v1") {
-        const c = [m.X(p.bodies[0].position[0]), m.Y(p.bodies[0].position[1])];
-        moveV1([(q[0] - c[0]) / m.k, (c[1] - q[1]) / m.k], snapStep({ s: m.k }));
+        moveV1(arrowVelocity(m, p.bodies[0], q), snapStep({ s: m.k }));
       } else {
         moveHit(world(q)[1], snapStep({ s: m.s }));
       }
@@ -318,7 +343,7 @@
       if (ev.pointerType === "touch" && !ev.target.classList.contains("handle")) return;
       const q = rigidPoint(ev);
       const m = rigidView.map, p = rigidAnswer.picture, b = p.bodies[0];
-      const tip = [m.X(b.position[0]) + m.k * b.v_in[0], m.Y(b.position[1]) - m.k * b.v_in[1]];
+      const tip = velocityArrow(m, b, b.v_in)[1];
       const hit = [m.X(p.point[0]), m.Y(p.point[1])];
       const dTip = Math.hypot(tip[0] - q[0], tip[1] - q[1]);
       const dHit = immovable(p.bodies[1]) ? Infinity : Math.hypot(hit[0] - q[0], hit[1] - q[1]);
@@ -368,13 +393,15 @@
     fillRigid(data.setup.rigid);
     const typed = () => { $("r-preset").value = ""; solveRigid(false); };
     for (const f of rigidFields) $("r-" + f).addEventListener("input", typed);
-    $("r-e-range").addEventListener("input", () => { $("r-e").value = String(Number($("r-e-range").value)); solveRigid(true); });
-    $("r-spin-range").addEventListener("input", () => { $("r-spin").value = String(Number($("r-spin-range").value)); solveRigid(true); });
-    $("r-hit_at-range").addEventListener("input", () => {
+    const slide = (f) => { rigidView.sliding = true; try { f(); } finally { rigidView.sliding = false; } };
+    $("r-e-range").addEventListener("input", () => slide(() => { $("r-e").value = String(Number($("r-e-range").value)); solveRigid(true); }));
+    $("r-spin-range").addEventListener("input", () => slide(() => { $("r-spin").value = String(Number($("r-spin-range").value)); solveRigid(true); }));
+    $("r-hit_at-range").addEventListener("input", () => slide(() => {
       const unit = splitUnit($("r-hit_at").value)[1];
       $("r-hit_at").value = String(Number(Number($("r-hit_at-range").value).toPrecision(3))) + (unit && unit !== "end" ? " " + unit : (rigidAnswer.picture && rigidAnswer.picture.velocity_unit ? " m" : ""));
       solveRigid(true);
-    });
+    }));
+    // A slider let go: fitted again and drawn whole.
     for (const id of ["r-e-range", "r-spin-range", "r-hit_at-range"]) $(id).addEventListener("change", () => { rigidView.keep = false; if (rigidAnswer.picture) renderRigid(); });
     $("r-preset").addEventListener("change", () => {
       const p = rigidPresets[$("r-preset").value];

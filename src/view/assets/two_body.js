@@ -48,9 +48,10 @@
   function renderCase() {
     caseState = JSON.parse(caseAnswer.state);
     const p = caseAnswer.picture;
-    // (The plane is off screen while a car is dragged on the rail below it.)
-    drawSeen($("plane-svg"), () => drawPlane(p), plane.dragging);
-    drawSeen($("case-numbers"), () => drawNumbers(p), plane.dragging);
+    // (The plane is off screen while a car is dragged on the rail below it, and drawn after the
+    // frame when it is not; the tables are drawn after the frame during any drag.)
+    drawSeen($("plane-svg"), () => drawPlane(p), plane.dragging, dual.dragging >= 0);
+    drawSeen($("case-numbers"), () => drawNumbers(p), plane.dragging, true);
     drawDual(p);
     $("state").textContent = caseAnswer.state;
     $("command").textContent = caseAnswer.command;
@@ -115,9 +116,10 @@
   }
 
   function drawNumbers(p) {
+    fillBox("case-numbers", (box) => caseNumbers(box, p));
+  }
+  function caseNumbers(box, p) {
     const s = caseState;
-    const box = $("case-numbers");
-    clear(box);
     const table = (caption, head, rows) => {
       const t = document.createElement("table");
       const c = t.createCaption();
@@ -372,31 +374,41 @@
     const reach = dual.dragging >= 0 && dual.reach ? dual.reach
       : plane.dragging && dual.reach ? (need <= dual.reach ? dual.reach : 1.25 * need) : need;
     dual.reach = reach;
-    const tBox = [-1.1, 1.1];
     const x = (i, t) => (t < 0 ? v[i] * t : f[i] * t);
-    const colours = ["var(--body1)", "var(--body2)"];
     const area = { x: 46, y: 16, w: 262, h: 244 };
-    const axesOf = {};
-    // Newton: t across, x up. Minkowski: x across, t up.
-    for (const [id, newton] of [["newton-svg", true], ["minkowski-svg", false]]) {
+    dual.map = { reach, x, map2: null, space: null, axes: {}, area };
+    // Newton's or Minkowski's diagram: with the rail, off screen during a car's drag (drawn
+    // after the frame when in sight); the diagram not chosen is drawn when it is.
+    for (const id of ["newton-svg", "minkowski-svg"]) {
       const svg = $(id);
-      // The diagram not chosen is drawn when it is (a drag draws only what is seen).
       if (svg.closest("[hidden]")) { clear(svg); continue; }
-      const box = newton ? { x0: tBox[0], x1: tBox[1], y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: tBox[0], y1: tBox[1] };
-      const a = axesMap(area, box);
-      chartFrame(svg, reach, plane.dragging, () => frameAxes(svg, area, box, newton ? ["t", "x"] : ["x", "t"]));
-      const at = (t, xx) => (newton ? [a.X(t), a.Y(xx)] : [a.X(xx), a.Y(t)]);
-      for (let i = 0; i < 2; i++) {
-        el(svg, "polyline", { points: pts([at(-1, x(i, -1)), at(0, 0), at(1, x(i, 1))]), fill: "none", stroke: colours[i], "stroke-width": 2.2 });
-      }
-      const g = el(svg, "g", { class: "cursor" });
-      g.dataset.newton = newton ? "1" : "0";
-      axesOf[id] = a;
+      drawSeen(svg, () => drawWorldLines(id, v, f, reach), plane.dragging, dual.dragging >= 0);
     }
-    dual.map = { reach, x, map2: null, space: null, axes: axesOf, area };
-    // Below, off screen during a drag of IN: Space vs Space and the bars.
-    drawSeen($("space-svg").closest(".row"), () => { drawSpace(p, v, f); drawRailBars(p); }, plane.dragging);
+    // Below, off screen during a drag of IN, and drawn after the frame beside a dragged car:
+    // Space vs Space and the bars.
+    drawSeen($("space-svg").closest(".row"), () => { drawSpace(p, v, f); drawRailBars(p); }, plane.dragging, true);
     drawDualTime();
+  }
+
+  // One space-time diagram (`newton-svg`: t across, x up; `minkowski-svg`: x across, t up) of
+  // the world lines through IN and FIN in the box of half-width `reach`, and its time cursor.
+  function drawWorldLines(id, v, f, reach) {
+    const newton = id === "newton-svg";
+    const svg = $(id);
+    const { area, x } = dual.map;
+    const tBox = [-1.1, 1.1];
+    const colours = ["var(--body1)", "var(--body2)"];
+    const box = newton ? { x0: tBox[0], x1: tBox[1], y0: -reach, y1: reach } : { x0: -reach, x1: reach, y0: tBox[0], y1: tBox[1] };
+    const a = axesMap(area, box);
+    chartFrame(svg, reach, plane.dragging, () => frameAxes(svg, area, box, newton ? ["t", "x"] : ["x", "t"]));
+    const at = (t, xx) => (newton ? [a.X(t), a.Y(xx)] : [a.X(xx), a.Y(t)]);
+    for (let i = 0; i < 2; i++) {
+      el(svg, "polyline", { points: pts([at(-1, x(i, -1)), at(0, 0), at(1, x(i, 1))]), fill: "none", stroke: colours[i], "stroke-width": 2.2 });
+    }
+    const g = el(svg, "g", { class: "cursor" });
+    g.dataset.newton = newton ? "1" : "0";
+    dual.map.axes[id] = a;
+    drawCursor(id);
   }
 
   // Space vs Space: x2 against x1, or scaled by M^(1/2); the path from IN to FIN and its dot at
@@ -442,27 +454,33 @@
     const p = dual.picture;
     if (!p) return;
     const t = dual.t;
-    const { reach, x, axes, area } = dual.map;
-    const colours = ["var(--body1)", "var(--body2)"];
-    for (const id of ["newton-svg", "minkowski-svg"]) {
-      const svg = $(id);
-      const g = svg.querySelector(".cursor");
-      if (!g) continue;
-      const newton = g.dataset.newton === "1";
-      clear(g);
-      const { X, Y } = axes[id];
-      if (newton) el(g, "line", { x1: r2(X(t)), x2: r2(X(t)), y1: area.y, y2: area.y + area.h, stroke: "#111827", "stroke-opacity": 0.35 });
-      else el(g, "line", { x1: area.x, x2: area.x + area.w, y1: r2(Y(t)), y2: r2(Y(t)), stroke: "#111827", "stroke-opacity": 0.35 });
-      for (let i = 0; i < 2; i++) {
-        const [cx, cy] = newton ? [X(t), Y(x(i, t))] : [X(x(i, t)), Y(t)];
-        el(g, "circle", { cx: r2(cx), cy: r2(cy), r: 5, fill: colours[i], stroke: "#fff", "stroke-width": 1.5 });
-      }
-    }
-    // (A Space vs Space still waiting to be drawn places its dot then.)
+    const { reach, x } = dual.map;
+    // (A diagram still waiting to be drawn places its cursor then.)
+    for (const id of ["newton-svg", "minkowski-svg"]) if (!waiting.has($(id))) drawCursor(id);
     if (!waiting.has($("space-svg").closest(".row"))) placeSpaceDot();
-    drawSeen($("rail-svg"), () => drawRail(p, t, reach, x), plane.dragging);
+    // The rail: drawn in the frame of a car's drag, after it during a drag of IN.
+    drawSeen($("rail-svg"), () => drawRail(p, t, reach, x), plane.dragging, dual.dragging < 0);
     $("dual-time").value = String(t);
     $("dual-time-out").textContent = "t = " + minus(t.toFixed(3));
+  }
+
+  // The time cursor of a space-time diagram drawn at `dual.t` (a line across, the bodies' dots).
+  function drawCursor(id) {
+    const svg = $(id);
+    const g = svg.querySelector(".cursor");
+    const a = dual.map.axes[id];
+    if (!g || !a) return;
+    const t = dual.t, { x, area } = dual.map;
+    const newton = g.dataset.newton === "1";
+    const colours = ["var(--body1)", "var(--body2)"];
+    clear(g);
+    const { X, Y } = a;
+    if (newton) el(g, "line", { x1: r2(X(t)), x2: r2(X(t)), y1: area.y, y2: area.y + area.h, stroke: "#111827", "stroke-opacity": 0.35 });
+    else el(g, "line", { x1: area.x, x2: area.x + area.w, y1: r2(Y(t)), y2: r2(Y(t)), stroke: "#111827", "stroke-opacity": 0.35 });
+    for (let i = 0; i < 2; i++) {
+      const [cx, cy] = newton ? [X(t), Y(x(i, t))] : [X(x(i, t)), Y(t)];
+      el(g, "circle", { cx: r2(cx), cy: r2(cy), r: 5, fill: colours[i], stroke: "#fff", "stroke-width": 1.5 });
+    }
   }
 
   function drawRail(p, t, reach, x) {
