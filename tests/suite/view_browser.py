@@ -212,6 +212,59 @@ def run_steps(page, steps, errors):
     return out
 
 
+# Two animation frames: the first runs in the next frame's update, before its observers (the
+# page draws a picture that comes into sight in an IntersectionObserver); the second begins the
+# frame after, when that one has been drawn.
+FRAMES = "new Promise(done => requestAnimationFrame(() => requestAnimationFrame(done)))"
+
+# Until the page is still: scrollY and the box of `sel` the same over five frames in a row (a
+# scroll or a fling under way moves one of them every frame). Fails after 5 s.
+STILL = """sel => new Promise((done, fail) => {
+  const t0 = performance.now(), e = document.querySelector(sel);
+  const at = () => { const r = e.getBoundingClientRect(); return [scrollX, scrollY, r.left, r.top, r.width, r.height].join(); };
+  let last = at(), same = 0;
+  const look = () => {
+    const now = at();
+    same = now === last ? same + 1 : 0;
+    last = now;
+    if (same >= 5) done(now);
+    else if (performance.now() - t0 > 5000) fail(new Error(sel + ' still moving after 5 s'));
+    else requestAnimationFrame(look);
+  };
+  requestAnimationFrame(look); })"""
+
+# The pointer moves with the button down that the picture `id` receives, counted (once per
+# picture; with the pointer captured, every move of a drag is the picture's).
+COUNT_MOVES = """id => { window.moves = window.moves || {};
+  if (id in moves) return; moves[id] = 0;
+  document.getElementById(id).addEventListener('pointermove', (ev) => { if (ev.buttons & 1) moves[id]++; }); }"""
+
+# After the n-th counted move of picture `id`: once the page has received it (its handler
+# queues the redraw in the next animation frame), one frame more, which runs after that redraw.
+# Fails if the move has not come in 5 s (a move merged into another, or lost).
+AFTER_MOVE = """([id, n]) => new Promise((done, fail) => {
+  const t0 = performance.now();
+  const look = () => {
+    if (moves[id] >= n) requestAnimationFrame(() => done(moves[id]));
+    else if (performance.now() - t0 > 5000) fail(new Error(id + ': move ' + n + ' did not reach the page in 5 s'));
+    else requestAnimationFrame(look);
+  };
+  look(); })"""
+
+
+class Phases:
+    """Where a driver's time goes: `done(name)` writes to stderr the seconds since the last
+    phase (time.perf_counter), for profiling the drivers (the tests show stderr on failure)."""
+
+    def __init__(self):
+        self.last = time.perf_counter()
+
+    def done(self, name):
+        now = time.perf_counter()
+        print("phase %-28s %7.3f s" % (name, now - self.last), file=sys.stderr)
+        self.last = now
+
+
 def wait_ready(page):
     """Until the page's core is ready. Polled with page.evaluate: Playwright's wait_for_function
     evaluates its predicate with eval() when it has to poll, which the page's
