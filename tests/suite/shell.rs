@@ -208,18 +208,34 @@ fn every_help_example_runs_and_succeeds() {
     for sub in SUBCOMMANDS {
         let examples = help_examples(sub);
         assert!(!examples.is_empty(), "{sub} --help has no examples");
-        for example in examples {
-            // Each in its own folder: what it writes is checked, then removed.
-            let sandbox = Sandbox::new("help");
-            let run = sandbox.run(&example);
-            assert_eq!(run.status, 0, "{example}: {}", run.stderr);
-            let written = std::fs::read_dir(&sandbox.dir).unwrap().count() - 1;
-            assert!(
-                !run.stdout.is_empty() || written > 0,
-                "{example} printed nothing and wrote no file"
-            );
-            all.push(example);
+        all.extend(examples);
+    }
+    // Each in its own folder, on two threads (the CI machine's cores; `scene scenarios/*.toml`
+    // alone takes about 4 s): what it writes is counted, then removed. Checked in order after.
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let runs: Vec<std::sync::Mutex<Option<(Shown, usize)>>> =
+        all.iter().map(|_| std::sync::Mutex::new(None)).collect();
+    std::thread::scope(|scope| {
+        for _ in 0..2 {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    let Some(example) = all.get(i) else { break };
+                    let sandbox = Sandbox::new("help");
+                    let run = sandbox.run(example);
+                    let written = std::fs::read_dir(&sandbox.dir).unwrap().count() - 1;
+                    *runs[i].lock().unwrap() = Some((run, written));
+                }
+            });
         }
+    });
+    for (example, run) in all.iter().zip(runs) {
+        let (run, written) = run.into_inner().unwrap().expect("every example ran");
+        assert_eq!(run.status, 0, "{example}: {}", run.stderr);
+        assert!(
+            !run.stdout.is_empty() || written > 0,
+            "{example} printed nothing and wrote no file"
+        );
     }
     // The man page's EXAMPLES are these, in the same order.
     let page = stdout(&["man"]);

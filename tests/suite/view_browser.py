@@ -9,7 +9,7 @@ plane, and points to probe for colours), `stack` (presets and inputs of the supe
 `steps` (scripted actions and reads, for the hostile review's defects: see run_steps).
 Needs Playwright for Python and a Chromium (COLLIDE_CHROMIUM, default /usr/bin/chromium); the
 browser is launched with a fresh profile and no network use of its own."""
-import json, math, os, struct, sys, tempfile, time, zlib
+import collections, json, math, operator, os, struct, sys, tempfile, time, zlib
 
 from playwright.sync_api import sync_playwright
 
@@ -37,22 +37,45 @@ def png_pixels(data):
     for _ in range(height):
         f, line = raw[i], bytearray(raw[i + 1:i + 1 + stride])
         i += 1 + stride
-        for x in range(stride):
-            a = line[x - channels] if x >= channels else 0
-            b, c = prev[x], prev[x - channels] if x >= channels else 0
-            if f == 1:
-                line[x] = (line[x] + a) & 255
-            elif f == 2:
-                line[x] = (line[x] + b) & 255
-            elif f == 3:
-                line[x] = (line[x] + ((a + b) >> 1)) & 255
-            elif f == 4:
+        # The filters of PNG (RFC 2083, 6.2-6.6), each byte from the one `channels` before it
+        # (a), above it (b) and above that (c), modulo 256. Up needs no byte of its own row, so
+        # it is done at once (map, in C); the others byte by byte.
+        if f == 2:
+            line = bytearray(map(MOD_256.__getitem__, map(operator.add, line, prev)))
+        elif f == 1:
+            for x in range(channels, stride):
+                line[x] = (line[x] + line[x - channels]) & 255
+        elif f == 3:
+            for x in range(stride):
+                a = line[x - channels] if x >= channels else 0
+                line[x] = (line[x] + ((a + prev[x]) >> 1)) & 255
+        elif f == 4:
+            for x in range(stride):
+                if x < channels:
+                    # a = c = 0: the predictor is b.
+                    line[x] = (line[x] + prev[x]) & 255
+                    continue
+                a, b, c = line[x - channels], prev[x], prev[x - channels]
                 p = a + b - c
                 pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
                 line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
         rows.append([tuple(line[x:x + 3]) for x in range(0, stride, channels)])
         prev = line
     return width, height, rows
+
+
+# n modulo 256 for the sums of two bytes.
+MOD_256 = bytes(n & 255 for n in range(511))
+
+
+def colour_counts(rows):
+    """How many pixels there are of each colour, in one pass over the picture."""
+    return collections.Counter(px for row in rows for px in row)
+
+
+def count_near(counts, rgb, tol=40):
+    """How many pixels are `near` `rgb`: `near` asked once per colour of `colour_counts`."""
+    return sum(n for px, n in counts.items() if near(px, rgb, tol))
 
 
 def near(rgb, target, tol=40):
@@ -72,6 +95,17 @@ def nearest(rows, at, rgb):
     return best
 
 
+# Text fields typed in order, in one call: each focused, its value set and its `input` event
+# dispatched (what page.fill does; the two-body case and the plane solve and redraw in that
+# handler, at once). A field not shown, disabled or read-only fails, as page.fill would.
+FILL = """pairs => { for (const [sel, value] of pairs) {
+  const f = document.querySelector(sel);
+  if (!f || f.disabled || f.readOnly || !f.getClientRects().length) throw new Error(sel + ' is not editable');
+  f.focus();
+  f.value = value;
+  f.dispatchEvent(new Event('input', {bubbles: true})); } }"""
+
+
 def drive_plane(page, plan):
     """The plane panel: cases typed, an arrow's tip dragged with the mouse, keys, a screenshot."""
     text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
@@ -80,9 +114,9 @@ def drive_plane(page, plan):
     def set_case(case):
         line = "normal" if case.get("normal") else "disks" if case.get("r1") else "none"
         page.check('input[name="p-line"][value="%s"]' % line)
-        for field in ("m1", "m2", "v1", "v2", "e", "normal", "r1", "r2", "b"):
-            if field in case or field in ("m1", "m2", "v1", "v2", "e"):
-                page.fill("#p-" + field, case.get(field, "elastic" if field == "e" else ""))
+        page.evaluate(FILL, [["#p-" + field, case.get(field, "elastic" if field == "e" else "")]
+                             for field in ("m1", "m2", "v1", "v2", "e", "normal", "r1", "r2", "b")
+                             if field in case or field in ("m1", "m2", "v1", "v2", "e")])
         page.select_option("#p-frame", case.get("frame", "lab"))
         return {"state": text("#plane-state"), "command": text("#plane-command"), "scene": text("#plane-scene"),
                 "error": page.eval_on_selector("#plane-error", "e => e.hidden ? '' : e.textContent")}
@@ -130,7 +164,8 @@ def drive_plane(page, plan):
         png = page.locator("#pucks-svg").screenshot(path=sh["path"])
         w, h, rows = png_pixels(png)
         k = w / m["vb"]
-        counts = {name: sum(1 for row in rows for px in row if near(px, rgb)) for name, rgb in sh["colours"].items()}
+        every = colour_counts(rows)
+        counts = {name: count_near(every, rgb) for name, rgb in sh["colours"].items()}
         probes = []
         for probe in sh["probes"]:
             c = m["c"][probe["body"]]
@@ -141,17 +176,46 @@ def drive_plane(page, plan):
                 r = m["radii"][probe["body"]]
                 at = (c[0] + r * math.cos(a), c[1] - r * math.sin(a))
             probes.append(nearest(rows, (at[0] * k, at[1] * k), sh["colours"][probe["colour"]]))
-        white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
+        white = count_near(every, (255, 255, 255), 8)
         out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes, "white": white,
                              "map": m, "state": seen["state"], "error": seen["error"]}
     return out
+
+
+# What an animation of the two-body case changes every frame: the velocity plane's data (its
+# map and the frame's w, drawn between the two frames during a shift), the state and the dual
+# panel's time.
+SHOWN = """JSON.stringify([document.getElementById('plane-svg').dataset, document.getElementById('state').textContent,
+  collideView.time()])"""
+
+# Until SHOWN is the same over ten frames in a row, or `ms` milliseconds have passed.
+SETTLED = """ms => new Promise(done => {
+  const t0 = performance.now();
+  let last = null, same = 0;
+  const tick = () => {
+    const now = %s;
+    same = now === last ? same + 1 : 0;
+    last = now;
+    if (same >= 10 || performance.now() - t0 >= ms) done([same >= 10, performance.now() - t0]);
+    else requestAnimationFrame(tick);
+  };
+  requestAnimationFrame(tick); })""" % SHOWN
+
+
+def settled(page, ms):
+    """Until the page is still (nothing of SHOWN changed over ten frames: no shift of a frame
+    under way), or `ms` milliseconds have passed, as the fixed wait of `ms` did before."""
+    still, waited = page.evaluate(SETTLED, ms)
+    print("settled: %s after %.0f of %d ms" % ("still" if still else "not still", waited, ms), file=sys.stderr)
 
 
 def run_steps(page, steps, errors):
     """Scripted checks in one page session: each step one action (`fill`, `select`, `check`,
     `uncheck`, `press` [selector, key, times], `drag_tip` {body, by (picture units), steps},
     `drag_in` {by, steps} (IN on the velocity plane), `hover` selector, `wait` milliseconds) and optionally `read` [name, JS function]: what the function returns, with
-    the page errors seen so far, under `name` in the result."""
+    the page errors seen so far, under `name` in the result. A `wait` (the plans wait out the
+    700 ms shift of a frame change) ends when the page is still (`settled`), at most after
+    its milliseconds, as before."""
     out = {}
     for step in steps:
         if "fill" in step:
@@ -190,8 +254,8 @@ def run_steps(page, steps, errors):
         if "drag_in" in step:
             # IN on the velocity plane dragged by `by` picture units, in `steps` moves.
             d = step["drag_in"]
-            page.eval_on_selector("#plane-svg", "s => s.scrollIntoView({block: 'center', behavior: 'instant'})")
-            page.wait_for_timeout(100)
+            page.eval_on_selector("#plane-svg", "s => { s.scrollIntoView({block: 'center', behavior: 'instant'}); return %s; }"
+                                  % FRAMES)
             at = page.eval_on_selector("#plane-svg", """s => { const r = s.getBoundingClientRect(),
                 c = s.querySelector('#point-in'), k = r.width / s.viewBox.baseVal.width;
                 return [r.left + +c.getAttribute('cx') * k, r.top + +c.getAttribute('cy') * k, k]; }""")
@@ -205,11 +269,64 @@ def run_steps(page, steps, errors):
         if "hover" in step:
             page.hover(step["hover"])
         if "wait" in step:
-            page.wait_for_timeout(step["wait"])
+            settled(page, step["wait"])
         if "read" in step:
             name, js = step["read"]
             out[name] = {"value": page.evaluate(js), "errors": list(errors)}
     return out
+
+
+# Two animation frames: the first runs in the next frame's update, before its observers (the
+# page draws a picture that comes into sight in an IntersectionObserver); the second begins the
+# frame after, when that one has been drawn.
+FRAMES = "new Promise(done => requestAnimationFrame(() => requestAnimationFrame(done)))"
+
+# Until the page is still: scrollY and the box of `sel` the same over five frames in a row (a
+# scroll or a fling under way moves one of them every frame). Fails after 5 s.
+STILL = """sel => new Promise((done, fail) => {
+  const t0 = performance.now(), e = document.querySelector(sel);
+  const at = () => { const r = e.getBoundingClientRect(); return [scrollX, scrollY, r.left, r.top, r.width, r.height].join(); };
+  let last = at(), same = 0;
+  const look = () => {
+    const now = at();
+    same = now === last ? same + 1 : 0;
+    last = now;
+    if (same >= 5) done(now);
+    else if (performance.now() - t0 > 5000) fail(new Error(sel + ' still moving after 5 s'));
+    else requestAnimationFrame(look);
+  };
+  requestAnimationFrame(look); })"""
+
+# The pointer moves with the button down that the picture `id` receives, counted (once per
+# picture; with the pointer captured, every move of a drag is the picture's).
+COUNT_MOVES = """id => { window.moves = window.moves || {};
+  if (id in moves) return; moves[id] = 0;
+  document.getElementById(id).addEventListener('pointermove', (ev) => { if (ev.buttons & 1) moves[id]++; }); }"""
+
+# After the n-th counted move of picture `id`: once the page has received it (its handler
+# queues the redraw in the next animation frame), one frame more, which runs after that redraw.
+# Fails if the move has not come in 5 s (a move merged into another, or lost).
+AFTER_MOVE = """([id, n]) => new Promise((done, fail) => {
+  const t0 = performance.now();
+  const look = () => {
+    if (moves[id] >= n) requestAnimationFrame(() => done(moves[id]));
+    else if (performance.now() - t0 > 5000) fail(new Error(id + ': move ' + n + ' did not reach the page in 5 s'));
+    else requestAnimationFrame(look);
+  };
+  look(); })"""
+
+
+class Phases:
+    """Where a driver's time goes: `done(name)` writes to stderr the seconds since the last
+    phase (time.perf_counter), for profiling the drivers (the tests show stderr on failure)."""
+
+    def __init__(self):
+        self.last = time.perf_counter()
+
+    def done(self, name):
+        now = time.perf_counter()
+        print("phase %-28s %7.3f s" % (name, now - self.last), file=sys.stderr)
+        self.last = now
 
 
 def wait_ready(page):
@@ -230,6 +347,7 @@ def main():
     chromium = os.environ.get("COLLIDE_CHROMIUM", "/usr/bin/chromium")
     out = {"requests": [], "console": [], "errors": []}
     started = time.time()
+    phases = Phases()
     with sync_playwright() as p, tempfile.TemporaryDirectory() as profile:
         ctx = p.chromium.launch_persistent_context(
             profile, executable_path=chromium, headless=True, args=CHROMIUM_FLAGS,
@@ -241,15 +359,16 @@ def main():
         page.goto("file://" + os.path.abspath(page_path))
         wait_ready(page)
         out["ready_s"] = time.time() - started
+        phases.done("launch and ready")
         text = lambda sel: page.eval_on_selector(sel, "e => e.textContent")
 
         def set_case(case):
-            for field in ("inertia", "m1", "m2", "v1", "v2", "e"):
-                page.fill("#" + field, case.get(field, ""))
+            page.evaluate(FILL, [["#" + field, case.get(field, "")] for field in ("inertia", "m1", "m2", "v1", "v2", "e")])
             return {"state": text("#state"), "command": text("#command"), "scene": text("#scene"),
                     "error": page.eval_on_selector("#case-error", "e => e.hidden ? '' : e.textContent")}
 
         out["cases"] = [set_case(c) for c in plan.get("cases", [])]
+        phases.done("cases")
 
         def plane_map():
             return page.eval_on_selector("#plane-svg", """s => { const r = s.getBoundingClientRect();
@@ -272,11 +391,13 @@ def main():
             page.mouse.up()
             out["drag"] = {"before": before["state"], "after": text("#state"), "map": m,
                            "timings": page.evaluate("collideView.timings")}
+            phases.done("drag")
         if "keys" in plan:
             page.focus("#plane-svg")
             for key in plan["keys"]:
                 page.keyboard.press(key)
             out["keys"] = {"state": text("#state"), "map": plane_map()}
+            phases.done("keys")
         if "frame" in plan:
             set_case(plan["frame"]["case"])
             out["frame"] = {"w": page.evaluate("""name => new Promise(done => {
@@ -287,12 +408,14 @@ def main():
                 requestAnimationFrame(look); })""", plan["frame"]["to"]),
                 "state": text("#state"), "command": text("#command")}
             page.check('input[name="frame"][value="lab"]')
-            page.wait_for_timeout(900)
+            settled(page, 900)
+            phases.done("frame")
         if "reverse" in plan:
             set_case(plan["reverse"])
             page.check("#reverse")
             out["reverse"] = {"state": text("#state"), "command": text("#command")}
             page.uncheck("#reverse")
+            phases.done("reverse")
         if "screenshot" in plan:
             sh = plan["screenshot"]
             set_case(sh["case"])
@@ -303,17 +426,18 @@ def main():
             page.screenshot(path=sh["page"], full_page=True)
             w, h, rows = png_pixels(png)
             k = w / m["vb"]
-            counts, colours = {}, set()
+            counts, colours, every = {}, set(), colour_counts(rows)
             for name, rgb in sh["colours"].items():
-                counts[name] = sum(1 for row in rows for px in row if near(px, rgb))
+                counts[name] = count_near(every, rgb)
             for row in rows[::3]:
                 for px in row[::3]:
                     colours.add(px)
             probes = [nearest(rows, ((m["ox"] + m["s"] * probe["at"][0]) * k, (m["oy"] - m["s"] * probe["at"][1]) * k),
                               sh["colours"][probe["colour"]]) for probe in sh["probes"]]
-            white = sum(1 for row in rows for px in row if near(px, (255, 255, 255), 8))
+            white = count_near(every, (255, 255, 255), 8)
             out["screenshot"] = {"width": w, "height": h, "counts": counts, "probes": probes,
                                  "colours": len(colours), "white": white}
+            phases.done("screenshot")
         if "stack" in plan:
             out["stack"] = []
             for step in plan["stack"]:
@@ -327,10 +451,13 @@ def main():
                                      "state": text("#track-state"), "command": text("#track-command"),
                                      "scene": text("#track-scene"), "numbers": text("#stack-numbers"),
                                      "error": page.eval_on_selector("#track-error", "e => e.hidden ? '' : e.textContent")})
+            phases.done("stack")
         if "plane" in plan:
             out["plane"] = drive_plane(page, plan["plane"])
+            phases.done("plane")
         if "steps" in plan:
             out["steps"] = run_steps(page, plan["steps"], out["errors"])
+            phases.done("steps")
         out["seconds"] = time.time() - started
         ctx.close()
     json.dump(out, sys.stdout, allow_nan=False)

@@ -20,7 +20,7 @@ import json, os, sys, time
 
 from playwright.sync_api import sync_playwright
 
-from view_browser import CHROMIUM_FLAGS, wait_ready
+from view_browser import AFTER_MOVE, CHROMIUM_FLAGS, COUNT_MOVES, FRAMES, STILL, Phases, wait_ready
 PANELS = ["two-body", "dual", "stack", "plane", "shell"]
 
 # The boxes of elements in CSS pixels of the window, and the bar of links' bottom edge.
@@ -93,8 +93,9 @@ def opened(browser, page_path, console, **options):
 
 
 def to(page, sel, block="center"):
-    page.eval_on_selector(sel, "(s, b) => s.scrollIntoView({block: b, behavior: 'instant'})", block)
-    page.wait_for_timeout(60)
+    """`sel` scrolled to at once (`block` of the window), and a frame drawn there."""
+    page.eval_on_selector(sel, "(s, b) => { s.scrollIntoView({block: b, behavior: 'instant'}); return %s; }" % FRAMES,
+                          block)
 
 
 CHARTS = ["plane-svg", "newton-svg", "rail-svg", "space-svg", "tower-svg", "lines-svg", "pucks-svg",
@@ -103,15 +104,20 @@ CHARTS = ["plane-svg", "newton-svg", "rail-svg", "space-svg", "tower-svg", "line
 
 def shots(page, out_dir, tag):
     """The window at the start of each panel, at the velocity plane (with the diagram beside it
-    on a wide screen), and each chart by itself."""
+    on a wide screen), and each chart by itself. No text field has the focus here (the last
+    click or drag left it on a picture or a radio button), so there is no caret to hide: the
+    screenshots skip Playwright's style that hides it (caret="initial"), the same pixels."""
+    assert page.evaluate("!document.activeElement || !document.activeElement.matches('input[type=text], input:not([type]), textarea')"), \
+        "a text field has the focus: its caret would show"
     for part in PANELS:
         to(page, "#" + part, "start")
-        page.screenshot(path=os.path.join(out_dir, "%s-%s.png" % (tag, part)))
+        page.screenshot(path=os.path.join(out_dir, "%s-%s.png" % (tag, part)), caret="initial")
     to(page, "#plane-svg")
-    page.screenshot(path=os.path.join(out_dir, "%s-duo.png" % tag))
+    page.screenshot(path=os.path.join(out_dir, "%s-duo.png" % tag), caret="initial")
     for chart in CHARTS:
         to(page, "#" + chart)
-        page.locator("#" + chart).screenshot(path=os.path.join(out_dir, "%s-chart-%s.png" % (tag, chart)))
+        page.locator("#" + chart).screenshot(path=os.path.join(out_dir, "%s-chart-%s.png" % (tag, chart)),
+                                             caret="initial")
 
 
 def in_at(page):
@@ -137,13 +143,14 @@ def wide(browser, page_path, out_dir, console, w, h):
     out["newton_hidden"] = page.eval_on_selector("#newton-figure", "f => f.hidden")
     page.check('input[name="spacetime"][value="newton"]')
     # IN dragged by the mouse: after each move (and its frame), IN and the Newton diagram.
+    page.evaluate(COUNT_MOVES, "plane-svg")
     x, y, k = in_at(page)
     page.mouse.move(x, y)
     page.mouse.down()
     out["drag"] = []
     for i in range(1, 9):
         page.mouse.move(x - 6 * i, y - 9 * i)
-        page.wait_for_timeout(40)
+        page.evaluate(AFTER_MOVE, ["plane-svg", i])
         s = state(page)
         out["drag"].append({"in": s["in"], "fin": s["fin"], "newton": page.evaluate(NEWTON)})
     page.mouse.up()
@@ -166,10 +173,10 @@ def phone(browser, page_path, out_dir, console):
                 {"x": x0 + (x1 - x0) * i / n, "y": y0 + (y1 - y0) * i / n}]})
             page.wait_for_timeout(16)
         cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
-        page.wait_for_timeout(600)
+        page.evaluate(STILL, "#plane-svg")
 
     to(page, "#plane-svg")
-    page.wait_for_timeout(300)
+    page.evaluate(STILL, "#plane-svg")
     typed = lambda: [page.input_value("#v1"), page.input_value("#v2")]
     # A finger on IN's handle drags IN, and the page stays.
     x, y, k = in_at(page)
@@ -219,14 +226,17 @@ def focus(browser, page_path, console, w, h, mobile):
     return seen
 
 
-def desktop_checks(browser, page_path, console):
+def desktop_checks(browser, page_path, console, phases):
     ctx, page = opened(browser, page_path, console, viewport={"width": 1280, "height": 800}, device_scale_factor=1)
+    phases.done("desktop: open")
     out = {"contrast": page.evaluate(COLOURS)}
+    phases.done("desktop: contrast")
     # The valid extreme case of the brief.
     for f, v in [("m1", "1"), ("m2", "1e-308"), ("v1", "0"), ("v2", "1e308"), ("e", "0")]:
         page.fill("#" + f, v)
     out["extreme"] = {"bad": page.evaluate(NOT_FINITE), "state": page.eval_on_selector("#state", "e => e.textContent"),
                       "error": page.eval_on_selector("#case-error", "e => e.hidden ? '' : e.textContent")}
+    phases.done("desktop: extreme")
     # A drag in km/h.
     for f, v in [("m1", "4"), ("m2", "1"), ("v1", "72 km/h"), ("v2", "10 km/h"), ("e", "elastic")]:
         page.fill("#" + f, v)
@@ -239,6 +249,7 @@ def desktop_checks(browser, page_path, console):
     out["units"] = {"typed": [page.input_value("#v1"), page.input_value("#v2")],
                     "state": page.eval_on_selector("#state", "e => e.textContent"),
                     "error": page.eval_on_selector("#case-error", "e => e.hidden ? '' : e.textContent")}
+    phases.done("desktop: units")
     # A heavy ball on a light one: 1 on 0.01, touching (0.01's top at 1.5, 1's bottom at 1.5).
     for f, v in [("t-masses", "0.01,1"), ("t-sizes", "0.5,1"), ("t-positions", "1.25,2"), ("t-velocities", "0,0")]:
         page.fill("#" + f, v)
@@ -247,6 +258,7 @@ def desktop_checks(browser, page_path, console):
                     "state": page.eval_on_selector("#track-state", "e => e.textContent"),
                     "command": page.eval_on_selector("#track-command", "e => e.textContent"),
                     "error": page.eval_on_selector("#track-error", "e => e.hidden ? '' : e.textContent")}
+    phases.done("desktop: stack")
     # Drag latency: each mouse move's event to the end of the frame that draws it (a timeout
     # queued in the next animation frame runs after that frame's style, layout and paint).
     for f, v in [("v1", "60"), ("v2", "10")]:
@@ -265,6 +277,7 @@ def desktop_checks(browser, page_path, console):
     page.wait_for_timeout(100)
     out["latency"] = page.evaluate("latency")
     ctx.close()
+    phases.done("desktop: latency")
     return out
 
 
@@ -305,14 +318,23 @@ def main():
     chromium = os.environ.get("COLLIDE_CHROMIUM", "/usr/bin/chromium")
     console = []
     started = time.time()
+    phases = Phases()
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path=chromium, headless=True, args=CHROMIUM_FLAGS)
-        out = {"wide": [wide(browser, page_path, out_dir, console, w, h) for w, h in [(1280, 800), (1600, 1000)]],
-               "phone": phone(browser, page_path, out_dir, console),
-               "focus": {"1280x800": focus(browser, page_path, console, 1280, 800, False),
-                         "390x844": focus(browser, page_path, console, 390, 844, True)}}
-        out.update(desktop_checks(browser, page_path, console))
+        phases.done("launch")
+        out = {"wide": []}
+        for w, h in [(1280, 800), (1600, 1000)]:
+            out["wide"].append(wide(browser, page_path, out_dir, console, w, h))
+            phases.done("wide %dx%d" % (w, h))
+        out["phone"] = phone(browser, page_path, out_dir, console)
+        phases.done("phone")
+        out["focus"] = {}
+        for w, h, mobile in [(1280, 800, False), (390, 844, True)]:
+            out["focus"]["%dx%d" % (w, h)] = focus(browser, page_path, console, w, h, mobile)
+            phases.done("focus %dx%d" % (w, h))
+        out.update(desktop_checks(browser, page_path, console, phases))
         out["controls"] = controls(browser, page_path, console)
+        phases.done("controls")
         browser.close()
     out["console"] = console
     out["seconds"] = time.time() - started

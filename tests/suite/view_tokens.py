@@ -7,7 +7,7 @@ back, and whether the panel's error went away. Needs what view_browser.py needs.
 import json, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from view_browser import CHROMIUM_FLAGS, wait_ready  # noqa: E402
+from view_browser import CHROMIUM_FLAGS, Phases, wait_ready  # noqa: E402
 from playwright.sync_api import sync_playwright  # noqa: E402
 
 # Each panel: its text inputs, its error, state and command elements.
@@ -19,11 +19,31 @@ PANELS = {
               "plane-error", "plane-state", "plane-command"),
 }
 
-LOOK = """([panel, error, state, command]) => {
+# One step of a field: the value set as typed (focused, the value put in, its `input` event, then
+# its `change` event: the two-body case and the plane solve on `input`, the stack on `change`;
+# each handler redraws synchronously, so the page is read right after), and what the panel then
+# shows. The pictures are searched for NaN and Infinity node by node (every tag and attribute
+# name, attribute value, text and comment of every SVG: what their outerHTML would hold, without
+# serialising them).
+STEP = """([sel, value, panel, error, state, command]) => {
+    const f = document.querySelector(sel);
+    if (!f || f.disabled || f.readOnly || !f.getClientRects().length) throw new Error(sel + ' is not editable');
+    f.focus();
+    f.value = value;
+    f.dispatchEvent(new Event('input', {bubbles: true}));
+    f.dispatchEvent(new Event('change', {bubbles: true}));
     const p = document.getElementById(panel), e = document.getElementById(error);
-    const svgs = [...document.querySelectorAll('svg')].map((s) => s.outerHTML).join('');
-    return {error: e.hidden ? '' : e.textContent, stale: p.querySelectorAll('.stale').length,
-            svg_bad: (svgs.match(/NaN|Infinity/g) || []).length,
+    const bad = /NaN|Infinity/g, count = (t) => (t.match(bad) || []).length;
+    let svg_bad = 0;
+    for (const s of document.querySelectorAll('svg')) {
+        const walk = document.createTreeWalker(s, NodeFilter.SHOW_ELEMENT | NodeFilter.SHOW_TEXT | NodeFilter.SHOW_COMMENT | NodeFilter.SHOW_CDATA_SECTION);
+        for (let n = s; n; n = walk.nextNode()) {
+            if (n.nodeType !== 1) { svg_bad += count(n.data); continue; }
+            svg_bad += count(n.tagName);
+            for (const a of n.attributes) svg_bad += count(a.name) + count(a.value);
+        }
+    }
+    return {error: e.hidden ? '' : e.textContent, stale: p.querySelectorAll('.stale').length, svg_bad,
             state: document.getElementById(state).textContent,
             command: document.getElementById(command).textContent};
 }"""
@@ -33,6 +53,7 @@ def main():
     page_path, tokens_path = sys.argv[1], sys.argv[2]
     tokens = json.load(open(tokens_path))
     out = {"console": [], "errors": [], "seen": []}
+    phases = Phases()
     with sync_playwright() as p, tempfile.TemporaryDirectory() as profile:
         ctx = p.chromium.launch_persistent_context(
             profile, executable_path=os.environ.get("COLLIDE_CHROMIUM", "/usr/bin/chromium"),
@@ -42,6 +63,7 @@ def main():
         page.on("pageerror", lambda e: out["errors"].append(str(e)))
         page.goto("file://" + os.path.abspath(page_path))
         wait_ready(page)
+        phases.done("launch and ready")
         for panel, (inputs, error, state, command) in PANELS.items():
             for field in inputs:
                 if field == "p-normal":
@@ -49,20 +71,15 @@ def main():
                 sel = "#" + field
                 own = page.eval_on_selector(sel, "e => e.value")
                 for token in tokens:
-                    page.fill(sel, token)
-                    page.dispatch_event(sel, "change")
-                    page.wait_for_timeout(30)
-                    seen = page.evaluate(LOOK, [panel, error, state, command])
+                    seen = page.evaluate(STEP, [sel, token, panel, error, state, command])
                     seen.update({"field": field, "token": token,
                                  "errors": len(out["errors"]),
                                  "console_errors": sum(1 for c in out["console"] if c[0] == "error")})
-                    page.fill(sel, own)
-                    page.dispatch_event(sel, "change")
-                    page.wait_for_timeout(30)
-                    back = page.evaluate(LOOK, [panel, error, state, command])
+                    back = page.evaluate(STEP, [sel, own, panel, error, state, command])
                     seen["back"] = {"error": back["error"], "stale": back["stale"],
                                     "svg_bad": back["svg_bad"]}
                     out["seen"].append(seen)
+            phases.done(panel)
         ctx.close()
     json.dump(out, sys.stdout, allow_nan=False)
 
