@@ -48,7 +48,8 @@ mod view {
         // e = 1, FIN = (40, 90) (physics.md). Each body's 1/2 M_i V_i^2, computed as
         // P_i (V_i / 2): IN (4 60 30, 1 10 5) = (7200, 50), FIN (4 40 20, 1 90 45) = (3200,
         // 4050); every product an integer below 2^53, exact in binary64, so compared exactly.
-        // The mutant `P_i / (V_i / 2)` gives (8, 2) and (8, 2/45).
+        // The mutant `P_1 / (V_1 / 2)` (body 1's product) gives 240 / 30 = 8 before and 160 /
+        // 20 = 8 after.
         let a = ask(
             json!({"op": "solve", "m1": "4", "m2": "1", "v1": "60", "v2": "10",
                            "e": "1"}),
