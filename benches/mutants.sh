@@ -19,6 +19,11 @@
 #                                            # the baseline too: space's took 20 s on loaded cores)
 #   MUTANTS_AGAIN=target/mutants/contact-0/mutants.out MUTANTS_SHARD=0/16 benches/mutants.sh contact
 #                                            # again what that run missed (after new tests)
+#   MUTANTS_PER_FILE=2 benches/mutants.sh rigid   # 2 of each file's mutants, spread over its
+#                                            # listing (results in target/mutants/rigid-each2)
+#   MUTANTS_FILES="src/space/balls.rs src/space/typed.rs" MUTANTS_PER_FILE=2 \
+#       benches/mutants.sh space             # those files instead of the area's (its tests)
+#   MUTANTS_BASELINE=skip ...                # no unmutated run first (the tree passed before)
 #
 # view skips the tests of the committed WebAssembly module against its sources (the SHA-256 of
 # each, and the ignored rebuild): they fail on every mutant of the files the module is built
@@ -43,7 +48,7 @@ declare -A FILES=(
     [units]="src/values/units.rs"
     [motion]="src/track/motion.rs"
     [columns]="src/table/columns.rs"
-    [rigid]="src/rigid/*.rs"
+    [rigid]="src/rigid/*.rs src/rigid/slip/*.rs"
     [impact]="src/rigid/impact.rs"
     [space]="src/space/*.rs"
     [solve]="src/space/solve.rs"
@@ -55,7 +60,7 @@ declare -A TESTS=(
     [units]="units homework:: problems:: cli:: properties::hostile properties::parsers --skip view_"
     [motion]="track::"
     [columns]="tables:: table::"
-    [rigid]="rigid homework"
+    [rigid]="rigid homework fin_known::"
     [impact]="rigid"
     [space]="space:: plane frames:: metamorphic:: one_answer:: knowns::"
     [solve]="space:: plane knowns:: asked::"
@@ -79,10 +84,10 @@ cd "$tree"
 # A run stopped half-way leaves a mutant's build behind, newer than the restored source: make
 # the sources newer so that collide is rebuilt from them.
 find src tests -name '*.rs' -exec touch {} +
-# A unified diff that replaces each line named by the mutants of missed.txt and timeout.txt
-# in folder $1 ("src/x.rs:LINE:COL: ...") by itself: the lines for --in-diff.
+# A unified diff that replaces each line named by the mutants read from stdin
+# ("src/x.rs:LINE:COL: ...") by itself: the lines for --in-diff.
 lines_diff() {
-    cat "$1/missed.txt" "$1/timeout.txt" | cut -d: -f1,2 | sort -t: -k1,1 -k2,2n -u |
+    cut -d: -f1,2 | sort -t: -k1,1 -k2,2n -u |
         while IFS=: read -r file line; do
             [ "$file" = "${last:-}" ] || printf -- '--- a/%s\n+++ b/%s\n' "$file" "$file"
             last=$file
@@ -93,8 +98,13 @@ lines_diff() {
 for area in "${areas[@]}"; do
     [ -n "${FILES[$area]:-}" ] || { echo "unknown area '$area': expected ${!FILES[*]}" >&2; exit 2; }
     out="$here/target/mutants/$area${MUTANTS_SHARD:+-${MUTANTS_SHARD%/*}}"
+    out="$out${MUTANTS_PER_FILE:+-each$MUTANTS_PER_FILE}"
     mkdir -p "$out"
-    extra=()
+    # The files to mutate (globs, not expanded by the shell).
+    read -ra globs <<< "${MUTANTS_FILES:-${FILES[$area]}}"
+    files=()
+    for glob in "${globs[@]}"; do files+=(--file "$glob"); done
+    extra=(--baseline "${MUTANTS_BASELINE:-run}")
     # (MUTANTS_SHARD with MUTANTS_AGAIN names the earlier run's folder only: no shard of the few.)
     [ -n "${MUTANTS_SHARD:-}" ] && [ -z "${MUTANTS_AGAIN:-}" ] &&
         extra+=(--shard "$MUTANTS_SHARD" --sharding "${MUTANTS_SHARDING:-slice}")
@@ -104,21 +114,34 @@ for area in "${areas[@]}"; do
         [[ $MUTANTS_AGAIN = /* ]] || MUTANTS_AGAIN=$here/$MUTANTS_AGAIN
         out="$out-again"
         mkdir -p "$out"
+        cat "$MUTANTS_AGAIN/missed.txt" "$MUTANTS_AGAIN/timeout.txt" > "$out/chosen.txt"
+    elif [ -n "${MUTANTS_PER_FILE:-}" ]; then
+        # Of each file's c mutants in the listing's order, the middle one of each of N equal
+        # parts: numbers 1 + floor((2i + 1) c / 2N), i < N (N = 1: the middle one).
+        cargo mutants --list "${files[@]}" | awk -F: -v n="$MUTANTS_PER_FILE" '
+            !($1 in c) { order[++files] = $1 }
+            { m[$1, ++c[$1]] = $0 }
+            END { for (j = 1; j <= files; j++) { f = order[j]
+                for (i = 0; i < n && i < c[f]; i++)
+                    print m[f, 1 + int((2 * i + 1) * c[f] / (2 * n))] } }' \
+            > "$out/chosen.txt"
+    fi
+    if [ -n "${MUTANTS_AGAIN:-}${MUTANTS_PER_FILE:-}" ]; then
+        # Nothing chosen (no --re would mean every mutant).
+        [ -s "$out/chosen.txt" ] || { echo "$area: no mutant chosen"; continue; }
         while IFS= read -r name; do
             extra+=(--re "^$(printf '%s' "$name" | sed 's/[][\\.*^$()+?{}|]/\\&/g')\$")
-        done < <(cat "$MUTANTS_AGAIN/missed.txt" "$MUTANTS_AGAIN/timeout.txt")
-        # Nothing to do again (no --re would mean every mutant).
-        [ ${#extra[@]} -gt 0 ] || { echo "$area: nothing missed in $MUTANTS_AGAIN"; continue; }
+        done < "$out/chosen.txt"
         # cargo-mutants 27's --re does not filter its "delete field ... from struct ...
         # expression" mutants (a --list with a --re that matches nothing still lists them all):
         # a diff that touches only the named lines (each line replaced by itself), given as
         # --in-diff, leaves the named mutants and what else is on their lines.
-        lines_diff "$MUTANTS_AGAIN" > "$out/again.diff"
-        extra+=(--in-diff "$out/again.diff")
+        lines_diff < "$out/chosen.txt" > "$out/chosen.diff"
+        extra+=(--in-diff "$out/chosen.diff")
     fi
     # shellcheck disable=SC2086
     cargo mutants --in-place --no-shuffle --profile "${MUTANTS_PROFILE:-mutation}" "${extra[@]}" \
-        --file "${FILES[$area]}" --output "$out" --timeout "${MUTANTS_TIMEOUT:-20}" \
+        "${files[@]}" --output "$out" --timeout "${MUTANTS_TIMEOUT:-20}" \
         --cargo-arg=--lib --cargo-arg=--test --cargo-arg=suite \
         -- -- ${TESTS[$area]} || status=$?
     # cargo-mutants exits 2 when a mutant was missed and 3 on timeouts: results, not failures.

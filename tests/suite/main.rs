@@ -28,6 +28,7 @@ mod lecture;
 mod metamorphic;
 mod metamorphic_track;
 mod mutants_engine;
+mod mutants_files;
 mod mutants_rigid;
 mod mutants_space;
 mod mutants_view;
