@@ -5,7 +5,89 @@
 //! (`mutants_files::space::...` runs with `space::`).
 
 mod space {
+    use collide::space::lcp::lemke;
+    use collide::values::rational::Q;
+    use num_traits::Signed;
+
     use crate::common::solve_refused;
+
+    /// `A x = b` by Gaussian elimination in rationals; `None` when `A` is singular.
+    fn solve_exact(mut a: Vec<Vec<Q>>, mut b: Vec<Q>) -> Option<Vec<Q>> {
+        let n = b.len();
+        for c in 0..n {
+            let p = (c..n).find(|&r| a[r][c] != Q::ZERO)?;
+            a.swap(c, p);
+            b.swap(c, p);
+            let (pivot_row, pivot_b) = (a[c].clone(), b[c].clone());
+            for (r, (row, br)) in a.iter_mut().zip(b.iter_mut()).enumerate() {
+                if r != c && row[c] != Q::ZERO {
+                    let f = row[c].clone() / pivot_row[c].clone();
+                    for (x, p) in row.iter_mut().zip(&pivot_row).skip(c) {
+                        *x -= f.clone() * p.clone();
+                    }
+                    *br -= f * pivot_b.clone();
+                }
+            }
+        }
+        Some((0..n).map(|i| b[i].clone() / a[i][i].clone()).collect())
+    }
+
+    #[test]
+    fn lemke_matches_the_enumerated_answer_of_positive_definite_problems() {
+        // For a positive definite A, LCP(q, A) (y = q + A z >= 0, z >= 0, z.y = 0) has exactly
+        // one solution (Cottle, Pang & Stone, theorem 3.3.7), found here by trying every
+        // support S: z_S = -A_SS^-1 q_S, z = 0 elsewhere, kept when z >= 0 and y >= 0. Lemke's
+        // method must return it exactly. 300 problems A = B B^T + I, B and q small integers
+        // (m = 2 to 5), from a fixed linear congruential sequence; on such paths a z variable
+        // leaves the basis and its complement w enters (`lcp.rs`, `leaving - m`: the mutant
+        // `leaving + m` names no column and was missed by the per-file sample).
+        let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
+        let mut next = |n: i64| {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            ((seed >> 33) as i64).rem_euclid(2 * n + 1) - n
+        };
+        for case in 0..300 {
+            let m = 2 + case % 4;
+            let b: Vec<Vec<i64>> = (0..m).map(|_| (0..m).map(|_| next(3)).collect()).collect();
+            let a: Vec<Vec<Q>> = (0..m)
+                .map(|i| {
+                    (0..m)
+                        .map(|j| {
+                            let dot: i64 = (0..m).map(|k| b[i][k] * b[j][k]).sum();
+                            Q::from(dot + i64::from(i == j))
+                        })
+                        .collect()
+                })
+                .collect();
+            let q: Vec<Q> = (0..m).map(|_| Q::from(next(6))).collect();
+            let mut found = Vec::new();
+            for support in 0u32..(1 << m) {
+                let s: Vec<usize> = (0..m).filter(|&i| support & (1 << i) != 0).collect();
+                let sub = s
+                    .iter()
+                    .map(|&i| s.iter().map(|&j| a[i][j].clone()).collect());
+                let rhs = s.iter().map(|&i| -q[i].clone()).collect();
+                let zs = solve_exact(sub.collect(), rhs).expect("A_SS is positive definite");
+                let mut z = vec![Q::ZERO; m];
+                for (&i, v) in s.iter().zip(zs) {
+                    z[i] = v;
+                }
+                let y: Vec<Q> = (0..m)
+                    .map(|i| (0..m).fold(q[i].clone(), |t, j| t + a[i][j].clone() * z[j].clone()))
+                    .collect();
+                if z.iter().chain(&y).all(|x| !x.is_negative()) {
+                    found.push(z);
+                }
+            }
+            found.sort();
+            found.dedup();
+            assert_eq!(found.len(), 1, "case {case}: {found:?}");
+            let z = lemke(&a, &q).unwrap_or_else(|e| panic!("case {case}: {e}"));
+            assert_eq!(z, found[0], "case {case}: A = {a:?}, q = {q:?}");
+        }
+    }
 
     #[test]
     fn a_position_of_the_wrong_size_names_its_body_from_1() {
@@ -58,5 +140,36 @@ mod view {
         let k = &a["picture"]["kinetic"];
         assert_eq!(pair(&k["in"]), [7200.0, 50.0], "{k}");
         assert_eq!(pair(&k["fin"]), [3200.0, 4050.0], "{k}");
+    }
+}
+
+mod rigid {
+    use crate::common::solve_refused;
+
+    #[test]
+    fn a_round_target_has_no_end_to_pivot_at() {
+        // `--pivot end` is the end of a rod, door or box (homework.rs, `Homework::pose`); a disk
+        // or sphere has none and is refused by name. The mutant that drops the guard pivots a
+        // disk at (0, -R), a point of its rim, and solves (missed by the per-file sample of
+        // `MUTANTS_PER_FILE=1`: no test gave a round target `--pivot end`).
+        for shape in ["disk", "sphere"] {
+            solve_refused(
+                &[
+                    "-m",
+                    "1,2",
+                    "-v",
+                    "1,0",
+                    "--target",
+                    &format!("{shape} 1"),
+                    "--pivot",
+                    "end",
+                    "--hit-at",
+                    "1/2",
+                ],
+                &[&format!(
+                    "--pivot end is an end of a rod, door or box; a {shape} takes centre"
+                )],
+            );
+        }
     }
 }
