@@ -25,7 +25,8 @@
 #       benches/mutants.sh space             # those files instead of the area's (its tests)
 #   MUTANTS_BASELINE=skip ...                # no unmutated run first (the tree passed before)
 #
-# view skips the tests of the committed WebAssembly module against its sources (the SHA-256 of
+# rigid and impact skip the page's Chromium tests (view_rigid::browser_*: they run the committed
+# module, not the mutant). view skips the tests of the committed WebAssembly module against its sources (the SHA-256 of
 # each, and the ignored rebuild): they fail on every mutant of the files the module is built
 # from, whatever the mutant does.
 # Each area mutates its files and builds and runs only the tests that guard them (the lib's unit
@@ -60,8 +61,8 @@ declare -A TESTS=(
     [units]="units homework:: problems:: cli:: properties::hostile properties::parsers --skip view_"
     [motion]="track::"
     [columns]="tables:: table::"
-    [rigid]="rigid homework fin_known::"
-    [impact]="rigid"
+    [rigid]="rigid homework fin_known:: --skip browser_"
+    [impact]="rigid --skip browser_"
     [space]="space:: plane frames:: metamorphic:: one_answer:: knowns::"
     [solve]="space:: plane knowns:: asked::"
     [view]="view --skip browser --skip view_node --skip the_committed_module_"
