@@ -58,6 +58,7 @@ mod shell;
 mod stages;
 mod stages_joint;
 mod stages_range;
+mod stages_refusals;
 mod stages_system;
 mod sweeps;
 mod sweeps_cluster;
