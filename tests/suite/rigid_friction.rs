@@ -271,3 +271,36 @@ fn an_irrational_stronge_root_is_marked_approximate() {
     let text = crate::common::stdout(&["scene", path.to_str().unwrap()]);
     assert!(text.contains("435/362") && !text.contains('≈'), "{text}");
 }
+
+#[test]
+fn walton_s_rule_where_the_normal_impulse_pushes_sideways() {
+    // The ball above has K_tn = 0, so Walton's denominator n.K n + rho n.K q never saw its
+    // second term (mutant `impact.rs:304`, `+` to `-`, missed). The floor case of
+    // `rigid_ode::on_floor` has it: a body (m = 1, I = 1/3) centred at (0, 1) touching the
+    // floor at (1/2, 0), n = (0, -1), v = (0, -1), omega = 1, so w = (1, -1/2) and K = [[4,
+    // 3/2], [3/2, 7/4]] (det 19/4). Garwin, e = beta = 1/2: w' = -w/2 = (-1/2, 1/4), P = K^-1
+    // (w - w') = K^-1 (3/2, -3/4) = (15/19, -21/19): P_n = 21/19, |P_t| = 15/19 > P_n / 2, so
+    // with mu = 1/2 Walton's rule: q = (15/19, 0), rho = mu |n| / |q| = 19/30, n.K n = 7/4, n.K q
+    // = -(3/2)(15/19) = -45/38, rho n.K q = -3/4, a = (3/2)(1/2) / (7/4 - 3/4) = 3/4 (the mutant:
+    // 3/10), P = a (n + rho q) = (3/8, -3/4): |P_t| = mu P_n. After: w' = w - K P = (5/8, 1/4)
+    // (n.w' = -1/4 = -e n.w, still sliding forward), v' = v - P = (-3/8, -1/4), omega' = 1 -
+    // 3 (1, 1/2).P = 1. Exact; the same turned by a rotation with no zero entry gives R P.
+    use crate::rigid_ode::{on_floor, turned_oblique};
+    use collide::rigid::algebra::apply;
+    use collide::rigid::laws::{Law, Mode, Tangential};
+    let rough = Tangential::Rough {
+        beta: ratio(1, 2),
+        mu: Some(ratio(1, 2)),
+    };
+    let o = collide::rigid::solve(on_floor(2, None, rough.clone(), Law::Poisson, int(0))).unwrap();
+    assert_eq!(o.impact.impulse, vec![ratio(3, 8), ratio(-3, 4)]);
+    assert_eq!(o.impact.mode, Mode::Slip);
+    assert!(o.impact.note.as_deref().unwrap().contains("Walton"));
+    assert_eq!(o.fin[0].v, vec![ratio(-3, 8), ratio(-1, 4)]);
+    assert_eq!(o.fin[0].omega, vec![int(1)]);
+    let r = turned_oblique();
+    let t = collide::rigid::solve(on_floor(3, Some(&r), rough, Law::Poisson, int(0))).unwrap();
+    let want = apply(&r, &[ratio(3, 8), ratio(-3, 4), Q::ZERO]);
+    assert_eq!(t.impact.impulse, want);
+    assert!(!t.impact.approx);
+}

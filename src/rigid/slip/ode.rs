@@ -152,6 +152,13 @@ impl Slip {
                     let rate = (y[1] * r[1] + y[2] * r[2]) / s.max(f64::MIN_POSITIVE);
                     if rate < 0.0 {
                         let d = s / -rate;
+                        // Compression within the closing (the slip stops where the bodies stop
+                        // approaching, to within delta): at its linear point, `W` there with
+                        // it; else the next phase would start past `w_n = 0` and never see it.
+                        if compression.is_none() && y[0] + r[0] * d <= 0.0 {
+                            let dc = (y[0] / -r[0]).clamp(0.0, d);
+                            compression = Some((x + dc, y[3] + y[0] * dc + 0.5 * r[0] * dc * dc));
+                        }
                         for (yi, ri) in y.iter_mut().zip(r) {
                             *yi += ri * d;
                         }
@@ -242,14 +249,18 @@ impl Slip {
             })
         };
         let first = self.events((x0, &y0), compression, turning_dir(&y0), tol.delta);
-        if let Some(g) = first[2]
-            && g <= 0.0
-        {
-            return Ok(Out {
-                x: x0,
-                y: y0,
-                event: Ev::End,
-            });
+        // (Compression due at the start too: a phase begun at `w_n <= 0` never sees `w_n`
+        // fall through 0, and its end, which follows compression, would never come.)
+        for (k, event) in [(2, Ev::End), (0, Ev::Compression)] {
+            if let Some(g) = first[k]
+                && g <= 0.0
+            {
+                return Ok(Out {
+                    x: x0,
+                    y: y0,
+                    event,
+                });
+            }
         }
         let evals = std::cell::Cell::new(0u64);
         let atol: Vec<f64> = [
