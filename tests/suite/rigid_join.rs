@@ -124,6 +124,12 @@ fn clay_sticks_to_the_end_of_a_free_rod() {
     assert_eq!(q(&joined["omega"]), ratio(-15, 8));
     assert_eq!(q(&j["energy"]["lost"]), ratio(25, 4));
     assert_eq!(q(&j["along_normal"]["crunch"]), ratio(25, 4));
+    // The clay leaves with the rod's end: v_cm + omega x (0, 4/5) = (1 + 15/8 4/5, 0) = (5/2,
+    // 0), so its impulse is 1 (5 - 5/2) = 5/2 along the normal, all of it compression (bodies
+    // that join never separate: mutant `impact.rs:218`, `/` to `%` in `P.n / n.n`, gave 1/2).
+    assert_eq!(q(&j["fin"][0]["v"][0]), ratio(5, 2));
+    assert_eq!(q(&j["impulse"]["normal"]), ratio(5, 2));
+    assert_eq!(q(&j["impulse"]["compression"]), ratio(5, 2));
     // Free: momentum (5, 0) and angular momentum about the contact point are kept.
     assert_eq!(j["momentum"]["kept"], true);
     assert_eq!(j["momentum"]["in"], j["momentum"]["fin"]);
