@@ -144,7 +144,42 @@ mod view {
 }
 
 mod rigid {
+    use collide::rigid::laws::{Law, Mode, Tangential};
+    use collide::values::rational::{Q, int, ratio};
+
     use crate::common::solve_refused;
+    use crate::rigid_ode::on_floor;
+
+    #[test]
+    fn a_normal_of_any_length_joins_and_grips_the_same() {
+        // The floor case of `rigid_ode::on_floor` (m = 1, I = 1/3 centred at (0, 1), touching
+        // at (1/2, 0), v = (0, -1), omega = 1: w = (1, -1/2), K = [[4, 3/2], [3/2, 7/4]], K^-1 =
+        // [[7, -6], [-6, 16]]/19) with its normal (0, -1) and (0, -2). Bodies that join: P =
+        // K^-1 w = (10/19, -14/19), all of it compression, P.n / n.n = 14/19 and 7/19 (times |n|
+        // in the reports: 14/19). Garwin's rough contact with beta = 0, e = 1/2 (no limit): w' =
+        // -e (n.w / n.n) n = (0, 1/4), P = K^-1 (1, -3/4) = (23/38, -18/19), and the contact
+        // does not slip after: stick. The sample of every mutant of `rigid/impact.rs` (sixth)
+        // missed `:218` (`/` to `*` in the joined compression) and `:276` (`/` to `*` in the
+        // slip after a rough contact): both are the same as the right code when |n| = 1.
+        for (n, compression) in [(int(-1), ratio(14, 19)), (int(-2), ratio(7, 19))] {
+            let posed = |tangential| {
+                let mut p = on_floor(2, None, tangential, Law::Poisson, int(0));
+                p.pair.contact.normal = vec![Q::ZERO, n.clone()];
+                p
+            };
+            let o = collide::rigid::solve(posed(Tangential::Join)).unwrap();
+            assert_eq!(o.impact.impulse, vec![ratio(10, 19), ratio(-14, 19)], "{n}");
+            assert_eq!(o.impact.compression, compression, "{n}");
+            assert_eq!(o.compression_impulse(), ratio(14, 19), "{n}");
+            let rough = Tangential::Rough {
+                beta: Q::ZERO,
+                mu: None,
+            };
+            let o = collide::rigid::solve(posed(rough)).unwrap();
+            assert_eq!(o.impact.impulse, vec![ratio(23, 38), ratio(-18, 19)], "{n}");
+            assert_eq!(o.impact.mode, Mode::Stick, "{n}");
+        }
+    }
 
     #[test]
     fn a_round_target_has_no_end_to_pivot_at() {
