@@ -113,7 +113,13 @@ fn the_ode_error_is_within_twice_its_estimate_plus_1e_13_of_routh() {
     let mut compression = 0.0f64;
     let mut beyond = Vec::new();
     let laws = [Law::Poisson, Law::Newton, Law::Stronge];
+    let mut drawn = 0;
     while cases < 300 {
+        // A draw the plane refuses is drawn again, but at least 90% must solve: a solver that
+        // refused everything looped here until the mutation run's time limit (mutants
+        // `impact.rs:98`, `:109`). Measured: all 300 of the first 300 draws solve.
+        drawn += 1;
+        assert!(drawn <= 333, "only {cases} of {drawn} drawn impacts solved");
         let d: Vec<f64> = (0..20).map(|_| draw.next()).collect();
         let (mu, e) = (0.05 + (draw.next() + 3.0) / 3.0, (draw.next() + 3.0) / 6.0);
         let law = laws[cases % 3];
@@ -150,7 +156,8 @@ fn the_ode_error_is_within_twice_its_estimate_plus_1e_13_of_routh() {
         cases += 1;
     }
     eprintln!(
-        "{cases} planar cases: the error exceeded the estimate in {over} (at most {worst:.2}x); \
+        "{cases} planar cases of {drawn} drawn: the error exceeded the estimate in {over} \
+         (at most {worst:.2}x); \
          largest error {largest:.2e}; compression {compression:.2e}"
     );
     assert!(beyond.is_empty(), "{beyond:#?}");
