@@ -136,13 +136,6 @@ pub struct Solution {
     pub checks: Vec<Check>,
 }
 
-impl Solution {
-    /// Whether every check holds.
-    pub fn consistent(&self) -> bool {
-        self.checks.iter().all(|c| c.ok)
-    }
-}
-
 /// What was solved: the unknowns and the solutions (one, or two from a quadratic, or none).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Solved {
