@@ -9,7 +9,36 @@ mod space {
     use collide::values::rational::Q;
     use num_traits::Signed;
 
-    use crate::common::solve_refused;
+    use crate::common::{solve_refused, stdout};
+
+    #[test]
+    fn a_rational_root_of_the_energy_is_printed_exact() {
+        // Equal pucks, (5, 0) onto one at rest, elastic, v1' = (4, ?): momentum gives v2' = (1,
+        // -y), energy 16 + y^2 + 1 + y^2 = 25, y = +-2, rational. Under --exact both solutions
+        // print as fractions, no `≈`: the parameter's root is exact (the sample of `space/
+        // solve.rs` missed `:616`, `&&` to `||` in `rooted`, which marks every unknown the
+        // parameter moves as approximate).
+        let text = stdout(&[
+            "solve",
+            "-m",
+            "1,1",
+            "-v",
+            "(5,0),(0,0)",
+            "--fin",
+            "(4,?),?",
+            "-e",
+            "1",
+            "--exact",
+        ]);
+        for line in [
+            "  v1' = (4, 2) = ",
+            "  v2' = (1, -2) = ",
+            "  v1' = (4, -2) = ",
+        ] {
+            assert!(text.contains(line), "{line:?} in\n{text}");
+        }
+        assert!(!text.contains('≈'), "{text}");
+    }
 
     /// `A x = b` by Gaussian elimination in rationals; `None` when `A` is singular.
     fn solve_exact(mut a: Vec<Vec<Q>>, mut b: Vec<Q>) -> Option<Vec<Q>> {
